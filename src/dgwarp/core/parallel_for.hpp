@@ -1,0 +1,28 @@
+#pragma once
+// The one parallel-loop helper of the project (OpenMP underneath). Algorithms
+// call parallel_for and never use OpenMP directly, so there are no #ifdef forks
+// in their bodies. Iterations are split statically: with a per-index body that
+// writes only its own outputs, results never depend on the thread count.
+#include <cstdint>
+
+namespace dgwarp {
+
+/// Number of threads parallel_for uses (OpenMP's current setting; 1 without OpenMP).
+int num_threads();
+
+/// Sets the number of threads for later parallel_for calls (n >= 1).
+void set_num_threads(int n);
+
+/// Calls body(i) for every i in [0, n), in parallel. body must only write data
+/// owned by index i. Exceptions thrown by body are rethrown (the first one).
+template <class Body>
+void parallel_for(std::int64_t n, Body&& body);
+
+/// Calls body(begin, end) on contiguous chunks covering [0, n), one chunk per
+/// thread at most; useful when each chunk needs scratch space.
+template <class Body>
+void parallel_for_chunks(std::int64_t n, Body&& body);
+
+}  // namespace dgwarp
+
+#include "dgwarp/core/parallel_for_impl.hpp"

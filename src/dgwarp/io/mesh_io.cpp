@@ -1,0 +1,50 @@
+#include "dgwarp/io/mesh_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/vtu.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& e : v) s += (s.empty() ? "" : ", ") + e;
+    return s;
+}
+
+}  // namespace
+
+std::vector<std::string> readable_extensions() { return {".su2", ".msh"}; }
+std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
+
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".su2") return read_su2(path, options.zone);
+    if (ext == ".msh") return read_gmsh(path);
+    throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
+                      joined(readable_extensions()));
+}
+
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
+                const WriteOptions& options) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".su2") return write_su2(path, mesh);
+    if (ext == ".msh") return write_gmsh(path, mesh, options.gmsh_version);
+    if (ext == ".vtu") return write_vtu(path, mesh, fields);
+    throw FormatError(path.string() + ": cannot write files of type '" + ext + "'; dgwarp writes " +
+                      joined(writable_extensions()));
+}
+
+}  // namespace dgwarp

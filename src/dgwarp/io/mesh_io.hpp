@@ -1,0 +1,50 @@
+#pragma once
+// Reading and writing meshes, with the format chosen by the file extension:
+//   .su2  SU2 native ASCII (read, write)
+//   .msh  Gmsh ASCII 4.1 or 2.2 (read both; write 4.1 by default)
+//   .vtu  VTK XML unstructured grid, binary (write only; with point and cell data)
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+
+namespace dgwarp {
+
+struct ReadOptions {
+    int zone = 1;  // SU2 multi-zone files: which zone (IZONE, 1-based) to read
+};
+
+/// A named array attached to points or cells: size() == count × components, row-major.
+struct Field {
+    std::string name;
+    int components = 1;
+    std::vector<double> values;
+};
+
+/// Extra data written by formats that can hold it (VTU); other formats ignore it.
+struct MeshFields {
+    std::vector<Field> point_data;  // count = mesh.num_points()
+    std::vector<Field> cell_data;   // count = mesh.cells.size()
+};
+
+struct WriteOptions {
+    int gmsh_version = 41;  // 41 (MSH 4.1) or 22 (MSH 2.2)
+};
+
+/// Reads a mesh; the format comes from the extension. Throws FormatError for
+/// an unsupported extension, IoError when the file cannot be read, ParseError
+/// (file, line, what was expected) when it is malformed, and MeshError when
+/// its content is inconsistent.
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options = {});
+
+/// Writes a mesh atomically (temporary file, then rename); the format comes
+/// from the extension.
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields = {},
+                const WriteOptions& options = {});
+
+/// The extensions read_mesh / write_mesh accept, for help texts.
+std::vector<std::string> readable_extensions();
+std::vector<std::string> writable_extensions();
+
+}  // namespace dgwarp

@@ -1,0 +1,115 @@
+#include "dgwarp/io/text_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "dgwarp/core/error.hpp"
+
+namespace dgwarp {
+
+namespace {
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+std::string shorten(std::string_view s) {
+    constexpr std::size_t max = 60;
+    return s.size() <= max ? std::string(s) : std::string(s.substr(0, max)) + "...";
+}
+}  // namespace
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+    while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+    return s;
+}
+
+TextReader TextReader::open(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path.string(), "cannot open file for reading");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad()) throw IoError(path.string(), "read error");
+    return TextReader(path.string(), std::move(buffer).str());
+}
+
+TextReader::TextReader(std::string file_name, std::string content)
+    : file_(std::move(file_name)), content_(std::move(content)) {}
+
+bool TextReader::next_line() {
+    if (pos_ >= content_.size()) {
+        line_ = {};
+        cursor_ = 0;
+        return false;
+    }
+    std::size_t end = content_.find('\n', pos_);
+    if (end == std::string::npos) end = content_.size();
+    std::string_view l(content_.data() + pos_, end - pos_);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    line_ = l;
+    cursor_ = 0;
+    pos_ = end + 1;
+    ++line_number_;
+    return true;
+}
+
+bool TextReader::next_nonblank_line() {
+    while (next_line())
+        if (!trim(line_).empty()) return true;
+    return false;
+}
+
+void TextReader::require_line(std::string_view what) {
+    if (!next_nonblank_line()) fail(what, "end of file");
+}
+
+std::string_view TextReader::next_token() {
+    while (cursor_ < line_.size() && is_blank(line_[cursor_])) ++cursor_;
+    const std::size_t start = cursor_;
+    while (cursor_ < line_.size() && !is_blank(line_[cursor_])) ++cursor_;
+    return line_.substr(start, cursor_ - start);
+}
+
+std::string_view TextReader::require_token(std::string_view what) {
+    std::string_view t = next_token();
+    if (t.empty()) fail(what, "end of line");
+    return t;
+}
+
+std::string_view TextReader::rest_of_line() {
+    std::string_view rest = trim(line_.substr(cursor_));
+    cursor_ = line_.size();
+    return rest;
+}
+
+std::int64_t TextReader::next_int(std::string_view what) {
+    std::string_view t = require_token(what);
+    std::int64_t v = 0;
+    if (!parse_int(t, v)) fail(std::string(what) + " (an integer)", t);
+    return v;
+}
+
+double TextReader::next_double(std::string_view what) {
+    std::string_view t = require_token(what);
+    double v = 0;
+    if (!parse_double(t, v)) fail(std::string(what) + " (a finite number)", t);
+    return v;
+}
+
+void TextReader::fail(std::string_view expected, std::string_view found) const {
+    throw ParseError(file_, line_number_, std::string(expected), shorten(found));
+}
+
+bool parse_int(std::string_view token, std::int64_t& value) {
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    auto [p, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc() && p == token.data() + token.size() && !token.empty();
+}
+
+bool parse_double(std::string_view token, double& value) {
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    auto [p, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc() && p == token.data() + token.size() && !token.empty() && std::isfinite(value);
+}
+
+}  // namespace dgwarp

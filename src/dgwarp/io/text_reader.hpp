@@ -1,0 +1,66 @@
+#pragma once
+// Line-by-line reading of a text mesh file with positions for error messages.
+// Shared by every text format reader: each error names the file, the 1-based
+// line, what was expected and what was found (ParseError).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace dgwarp {
+
+class TextReader {
+public:
+    /// Reads the whole file into memory; throws IoError when it cannot be read.
+    static TextReader open(const std::filesystem::path& path);
+    /// A reader over `content`, reporting errors as coming from `file_name`.
+    TextReader(std::string file_name, std::string content);
+
+    /// Advances to the next line (the first call reads line 1); false at end of file.
+    bool next_line();
+    /// Advances to the next line that is not blank; false at end of file.
+    bool next_nonblank_line();
+    /// Like next_nonblank_line, but throws ParseError("expected <what>",
+    /// "end of file") at end of file.
+    void require_line(std::string_view what);
+
+    /// The current line without its end-of-line characters.
+    std::string_view line() const { return line_; }
+    /// 1-based number of the current line (0 before the first next_line()).
+    std::size_t line_number() const { return line_number_; }
+    const std::string& file() const { return file_; }
+    bool at_end() const { return pos_ >= content_.size(); }
+
+    /// The next whitespace-separated token of the current line, or an empty
+    /// view at the end of the line.
+    std::string_view next_token();
+    /// The next token; throws ParseError("expected <what>") at the end of the line.
+    std::string_view require_token(std::string_view what);
+    /// The rest of the current line after the tokens already taken, trimmed.
+    std::string_view rest_of_line();
+
+    /// Next token parsed as an integer / a finite floating-point number;
+    /// throws ParseError naming `what` on a missing or malformed token.
+    std::int64_t next_int(std::string_view what);
+    double next_double(std::string_view what);
+
+    /// Throws ParseError at the current line.
+    [[noreturn]] void fail(std::string_view expected, std::string_view found = {}) const;
+
+private:
+    std::string file_;
+    std::string content_;
+    std::size_t pos_ = 0;
+    std::string_view line_;
+    std::size_t cursor_ = 0;  // position of the next token in line_
+    std::size_t line_number_ = 0;
+};
+
+/// Parses a whole token as an integer / a finite double; false if malformed.
+bool parse_int(std::string_view token, std::int64_t& value);
+bool parse_double(std::string_view token, double& value);
+
+/// `s` without leading and trailing blanks (spaces, tabs, CR).
+std::string_view trim(std::string_view s);
+
+}  // namespace dgwarp

@@ -1,0 +1,78 @@
+#include "dgwarp/mesh/mesh.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+#include "dgwarp/core/error.hpp"
+
+namespace dgwarp {
+
+void ElementList::push_back(CellType type, std::span<const NodeId> element_nodes) {
+    assert(static_cast<int>(element_nodes.size()) == nodes_per_cell(type));
+    types.push_back(type);
+    nodes.insert(nodes.end(), element_nodes.begin(), element_nodes.end());
+    offsets.push_back(static_cast<std::int64_t>(nodes.size()));
+}
+
+void ElementList::reserve(std::size_t n, int nodes_per_element) {
+    types.reserve(n);
+    offsets.reserve(n + 1);
+    nodes.reserve(n * static_cast<std::size_t>(nodes_per_element));
+}
+
+std::vector<NodeId> marker_nodes(const Marker& marker) {
+    std::vector<NodeId> ids = marker.elements.nodes;
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return ids;
+}
+
+const Marker& find_marker(const Mesh& mesh, std::string_view name) {
+    for (const Marker& m : mesh.markers)
+        if (m.name == name) return m;
+    std::string known;
+    for (const Marker& m : mesh.markers) known += (known.empty() ? "" : ", ") + m.name;
+    throw MeshError("unknown marker '" + std::string(name) + "'; the mesh has: " +
+                        (known.empty() ? std::string("no markers") : known),
+                    std::string(name));
+}
+
+namespace {
+
+void check_elements(const ElementList& list, std::int64_t num_points, int expected_dim,
+                    const std::string& what, const std::string& marker) {
+    if (list.offsets.size() != list.size() + 1 || list.offsets.back() != static_cast<std::int64_t>(list.nodes.size()))
+        throw MeshError(what + ": element offsets do not match the node list", marker);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const CellType t = list.types[i];
+        const auto nodes = list.nodes_of(i);
+        if (static_cast<int>(nodes.size()) != nodes_per_cell(t))
+            throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) +
+                                ") has " + std::to_string(nodes.size()) + " nodes",
+                            marker, static_cast<std::int64_t>(i));
+        if (cell_dimension(t) != expected_dim && !(expected_dim == 1 && t == CellType::vertex))
+            throw MeshError(what + " element " + std::to_string(i) + " is a " + std::string(cell_type_name(t)) +
+                                ", expected an element of dimension " + std::to_string(expected_dim),
+                            marker, static_cast<std::int64_t>(i));
+        for (NodeId n : nodes)
+            if (n < 0 || n >= num_points)
+                throw MeshError(what + " element " + std::to_string(i) + " names node " + std::to_string(n) +
+                                    ", but the mesh has " + std::to_string(num_points) + " nodes",
+                                marker, static_cast<std::int64_t>(i));
+    }
+}
+
+}  // namespace
+
+void validate(const Mesh& mesh) {
+    if (mesh.dim != 2 && mesh.dim != 3)
+        throw MeshError("mesh dimension is " + std::to_string(mesh.dim) + ", expected 2 or 3");
+    if (mesh.points.size() % static_cast<std::size_t>(mesh.dim) != 0)
+        throw MeshError("point array length is not a multiple of the dimension");
+    const auto n = static_cast<std::int64_t>(mesh.num_points());
+    check_elements(mesh.cells, n, mesh.dim, "cell", "");
+    for (const Marker& m : mesh.markers)
+        check_elements(m.elements, n, mesh.dim - 1, "marker '" + m.name + "'", m.name);
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,68 @@
+#include "dgwarp/mesh/mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include "dgwarp/core/error.hpp"
+
+using namespace dgwarp;
+
+namespace {
+Mesh unit_square_two_triangles() {
+    Mesh m;
+    m.dim = 2;
+    m.points = {0, 0, 1, 0, 1, 1, 0, 1};
+    const NodeId t0[] = {0, 1, 2}, t1[] = {0, 2, 3};
+    m.cells.push_back(CellType::triangle, t0);
+    m.cells.push_back(CellType::triangle, t1);
+    Marker wall{"wall", {}};
+    const NodeId e0[] = {0, 1}, e1[] = {1, 2};
+    wall.elements.push_back(CellType::line, e0);
+    wall.elements.push_back(CellType::line, e1);
+    m.markers.push_back(wall);
+    return m;
+}
+}  // namespace
+
+TEST(Mesh, CountsAndElementAccess) {
+    const Mesh m = unit_square_two_triangles();
+    EXPECT_EQ(m.num_points(), 4u);
+    ASSERT_EQ(m.cells.size(), 2u);
+    EXPECT_EQ(m.cells.nodes_of(1)[2], 3);
+    EXPECT_NO_THROW(validate(m));
+}
+
+TEST(Mesh, MarkerNodesAreSortedAndUnique) {
+    const Mesh m = unit_square_two_triangles();
+    EXPECT_EQ(marker_nodes(m.markers[0]), (std::vector<NodeId>{0, 1, 2}));
+}
+
+TEST(Mesh, FindMarkerNamesTheUnknownOneAndTheKnownOnes) {
+    const Mesh m = unit_square_two_triangles();
+    EXPECT_EQ(&find_marker(m, "wall"), &m.markers[0]);
+    try {
+        find_marker(m, "airfoil");
+        FAIL();
+    } catch (const MeshError& e) {
+        EXPECT_EQ(e.marker(), "airfoil");
+        EXPECT_NE(std::string(e.what()).find("wall"), std::string::npos);
+    }
+}
+
+TEST(Mesh, ValidateRejectsNodeOutOfRange) {
+    Mesh m = unit_square_two_triangles();
+    m.cells.nodes[4] = 1000000000;
+    try {
+        validate(m);
+        FAIL();
+    } catch (const MeshError& e) {
+        EXPECT_EQ(e.index(), 1);
+        EXPECT_NE(std::string(e.what()).find("1000000000"), std::string::npos);
+    }
+}
+
+TEST(Mesh, ValidateRejectsCellOfWrongDimension) {
+    Mesh m = unit_square_two_triangles();
+    const NodeId tet[] = {0, 1, 2, 3};
+    m.cells.push_back(CellType::tetrahedron, tet);
+    EXPECT_THROW(validate(m), MeshError);
+}

@@ -1,0 +1,31 @@
+#pragma once
+// Where the tests find their inputs and tools, and small helpers shared by tests.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dgwarp::test {
+
+/// The repository's root folder.
+std::filesystem::path source_dir();
+/// ../shared/meshes/su2 beside the repository (real SU2 meshes).
+std::filesystem::path su2_meshes_dir();
+/// Every .su2 file in su2_meshes_dir(), sorted; empty when the folder is absent.
+std::vector<std::filesystem::path> su2_meshes();
+/// The dgwarp executable built with the tests.
+std::filesystem::path cli_path();
+/// A fresh empty folder under the system temp dir, unique to the current test.
+std::filesystem::path scratch_dir();
+
+/// Result of running a command: exit code and what it printed.
+struct CommandResult {
+    int exit_code = -1;
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+/// Runs `command` through /bin/sh, capturing stdout and stderr.
+CommandResult run_command(const std::string& command);
+/// Runs the dgwarp CLI with the given argument string.
+CommandResult run_cli(const std::string& args);
+
+}  // namespace dgwarp::test
