@@ -1,0 +1,55 @@
+#pragma once
+// The quality driver: per-cell shape quality over a whole mesh (threaded,
+// deterministic), its summary, and the per-cell ratio deformed / original.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+
+namespace dgwarp {
+
+/// Per-cell reference orientation (+1/-1, see cell_orientation) of the
+/// undeformed mesh; pass it to cell_qualities for every deformed version.
+std::vector<std::int8_t> cell_orientations(const Mesh& reference);
+
+/// The orientation most cells of `mesh` have (+1 on ties), used when a mesh is
+/// judged on its own: a cell oriented against the majority counts as inverted.
+std::vector<std::int8_t> dominant_orientations(const Mesh& mesh);
+
+/// Shape quality of every cell (size mesh.cells.size()), judged against
+/// `orientations` (size mesh.cells.size()). Threaded; result independent of
+/// the thread count.
+std::vector<double> cell_qualities(const Mesh& mesh, std::span<const std::int8_t> orientations);
+
+struct QualityHistogram {
+    std::vector<double> edges;          // bin edges, size counts.size() + 1; first bin is (-inf, 0]
+    std::vector<std::int64_t> counts;   // cells per bin
+};
+
+struct QualitySummary {
+    std::int64_t cells = 0;
+    double min = 0;              // smallest quality (<= 0 when a cell is inverted)
+    double mean = 0;
+    std::int64_t inverted = 0;   // cells with quality <= 0
+    std::int64_t worst_cell = -1;  // index of a cell with the smallest quality (the first one)
+    QualityHistogram histogram;  // bins: (-inf,0], (0,0.1], ..., (0.9,1]
+};
+
+/// Min, mean, inverted count and histogram of per-cell qualities. Deterministic.
+QualitySummary summarize_quality(std::span<const double> qualities);
+
+struct RatioSummary {
+    double min = 0;
+    double mean = 0;
+    std::int64_t worst_cell = -1;
+};
+
+/// Per-cell ratio deformed / original (the paper's Fig. 24). Cells whose
+/// original quality is not positive get ratio 0.
+std::vector<double> quality_ratios(std::span<const double> deformed, std::span<const double> original);
+
+/// Min and mean of quality_ratios, and the cell with the smallest ratio.
+RatioSummary summarize_ratios(std::span<const double> ratios);
+
+}  // namespace dgwarp
