@@ -1,2 +1,53 @@
+// dgwarp: deform CFD volume meshes to follow moving boundaries.
 #include <iostream>
-int main() { std::cout << "dgwarp\n"; return 0; }
+#include <new>
+
+#include "commands.hpp"
+#include "dgwarp/core/error.hpp"
+
+int main(int argc, char** argv) {
+    using namespace dgwarp::cli;
+    CLI::App app{"dgwarp: deform CFD volume meshes to follow moving and deforming boundaries\n"
+                 "(Delaunay-graph inverse distance weighting, Wang, Qin & Zhao)."};
+    app.name("dgwarp");
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "dgwarp 0.1.0");
+    app.footer(
+        "Examples:\n"
+        "  dgwarp demo                              run the built-in example\n"
+        "  dgwarp info mesh.su2                     counts, markers, bounding box, quality\n"
+        "  dgwarp quality mesh.su2                  quality summary of a mesh\n"
+        "  dgwarp convert mesh.su2 mesh.vtu         convert between formats\n"
+        "Run 'dgwarp COMMAND --help' for a command's options and examples.\n"
+        "Exit codes: 0 success, 1 usage error, 2 bad input, 3 invalid result, 4 internal error.");
+    add_info_command(app);
+    add_quality_command(app);
+    add_convert_command(app);
+    add_demo_command(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return exit_usage;
+    } catch (const dgwarp::InvalidResultError& e) {
+        std::cerr << "dgwarp: invalid result: " << e.what() << "\n";
+        return exit_invalid_result;
+    } catch (const dgwarp::Error& e) {
+        std::cerr << "dgwarp: error: " << e.what() << "\n";
+        return exit_bad_input;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "dgwarp: out of memory\n";
+        return exit_internal;
+    } catch (const std::exception& e) {
+        std::cerr << "dgwarp: internal error: " << e.what() << "\n";
+        return exit_internal;
+    }
+    return exit_ok;
+}

@@ -66,3 +66,17 @@ TEST(Mesh, ValidateRejectsCellOfWrongDimension) {
     m.cells.push_back(CellType::tetrahedron, tet);
     EXPECT_THROW(validate(m), MeshError);
 }
+
+TEST(Mesh, BoundingBoxAndTypeCounts) {
+    Mesh m = unit_square_two_triangles();
+    m.points[2] = 3.5;   // node 1 x
+    m.points[7] = -2.0;  // node 3 y
+    const BoundingBox box = bounding_box(m);
+    EXPECT_EQ(box.min[0], 0.0);
+    EXPECT_EQ(box.max[0], 3.5);
+    EXPECT_EQ(box.min[1], -2.0);
+    EXPECT_EQ(box.max[1], 1.0);
+    const auto counts = count_by_type(m.cells);
+    EXPECT_EQ(counts[static_cast<int>(CellType::triangle)], 2);
+    EXPECT_EQ(counts[static_cast<int>(CellType::quadrilateral)], 0);
+}

@@ -37,6 +37,26 @@ const Marker& find_marker(const Mesh& mesh, std::string_view name) {
                     std::string(name));
 }
 
+std::array<std::int64_t, std::size(all_cell_types)> count_by_type(const ElementList& list) {
+    std::array<std::int64_t, std::size(all_cell_types)> counts{};
+    for (CellType t : list.types) ++counts[static_cast<int>(t)];
+    return counts;
+}
+
+BoundingBox bounding_box(const Mesh& mesh) {
+    BoundingBox box;
+    const std::size_t n = mesh.num_points(), dim = static_cast<std::size_t>(mesh.dim);
+    if (n == 0) return box;
+    for (std::size_t d = 0; d < dim; ++d) box.min[d] = box.max[d] = mesh.points[d];
+    for (std::size_t i = 1; i < n; ++i)
+        for (std::size_t d = 0; d < dim; ++d) {
+            const double x = mesh.points[i * dim + d];
+            box.min[d] = std::min(box.min[d], x);
+            box.max[d] = std::max(box.max[d], x);
+        }
+    return box;
+}
+
 namespace {
 
 void check_elements(const ElementList& list, std::int64_t num_points, int expected_dim,

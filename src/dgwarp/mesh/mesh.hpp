@@ -7,7 +7,9 @@
 //  - point arrays are row-major, num_points × dim (dim = 2 or 3);
 //  - cells keep the order of the file they came from, so cell i of a report is
 //    cell i of the user's file.
+#include <array>
 #include <cstdint>
+#include <iterator>
 #include <span>
 #include <string>
 #include <string_view>
@@ -64,6 +66,17 @@ std::vector<NodeId> marker_nodes(const Marker& marker);
 /// The marker called `name`; throws MeshError naming the marker and listing
 /// the markers the mesh has when there is none.
 const Marker& find_marker(const Mesh& mesh, std::string_view name);
+
+/// How many elements of each type `list` holds, indexed by CellType.
+std::array<std::int64_t, std::size(all_cell_types)> count_by_type(const ElementList& list);
+
+/// Axis-aligned bounding box of the points: min and max per coordinate
+/// (dim entries used); both empty-safe (zeros for a mesh without points).
+struct BoundingBox {
+    std::array<double, 3> min{};
+    std::array<double, 3> max{};
+};
+BoundingBox bounding_box(const Mesh& mesh);
 
 /// Checks the mesh is consistent: dim is 2 or 3, the point array is a whole
 /// number of points, every node id is in range, cells have the mesh's

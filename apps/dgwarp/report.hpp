@@ -1,0 +1,30 @@
+#pragma once
+// Printing reports for the CLI, as text for people and JSON for scripts.
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+
+namespace dgwarp::cli {
+
+/// JSON schema version of every --json report; bumped on incompatible changes.
+inline constexpr int json_schema_version = 1;
+
+/// "2D, 5233 nodes, 10216 cells (10216 triangle)".
+std::string describe_mesh(const Mesh& mesh);
+
+/// {"dim", "nodes", "cells", "cell_types": {"triangle": n, ...}, "markers": [{"name", "elements", "nodes"}]}
+nlohmann::json mesh_json(const Mesh& mesh);
+
+/// {"cells", "min", "mean", "inverted", "worst_cell", "histogram": {"edges", "counts"}}
+nlohmann::json quality_json(const QualitySummary& q);
+/// {"min", "mean", "worst_cell"}
+nlohmann::json ratio_json(const RatioSummary& r);
+
+/// Indented text lines: min (and its cell), mean, inverted; the histogram when asked.
+void print_quality(std::ostream& out, const QualitySummary& q, bool histogram);
+void print_ratio(std::ostream& out, const RatioSummary& r);
+
+}  // namespace dgwarp::cli
