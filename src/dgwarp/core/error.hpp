@@ -31,8 +31,7 @@ private:
 class ParseError : public Error {
 public:
     ParseError(std::string file, std::size_t line, std::string expected, std::string found)
-        : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": expected " +
-                expected + (found.empty() ? std::string() : ", found '" + found + "'")),
+        : Error(message(file, line, expected, found)),
           file_(std::move(file)), line_(line), expected_(std::move(expected)),
           found_(std::move(found)) {}
     const std::string& file() const { return file_; }
@@ -41,6 +40,9 @@ public:
     const std::string& found() const { return found_; }
 
 private:
+    static std::string message(const std::string& file, std::size_t line, const std::string& expected,
+                               const std::string& found);
+
     std::string file_;
     std::size_t line_;
     std::string expected_;
