@@ -31,16 +31,25 @@ private:
 class ParseError : public Error {
 public:
     ParseError(std::string file, std::size_t line, std::string expected, std::string found)
-        : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": expected " +
-                expected + (found.empty() ? std::string() : ", found '" + found + "'")),
-          file_(std::move(file)), line_(line), expected_(std::move(expected)),
-          found_(std::move(found)) {}
+        : Error(message(file, line, expected, found)), file_(std::move(file)), line_(line),
+          expected_(std::move(expected)), found_(std::move(found)) {}
     const std::string& file() const { return file_; }
     std::size_t line() const { return line_; }
     const std::string& expected() const { return expected_; }
     const std::string& found() const { return found_; }
 
 private:
+    // Built with append: GCC 12 gives a false -Wrestrict warning on
+    // `"literal" + std::string&&` when inlined.
+    static std::string message(const std::string& file, std::size_t line, const std::string& expected,
+                               const std::string& found) {
+        std::string m = file;
+        if (line) m.append(":").append(std::to_string(line));
+        m.append(": expected ").append(expected);
+        if (!found.empty()) m.append(", found '").append(found).append("'");
+        return m;
+    }
+
     std::string file_;
     std::size_t line_;
     std::string expected_;
