@@ -1,5 +1,11 @@
 #pragma once
 // SU2 native ASCII mesh format (https://su2code.github.io/docs_v7/Mesh-File/).
+//
+// The reader takes the forms real files have: `NDIME=2` or `NDIME= 2`, blanks
+// or tabs between numbers, `%` comment lines, CRLF line ends, element and point
+// lines with trailing index columns (ignored), `NPOIN= n n_domain`, and FFD,
+// periodic or other unknown keyword sections (skipped). Element node order is
+// VTK's, as in the neutral Mesh; node ids are 0-based in both.
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -8,20 +14,32 @@
 
 namespace dgwarp {
 
-/// Reads an SU2 ASCII mesh. `zone` selects the zone (IZONE, 1-based) of a
-/// multi-zone file (NZONE=); single-zone files have only zone 1. FFD sections
-/// and other trailing keywords are skipped. Throws IoError, ParseError (file,
-/// line, what was expected), MeshError.
+/// Reads an SU2 ASCII mesh: dim, points (num_points × dim, row-major),
+/// volume cells in file order and the markers in file order.
+/// `zone` selects the zone (`IZONE=`, 1-based) of a multi-zone file (`NZONE=`);
+/// a single-zone file has only zone 1.
+/// Throws IoError when the file cannot be read; ParseError (file, line, what
+/// was expected, what was found) on malformed content: truncated or miscounted
+/// blocks, bad numbers (non-numeric, NaN, inf), unknown element types,
+/// elements of the wrong dimension, node ids out of range, missing sections,
+/// counts the file cannot hold (rejected before any allocation), an absent
+/// zone; MeshError when the result fails validate().
 Mesh read_su2(const std::filesystem::path& path, int zone = 1);
 
 /// The same, from text in memory; `file_name` is used in error messages.
 Mesh read_su2_text(const std::string& file_name, std::string content, int zone = 1);
 
-/// Writes `mesh` as SU2 ASCII to `out` (numbers in shortest exact form, so
-/// reading it back gives the same mesh).
+/// Writes `mesh` as SU2 ASCII to `out`: NDIME, NELEM (one element per line:
+/// type id, node ids, element index), NPOIN (coordinates in shortest exact
+/// form, point index), NMARK and a MARKER_TAG / MARKER_ELEMS block per marker.
+/// Reading it back gives a Mesh equal (operator==) to `mesh`. Throws MeshError,
+/// before writing anything, when `mesh` fails validate() or a marker name
+/// cannot be stored (empty, duplicated, several lines, surrounding blanks).
 void write_su2(std::ostream& out, const Mesh& mesh);
 
-/// Writes `mesh` as SU2 ASCII to `path`, atomically.
+/// Writes `mesh` as SU2 ASCII to `path` through write_file_atomically: on any
+/// error `path` is left as it was. Throws IoError (e.g. missing folder) or
+/// MeshError as above.
 void write_su2(const std::filesystem::path& path, const Mesh& mesh);
 
 }  // namespace dgwarp

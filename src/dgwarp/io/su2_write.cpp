@@ -1,7 +1,81 @@
-// PLACEHOLDER (being written): replaced by the real SU2 writer.
-#include "dgwarp/io/su2.hpp"
+// Writer of SU2 native ASCII meshes, in the layout SU2 itself writes: one
+// element per line with its index last, one point per line with its index last,
+// tab-separated, numbers in shortest exact form so that reading back is exact.
+#include <ostream>
+
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/atomic_write.hpp"
+#include "dgwarp/io/number_text.hpp"
+#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/text_reader.hpp"
+
 namespace dgwarp {
-void write_su2(std::ostream&, const Mesh&) { throw FormatError("SU2 writer not built yet"); }
-void write_su2(const std::filesystem::path&, const Mesh&) { throw FormatError("SU2 writer not built yet"); }
+
+namespace {
+
+void write_int(std::ostream& out, long long v) { write_number(out, v); }
+
+/// A marker name must survive `MARKER_TAG= name` and the reader's trimming.
+void check_marker_names(const Mesh& mesh) {
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
+        const std::string& name = mesh.markers[m].name;
+        if (name.empty() || trim(name) != name || name.find_first_of("\n\r") != std::string::npos)
+            throw MeshError("marker " + std::to_string(m) + " has the name '" + name +
+                                "', which SU2 cannot store (it must be non-empty, on one line, without "
+                                "surrounding blanks)",
+                            name, static_cast<std::int64_t>(m));
+        for (std::size_t k = 0; k < m; ++k)
+            if (mesh.markers[k].name == name)
+                throw MeshError("two markers are called '" + name + "'", name, static_cast<std::int64_t>(m));
+    }
 }
+
+/// One element per line: SU2 type id, node ids, then (SU2 writes it for
+/// volume cells, not for boundary elements) the element index.
+void write_elements(std::ostream& out, const ElementList& elements, bool with_index) {
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        write_int(out, vtk_cell_id(elements.types[i]));
+        for (NodeId n : elements.nodes_of(i)) {
+            out.put('\t');
+            write_int(out, n);
+        }
+        if (with_index) {
+            out.put('\t');
+            write_int(out, static_cast<long long>(i));
+        }
+        out.put('\n');
+    }
+}
+
+}  // namespace
+
+void write_su2(std::ostream& out, const Mesh& mesh) {
+    validate(mesh);
+    check_marker_names(mesh);
+    out << "NDIME= " << mesh.dim << '\n';
+    out << "NELEM= " << mesh.cells.size() << '\n';
+    write_elements(out, mesh.cells, true);
+    const std::size_t n = mesh.num_points();
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    out << "NPOIN= " << n << '\n';
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t d = 0; d < dim; ++d) {
+            write_number(out, mesh.points[i * dim + d]);
+            out.put('\t');
+        }
+        write_int(out, static_cast<long long>(i));
+        out.put('\n');
+    }
+    out << "NMARK= " << mesh.markers.size() << '\n';
+    for (const Marker& marker : mesh.markers) {
+        out << "MARKER_TAG= " << marker.name << '\n';
+        out << "MARKER_ELEMS= " << marker.elements.size() << '\n';
+        write_elements(out, marker.elements, false);
+    }
+}
+
+void write_su2(const std::filesystem::path& path, const Mesh& mesh) {
+    write_file_atomically(path, [&mesh](std::ostream& out) { write_su2(out, mesh); });
+}
+
+}  // namespace dgwarp

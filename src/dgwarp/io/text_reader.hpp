@@ -30,6 +30,9 @@ public:
     std::size_t line_number() const { return line_number_; }
     const std::string& file() const { return file_; }
     bool at_end() const { return pos_ >= content_.size(); }
+    /// Bytes after the current line: bounds what a count read from a header
+    /// can honestly announce, before anything is allocated for it.
+    std::size_t remaining_bytes() const { return at_end() ? 0 : content_.size() - pos_; }
 
     /// The next whitespace-separated token of the current line, or an empty
     /// view at the end of the line.
