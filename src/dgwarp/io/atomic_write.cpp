@@ -15,9 +15,14 @@ namespace {
 
 std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
     std::random_device rd;
-    std::string suffix = ".tmp." + std::to_string(::getpid()) + "." + std::to_string(rd() % 1000000);
+    std::string name = ".";
+    name += path.filename().string();
+    name += ".tmp.";
+    name += std::to_string(::getpid());
+    name += '.';
+    name += std::to_string(rd() % 1000000);
     std::filesystem::path tmp = path;
-    tmp.replace_filename("." + path.filename().string() + suffix);
+    tmp.replace_filename(name);
     return tmp;
 }
 
