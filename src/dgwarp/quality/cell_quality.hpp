@@ -2,7 +2,7 @@
 // Knupp's shape metric per element (P. M. Knupp, "Algebraic mesh quality
 // metrics", SIAM J. Sci. Comput. 23(1), 2001), the quality measure of the
 // DG-IDW paper (its reference [24]). Pure functions that never throw.
-// Definitions, signs and the prism/pyramid extension: ../../docs/QUALITY.md.
+// Definitions, signs and the prism/pyramid extension: docs/QUALITY.md (repository root).
 #include <span>
 
 #include "dgwarp/mesh/cell_type.hpp"

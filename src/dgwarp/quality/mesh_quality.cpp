@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cassert>
+#include <cmath>
 #include <iterator>
 #include <limits>
 
@@ -14,6 +15,21 @@ namespace dgwarp {
 namespace {
 
 constexpr int histogram_bins = 11;  // (-inf,0], (0,0.1], ..., (0.9,1]
+
+/// Compensated (Neumaier) sum in index order: deterministic, and accurate to
+/// about one rounding whatever the number of cells.
+class OrderedSum {
+public:
+    void add(double v) {
+        const double t = sum_ + v;
+        compensation_ += std::fabs(sum_) >= std::fabs(v) ? (sum_ - t) + v : (v - t) + sum_;
+        sum_ = t;
+    }
+    double value() const { return sum_ + compensation_; }
+
+private:
+    double sum_ = 0, compensation_ = 0;
+};
 
 /// Copies the coordinates of cell i into `out` (nodes × dim, row-major).
 std::span<const double> cell_coords(const Mesh& mesh, std::size_t i, std::array<double, 24>& out) {
@@ -73,12 +89,12 @@ QualitySummary summarize_quality(std::span<const double> qualities) {
     if (qualities.empty()) return s;
 
     const auto& edges = s.histogram.edges;
-    double sum = 0;  // sequential, so the mean does not depend on the thread count
+    OrderedSum sum;  // in cell order, so the mean does not depend on the thread count
     s.min = qualities[0];
     s.worst_cell = 0;
     for (std::size_t i = 0; i < qualities.size(); ++i) {
         const double q = qualities[i];
-        sum += q;
+        sum.add(q);
         if (q < s.min) {
             s.min = q;
             s.worst_cell = static_cast<std::int64_t>(i);
@@ -92,7 +108,7 @@ QualitySummary summarize_quality(std::span<const double> qualities) {
         }
         ++s.histogram.counts[static_cast<std::size_t>(bin)];
     }
-    s.mean = sum / static_cast<double>(qualities.size());
+    s.mean = sum.value() / static_cast<double>(qualities.size());
     return s;
 }
 
@@ -106,17 +122,17 @@ std::vector<double> quality_ratios(std::span<const double> deformed, std::span<c
 RatioSummary summarize_ratios(std::span<const double> ratios) {
     RatioSummary s;
     if (ratios.empty()) return s;
-    double sum = 0;
+    OrderedSum sum;
     s.min = ratios[0];
     s.worst_cell = 0;
     for (std::size_t i = 0; i < ratios.size(); ++i) {
-        sum += ratios[i];
+        sum.add(ratios[i]);
         if (ratios[i] < s.min) {
             s.min = ratios[i];
             s.worst_cell = static_cast<std::int64_t>(i);
         }
     }
-    s.mean = sum / static_cast<double>(ratios.size());
+    s.mean = sum.value() / static_cast<double>(ratios.size());
     return s;
 }
 

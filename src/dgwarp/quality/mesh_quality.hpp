@@ -41,10 +41,10 @@ struct QualitySummary {
 };
 
 /// Min, mean, inverted count and histogram of per-cell qualities (one per
-/// cell). The mean sums in cell order, so it is deterministic; a value <= 0
-/// counts as inverted and goes in the first bin; values slightly above 1
-/// (round-off) go in the last bin. Empty input: cells 0, min = mean = 0,
-/// worst_cell -1, all counts 0.
+/// cell). The mean is a compensated sum in cell order, so it is deterministic.
+/// A value <= 0 counts as inverted and goes in the first bin; values slightly
+/// above 1 (round-off) go in the last bin. Empty input: cells 0,
+/// min = mean = 0, worst_cell -1, all counts 0.
 QualitySummary summarize_quality(std::span<const double> qualities);
 
 struct RatioSummary {
@@ -58,8 +58,8 @@ struct RatioSummary {
 /// quality is not positive get ratio 0.
 std::vector<double> quality_ratios(std::span<const double> deformed, std::span<const double> original);
 
-/// Min and mean of quality_ratios (summed in cell order), and the first cell
-/// with the smallest ratio; worst_cell -1 for empty input.
+/// Min and mean (compensated sum in cell order) of quality_ratios, and the
+/// first cell with the smallest ratio; worst_cell -1 for empty input.
 RatioSummary summarize_ratios(std::span<const double> ratios);
 
 }  // namespace dgwarp
