@@ -10,16 +10,20 @@
 namespace dgwarp {
 
 /// Per-cell reference orientation (+1/-1, see cell_orientation) of the
-/// undeformed mesh; pass it to cell_qualities for every deformed version.
+/// undeformed mesh, size reference.cells.size(); pass it to cell_qualities for
+/// every deformed version. Threaded.
 std::vector<std::int8_t> cell_orientations(const Mesh& reference);
 
 /// The orientation most cells of `mesh` have (+1 on ties), used when a mesh is
 /// judged on its own: a cell oriented against the majority counts as inverted.
+/// The majority is taken separately per cell type, and every cell gets the
+/// majority of its type (files may write, e.g., triangles clockwise and
+/// quadrilaterals counter-clockwise); size mesh.cells.size().
 std::vector<std::int8_t> dominant_orientations(const Mesh& mesh);
 
-/// Shape quality of every cell (size mesh.cells.size()), judged against
-/// `orientations` (size mesh.cells.size()). Threaded; result independent of
-/// the thread count.
+/// Shape quality of every cell (cell_shape_quality; size mesh.cells.size()),
+/// judged against `orientations` (size mesh.cells.size()). Threaded (each cell
+/// is computed on its own); the result is independent of the thread count.
 std::vector<double> cell_qualities(const Mesh& mesh, std::span<const std::int8_t> orientations);
 
 struct QualityHistogram {
@@ -36,7 +40,11 @@ struct QualitySummary {
     QualityHistogram histogram;  // bins: (-inf,0], (0,0.1], ..., (0.9,1]
 };
 
-/// Min, mean, inverted count and histogram of per-cell qualities. Deterministic.
+/// Min, mean, inverted count and histogram of per-cell qualities (one per
+/// cell). The mean is a compensated sum in cell order, so it is deterministic.
+/// A value <= 0 counts as inverted and goes in the first bin; values slightly
+/// above 1 (round-off) go in the last bin. Empty input: cells 0,
+/// min = mean = 0, worst_cell -1, all counts 0.
 QualitySummary summarize_quality(std::span<const double> qualities);
 
 struct RatioSummary {
@@ -45,11 +53,13 @@ struct RatioSummary {
     std::int64_t worst_cell = -1;
 };
 
-/// Per-cell ratio deformed / original (the paper's Fig. 24). Cells whose
-/// original quality is not positive get ratio 0.
+/// Per-cell ratio deformed / original (the paper's Fig. 24); both inputs and
+/// the result have one value per cell (same size). Cells whose original
+/// quality is not positive get ratio 0.
 std::vector<double> quality_ratios(std::span<const double> deformed, std::span<const double> original);
 
-/// Min and mean of quality_ratios, and the cell with the smallest ratio.
+/// Min and mean (compensated sum in cell order) of quality_ratios, and the
+/// first cell with the smallest ratio; worst_cell -1 for empty input.
 RatioSummary summarize_ratios(std::span<const double> ratios);
 
 }  // namespace dgwarp

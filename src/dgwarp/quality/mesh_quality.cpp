@@ -1,0 +1,139 @@
+// The quality driver: per-cell shape quality over a mesh and its summaries.
+#include "dgwarp/quality/mesh_quality.hpp"
+
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <iterator>
+#include <limits>
+
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/quality/cell_quality.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+constexpr int histogram_bins = 11;  // (-inf,0], (0,0.1], ..., (0.9,1]
+
+/// Compensated (Neumaier) sum in index order: deterministic, and accurate to
+/// about one rounding whatever the number of cells.
+class OrderedSum {
+public:
+    void add(double v) {
+        const double t = sum_ + v;
+        compensation_ += std::fabs(sum_) >= std::fabs(v) ? (sum_ - t) + v : (v - t) + sum_;
+        sum_ = t;
+    }
+    double value() const { return sum_ + compensation_; }
+
+private:
+    double sum_ = 0, compensation_ = 0;
+};
+
+/// Copies the coordinates of cell i into `out` (nodes × dim, row-major).
+std::span<const double> cell_coords(const Mesh& mesh, std::size_t i, std::array<double, 24>& out) {
+    const auto nodes = mesh.cells.nodes_of(i);
+    const std::size_t dim = static_cast<std::size_t>(mesh.dim);
+    assert(nodes.size() * dim <= out.size());
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+        for (std::size_t c = 0; c < dim; ++c) out[n * dim + c] = mesh.points[static_cast<std::size_t>(nodes[n]) * dim + c];
+    return {out.data(), nodes.size() * dim};
+}
+
+}  // namespace
+
+std::vector<std::int8_t> cell_orientations(const Mesh& reference) {
+    std::vector<std::int8_t> orientation(reference.cells.size());
+    parallel_for(static_cast<std::int64_t>(orientation.size()), [&](std::int64_t i) {
+        std::array<double, 24> coords;
+        const auto k = static_cast<std::size_t>(i);
+        orientation[k] = static_cast<std::int8_t>(
+            cell_orientation(reference.cells.types[k], cell_coords(reference, k, coords), reference.dim));
+    });
+    return orientation;
+}
+
+std::vector<std::int8_t> dominant_orientations(const Mesh& mesh) {
+    std::vector<std::int8_t> orientation = cell_orientations(mesh);
+    // Balance of +1 over -1 cells per cell type: real files mix conventions by
+    // type (SU2's square-cylinder test mesh has clockwise triangles and
+    // counter-clockwise quadrilaterals), so a per-dimension majority would
+    // call a whole valid type inverted.
+    std::array<std::int64_t, std::size(all_cell_types)> balance{};
+    for (std::size_t i = 0; i < orientation.size(); ++i)
+        balance[static_cast<std::size_t>(mesh.cells.types[i])] += orientation[i];
+    for (std::size_t i = 0; i < orientation.size(); ++i)
+        orientation[i] = balance[static_cast<std::size_t>(mesh.cells.types[i])] < 0 ? -1 : 1;
+    return orientation;
+}
+
+std::vector<double> cell_qualities(const Mesh& mesh, std::span<const std::int8_t> orientations) {
+    assert(orientations.size() == mesh.cells.size());
+    std::vector<double> quality(mesh.cells.size());
+    parallel_for(static_cast<std::int64_t>(quality.size()), [&](std::int64_t i) {
+        std::array<double, 24> coords;
+        const auto k = static_cast<std::size_t>(i);
+        quality[k] = cell_shape_quality(mesh.cells.types[k], cell_coords(mesh, k, coords), mesh.dim, orientations[k]);
+    });
+    return quality;
+}
+
+QualitySummary summarize_quality(std::span<const double> qualities) {
+    QualitySummary s;
+    s.histogram.edges.resize(histogram_bins + 1);
+    s.histogram.edges[0] = -std::numeric_limits<double>::infinity();
+    for (int b = 1; b <= histogram_bins; ++b) s.histogram.edges[b] = (b - 1) / 10.0;
+    s.histogram.counts.assign(histogram_bins, 0);
+    s.cells = static_cast<std::int64_t>(qualities.size());
+    if (qualities.empty()) return s;
+
+    const auto& edges = s.histogram.edges;
+    OrderedSum sum;  // in cell order, so the mean does not depend on the thread count
+    s.min = qualities[0];
+    s.worst_cell = 0;
+    for (std::size_t i = 0; i < qualities.size(); ++i) {
+        const double q = qualities[i];
+        sum.add(q);
+        if (q < s.min) {
+            s.min = q;
+            s.worst_cell = static_cast<std::int64_t>(i);
+        }
+        int bin = 0;
+        if (q > 0) {  // a NaN falls in the first bin and counts as inverted
+            bin = 1;  // (edges[bin], edges[bin+1]]; values above 1 (round-off) stay in the last bin
+            while (bin < histogram_bins - 1 && q > edges[static_cast<std::size_t>(bin) + 1]) ++bin;
+        } else {
+            ++s.inverted;
+        }
+        ++s.histogram.counts[static_cast<std::size_t>(bin)];
+    }
+    s.mean = sum.value() / static_cast<double>(qualities.size());
+    return s;
+}
+
+std::vector<double> quality_ratios(std::span<const double> deformed, std::span<const double> original) {
+    assert(deformed.size() == original.size());
+    std::vector<double> ratio(deformed.size());
+    for (std::size_t i = 0; i < ratio.size(); ++i) ratio[i] = original[i] > 0 ? deformed[i] / original[i] : 0.0;
+    return ratio;
+}
+
+RatioSummary summarize_ratios(std::span<const double> ratios) {
+    RatioSummary s;
+    if (ratios.empty()) return s;
+    OrderedSum sum;
+    s.min = ratios[0];
+    s.worst_cell = 0;
+    for (std::size_t i = 0; i < ratios.size(); ++i) {
+        sum.add(ratios[i]);
+        if (ratios[i] < s.min) {
+            s.min = ratios[i];
+            s.worst_cell = static_cast<std::int64_t>(i);
+        }
+    }
+    s.mean = sum.value() / static_cast<double>(ratios.size());
+    return s;
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,192 @@
+#include "dgwarp/quality/mesh_quality.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/quality/cell_quality.hpp"
+
+using namespace dgwarp;
+
+namespace {
+
+// Appends a cell whose nodes are new points `xy` (dim values each).
+void add_cell(Mesh& m, CellType type, std::vector<double> xy) {
+    std::vector<NodeId> ids;
+    for (std::size_t i = 0; i < xy.size(); i += static_cast<std::size_t>(m.dim)) {
+        ids.push_back(static_cast<NodeId>(m.num_points()));
+        m.points.insert(m.points.end(), xy.begin() + static_cast<std::ptrdiff_t>(i),
+                        xy.begin() + static_cast<std::ptrdiff_t>(i) + m.dim);
+    }
+    m.cells.push_back(type, ids);
+}
+
+// Unit square (1), trapezoid (32/39), 30-60-90 triangle (0.75) and a clockwise
+// right isosceles triangle (-√3/2 against the counter-clockwise majority).
+Mesh mixed_2d_mesh() {
+    Mesh m;
+    m.dim = 2;
+    add_cell(m, CellType::quadrilateral, {0, 0, 1, 0, 1, 1, 0, 1});
+    add_cell(m, CellType::quadrilateral, {1, 0, 3, 0, 2.5, 1, 1.5, 1});
+    add_cell(m, CellType::triangle, {0, 1, std::sqrt(3.0), 1, 0, 2});
+    add_cell(m, CellType::triangle, {3, 0, 4, 1, 4, 0});
+    add_cell(m, CellType::triangle, {5, 0, 6, 0, 5, 1});
+    return m;
+}
+
+Mesh mirrored(Mesh m) {
+    for (std::size_t i = 0; i < m.points.size(); i += static_cast<std::size_t>(m.dim)) m.points[i] = -m.points[i];
+    return m;
+}
+
+// A structured nx × ny × nz hexahedral grid with randomly moved nodes.
+Mesh perturbed_hex_grid(int nx, int ny, int nz, std::uint32_t seed) {
+    Mesh m;
+    m.dim = 3;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-0.2, 0.2);
+    for (int k = 0; k <= nz; ++k)
+        for (int j = 0; j <= ny; ++j)
+            for (int i = 0; i <= nx; ++i) m.points.insert(m.points.end(), {i + u(rng), j + u(rng), k + u(rng)});
+    auto id = [&](int i, int j, int k) { return static_cast<NodeId>((k * (ny + 1) + j) * (nx + 1) + i); };
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const NodeId h[] = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                                    id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+                m.cells.push_back(CellType::hexahedron, h);
+            }
+    return m;
+}
+
+}  // namespace
+
+TEST(QualityDriver, MixedMeshHandComputedSummary) {
+    const Mesh m = mixed_2d_mesh();
+    const auto orientation = dominant_orientations(m);
+    EXPECT_EQ(orientation, (std::vector<std::int8_t>{1, 1, 1, 1, 1}));
+    const auto quality = cell_qualities(m, orientation);
+    const double s3 = std::sqrt(3.0);
+    const double expected[] = {1.0, 32.0 / 39.0, 0.75, -s3 / 2, s3 / 2};
+    ASSERT_EQ(quality.size(), 5u);
+    for (int i = 0; i < 5; ++i) EXPECT_NEAR(quality[i], expected[i], 1e-12) << "cell " << i;
+
+    const QualitySummary s = summarize_quality(quality);
+    EXPECT_EQ(s.cells, 5);
+    EXPECT_NEAR(s.min, -s3 / 2, 1e-12);
+    EXPECT_EQ(s.worst_cell, 3);
+    EXPECT_NEAR(s.mean, (1.0 + 32.0 / 39.0 + 0.75) / 5, 1e-12);
+    EXPECT_EQ(s.inverted, 1);
+    ASSERT_EQ(s.histogram.counts.size(), 11u);
+    ASSERT_EQ(s.histogram.edges.size(), 12u);
+    EXPECT_EQ(s.histogram.edges[0], -std::numeric_limits<double>::infinity());
+    EXPECT_EQ(s.histogram.edges[1], 0.0);
+    EXPECT_EQ(s.histogram.edges[11], 1.0);
+    //                      (-inf,0] .1 .2 .3 .4 .5 .6 .7 .8 .9  1
+    const std::vector<std::int64_t> counts{1, 0, 0, 0, 0, 0, 0, 0, 1, 2, 1};
+    EXPECT_EQ(s.histogram.counts, counts);
+}
+
+TEST(QualityDriver, MeshWrittenClockwiseIsNotInverted) {
+    const Mesh m = mirrored(mixed_2d_mesh());
+    const auto orientation = dominant_orientations(m);
+    EXPECT_EQ(orientation, (std::vector<std::int8_t>{-1, -1, -1, -1, -1}));
+    const auto original = cell_qualities(mixed_2d_mesh(), dominant_orientations(mixed_2d_mesh()));
+    const auto quality = cell_qualities(m, orientation);
+    for (std::size_t i = 0; i < quality.size(); ++i) EXPECT_NEAR(quality[i], original[i], 1e-14);
+    EXPECT_EQ(summarize_quality(quality).inverted, 1);
+}
+
+TEST(QualityDriver, DominantOrientationIsPerCellTypeWithTiesPositive) {
+    Mesh m;
+    m.dim = 2;
+    add_cell(m, CellType::triangle, {0, 0, 1, 0, 0, 1});      // counter-clockwise
+    add_cell(m, CellType::triangle, {0, 0, 0, 1, 1, 0});      // clockwise: a tie
+    add_cell(m, CellType::quadrilateral, {0, 0, 0, 1, 1, 1, 1, 0});  // clockwise quads
+    add_cell(m, CellType::quadrilateral, {2, 0, 2, 1, 3, 1, 3, 0});
+    add_cell(m, CellType::quadrilateral, {4, 0, 5, 0, 5, 1, 4, 1});  // one counter-clockwise
+    EXPECT_EQ(cell_orientations(m), (std::vector<std::int8_t>{1, -1, -1, -1, 1}));
+    EXPECT_EQ(dominant_orientations(m), (std::vector<std::int8_t>{1, 1, -1, -1, -1}));
+    const auto quality = cell_qualities(m, dominant_orientations(m));
+    EXPECT_GT(quality[0], 0);
+    EXPECT_LE(quality[1], 0);
+    EXPECT_NEAR(quality[2], 1.0, 1e-12);
+    EXPECT_NEAR(quality[3], 1.0, 1e-12);
+    EXPECT_LE(quality[4], 0);
+}
+
+TEST(QualityDriver, ReferenceOrientationsJudgeADeformedMesh) {
+    const Mesh reference = perturbed_hex_grid(3, 3, 3, 1);
+    const auto orientation = cell_orientations(reference);
+    Mesh deformed = reference;
+    // push the first cell's node 4 below its bottom face
+    const NodeId n4 = deformed.cells.nodes_of(0)[4];
+    deformed.points[3 * static_cast<std::size_t>(n4) + 2] = -1.0;
+    const auto quality = cell_qualities(deformed, orientation);
+    EXPECT_LE(quality[0], 0);
+    const QualitySummary s = summarize_quality(quality);
+    EXPECT_EQ(s.worst_cell, 0);
+    EXPECT_GE(s.inverted, 1);
+}
+
+TEST(QualityDriver, ThreadCountDoesNotChangeTheResult) {
+    const Mesh m = perturbed_hex_grid(24, 20, 16, 9);
+    const int threads = num_threads();
+    set_num_threads(1);
+    const auto one = cell_qualities(m, cell_orientations(m));
+    set_num_threads(2);
+    const auto two = cell_qualities(m, cell_orientations(m));
+    set_num_threads(threads);
+    ASSERT_EQ(one.size(), m.cells.size());
+    EXPECT_EQ(one, two);  // bit-identical
+    const QualitySummary a = summarize_quality(one), b = summarize_quality(two);
+    EXPECT_EQ(a.mean, b.mean);
+    EXPECT_EQ(a.min, b.min);
+    EXPECT_EQ(a.histogram.counts, b.histogram.counts);
+}
+
+TEST(QualityDriver, HistogramBinEdgesAreInclusiveAboveAndRoundOffGoesToTheLastBin) {
+    const std::vector<double> q{0.0, -0.5, 0.1, 0.1000001, 0.3, 1.0, 1.0 + 1e-15, 0.95};
+    const QualitySummary s = summarize_quality(q);
+    const std::vector<std::int64_t> counts{2, 1, 1, 1, 0, 0, 0, 0, 0, 0, 3};
+    EXPECT_EQ(s.histogram.counts, counts);
+    EXPECT_EQ(s.inverted, 2);
+    EXPECT_EQ(s.worst_cell, 1);
+    EXPECT_EQ(s.min, -0.5);
+}
+
+TEST(QualityDriver, EmptySummary) {
+    const QualitySummary s = summarize_quality({});
+    EXPECT_EQ(s.cells, 0);
+    EXPECT_EQ(s.worst_cell, -1);
+    EXPECT_EQ(s.inverted, 0);
+    EXPECT_EQ(s.histogram.counts, std::vector<std::int64_t>(11, 0));
+    const RatioSummary r = summarize_ratios({});
+    EXPECT_EQ(r.worst_cell, -1);
+}
+
+TEST(QualityRatios, IdenticalMeshesGiveAllRatiosOne) {
+    const Mesh m = perturbed_hex_grid(5, 4, 3, 4);
+    const auto q = cell_qualities(m, cell_orientations(m));
+    const auto ratio = quality_ratios(q, q);
+    ASSERT_EQ(ratio.size(), q.size());
+    for (double r : ratio) EXPECT_EQ(r, 1.0);
+    const RatioSummary s = summarize_ratios(ratio);
+    EXPECT_EQ(s.min, 1.0);
+    EXPECT_EQ(s.mean, 1.0);
+    EXPECT_EQ(s.worst_cell, 0);
+}
+
+TEST(QualityRatios, NonPositiveOriginalGivesZeroAndSummaryFindsTheWorst) {
+    const std::vector<double> original{0.8, 0.0, -0.2, 0.5, 0.9};
+    const std::vector<double> deformed{0.4, 0.7, 0.6, 0.5, -0.45};
+    const auto ratio = quality_ratios(deformed, original);
+    EXPECT_EQ(ratio, (std::vector<double>{0.5, 0.0, 0.0, 1.0, -0.5}));
+    const RatioSummary s = summarize_ratios(ratio);
+    EXPECT_EQ(s.min, -0.5);
+    EXPECT_EQ(s.worst_cell, 4);
+    EXPECT_NEAR(s.mean, 0.2, 1e-15);
+}
