@@ -59,9 +59,9 @@ Mesh make_rect_box(const RectBoxOptions& o) {
     mesh.cells.reserve(static_cast<std::size_t>(n) * (m - 1), 4);
     for (int j = 0; j + 1 < m; ++j)
         for (int i = 0; i < n; ++i) {
-            // i runs counter-clockwise and j outwards: (i, j) -> (i+1, j) ->
-            // (i+1, j+1) -> (i, j+1) turns counter-clockwise.
-            const NodeId q[] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+            // i runs counter-clockwise and j outwards; outward-then-along,
+            // (i, j) -> (i, j+1) -> (i+1, j+1) -> (i+1, j), turns counter-clockwise.
+            const NodeId q[] = {id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)};
             mesh.cells.push_back(CellType::quadrilateral, q);
         }
     Marker rect{"rectangle", {}}, farfield{"farfield", {}};
