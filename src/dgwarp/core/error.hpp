@@ -31,7 +31,7 @@ private:
 class ParseError : public Error {
 public:
     ParseError(std::string file, std::size_t line, std::string expected, std::string found)
-        : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": expected " +
+        : Error(file + (line ? std::string(":") + std::to_string(line) : std::string()) + ": expected " +
                 expected + (found.empty() ? std::string() : ", found '" + found + "'")),
           file_(std::move(file)), line_(line), expected_(std::move(expected)),
           found_(std::move(found)) {}
