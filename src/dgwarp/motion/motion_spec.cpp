@@ -1,0 +1,57 @@
+#include "dgwarp/motion/motion_spec.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <numbers>
+
+namespace dgwarp {
+
+Vec3 rotation_vector(double angle, const Vec3& axis) {
+    const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    assert(norm > 0);
+    return {angle * axis[0] / norm, angle * axis[1] / norm, angle * axis[2] / norm};
+}
+
+NodeMotion periodic_motion_at(const PeriodicMotion& motion, double t) {
+    NodeMotion m;
+    if (motion.pitch) {
+        const Pitch& p = *motion.pitch;
+        const double angle = p.mean + p.amplitude * std::sin(2 * std::numbers::pi * p.frequency * t + p.phase);
+        m.rotation = rotation_vector(angle, p.axis);
+        m.center = p.center;
+    }
+    if (motion.plunge) {
+        const Plunge& p = *motion.plunge;
+        const double s = std::sin(2 * std::numbers::pi * p.frequency * t + p.phase);
+        m.translation = {p.amplitude[0] * s, p.amplitude[1] * s, p.amplitude[2] * s};
+    }
+    return m;
+}
+
+std::size_t frame_count(const MotionSpec& spec) {
+    return spec.time ? static_cast<std::size_t>(spec.time->steps) : spec.frames.size();
+}
+
+double frame_time(const MotionSpec& spec, std::size_t frame) {
+    return spec.time ? static_cast<double>(frame) * spec.time->time_step : 0.0;
+}
+
+const MotionFrame& frame_spec(const MotionSpec& spec, std::size_t frame) {
+    assert(frame < frame_count(spec));
+    return spec.time ? spec.frames.at(0) : spec.frames.at(frame);
+}
+
+const MarkerMotion& marker_motion(const MotionSpec& spec, const MotionFrame& frame,
+                                  const std::string& name) {
+    const auto it = frame.markers.find(name);
+    return it == frame.markers.end() ? spec.default_motion : it->second;
+}
+
+const char* motion_kind_name(const MarkerMotion& motion) {
+    static constexpr const char* names[] = {"fixed",        "rigid",        "periodic", "displacement_file",
+                                            "surface_file", "node_motion_file"};
+    static_assert(std::variant_size_v<MarkerMotion> == std::size(names));
+    return names[motion.index()];
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,257 @@
+#include "dgwarp/motion/resolve_motion.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <utility>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/motion/marker_node_motions.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+/// What every frame of one (mesh, spec) pair shares.
+struct Context {
+    const Mesh& mesh;
+    const MotionSpec& spec;
+    std::vector<std::vector<NodeId>> marker_nodes;   // per marker, sorted
+    std::vector<std::vector<std::int32_t>> slots;    // per marker node: its index in the boundary set
+    std::vector<char> marker_moving;                 // per marker
+    BoundarySet boundary;
+    std::vector<char> on_static, on_moving;          // per boundary node
+    double diagonal = 0;                             // of the mesh's bounding box
+    double tolerance = 0;                            // for agreeing new positions
+};
+
+std::string where(const MotionSpec& spec, std::size_t frame) {
+    std::string w = spec.source.empty() ? std::string("motion") : spec.source;
+    if (frame_count(spec) > 1) w += ", frame " + std::to_string(frame);
+    return w;
+}
+
+std::string point_text(std::span<const double> p) {
+    std::ostringstream s;
+    s << "(";
+    for (std::size_t i = 0; i < p.size(); ++i) s << (i ? ", " : "") << p[i];
+    s << ")";
+    return s.str();
+}
+
+void check_marker_names(const Mesh& mesh, const MotionSpec& spec) {
+    for (std::size_t f = 0; f < spec.frames.size(); ++f)
+        for (const auto& [name, motion] : spec.frames[f].markers) {
+            const bool known = std::any_of(mesh.markers.begin(), mesh.markers.end(),
+                                           [&](const Marker& m) { return m.name == name; });
+            if (known) continue;
+            std::string list;
+            for (const Marker& m : mesh.markers) list += (list.empty() ? "" : ", ") + m.name;
+            throw MeshError(where(spec, spec.time ? 0 : f) + " names marker '" + name +
+                                "', which the mesh does not have; the mesh has: " +
+                                (list.empty() ? std::string("no markers") : list),
+                            name);
+        }
+}
+
+double bounding_box_diagonal(const Mesh& mesh) {
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    if (mesh.num_points() == 0) return 0;
+    double sum = 0;
+    for (std::size_t i = 0; i < dim; ++i) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (std::size_t p = i; p < mesh.points.size(); p += dim) {
+            lo = std::min(lo, mesh.points[p]);
+            hi = std::max(hi, mesh.points[p]);
+        }
+        sum += (hi - lo) * (hi - lo);
+    }
+    return std::sqrt(sum);
+}
+
+Context make_context(const Mesh& mesh, const MotionSpec& spec) {
+    check_marker_names(mesh, spec);
+    Context c{mesh, spec, {}, {}, {}, {}, {}, {}, 0, 0};
+    const std::size_t n_markers = mesh.markers.size();
+    c.marker_nodes.reserve(n_markers);
+    for (const Marker& m : mesh.markers) c.marker_nodes.push_back(marker_nodes(m));
+    c.marker_moving.assign(n_markers, 0);
+    for (std::size_t m = 0; m < n_markers; ++m)
+        for (const MotionFrame& frame : spec.frames)
+            if (!std::holds_alternative<FixedMotion>(marker_motion(spec, frame, mesh.markers[m].name)))
+                c.marker_moving[m] = 1;
+
+    for (const auto& nodes : c.marker_nodes) c.boundary.nodes.insert(c.boundary.nodes.end(), nodes.begin(), nodes.end());
+    std::sort(c.boundary.nodes.begin(), c.boundary.nodes.end());
+    c.boundary.nodes.erase(std::unique(c.boundary.nodes.begin(), c.boundary.nodes.end()), c.boundary.nodes.end());
+    const std::size_t n = c.boundary.nodes.size();
+    c.on_static.assign(n, 0);
+    c.on_moving.assign(n, 0);
+    c.slots.resize(n_markers);
+    for (std::size_t m = 0; m < n_markers; ++m) {
+        c.slots[m].reserve(c.marker_nodes[m].size());
+        for (NodeId node : c.marker_nodes[m]) {
+            const auto slot = static_cast<std::int32_t>(
+                std::lower_bound(c.boundary.nodes.begin(), c.boundary.nodes.end(), node) - c.boundary.nodes.begin());
+            c.slots[m].push_back(slot);
+            (c.marker_moving[m] ? c.on_moving : c.on_static)[static_cast<std::size_t>(slot)] = 1;
+        }
+    }
+    c.boundary.moving.resize(n);
+    for (std::size_t b = 0; b < n; ++b)
+        c.boundary.moving[b] =
+            c.on_moving[b] && !(spec.shared_nodes == SharedNodeRule::static_wins && c.on_static[b]) ? 1 : 0;
+    c.diagonal = bounding_box_diagonal(mesh);
+    c.tolerance = spec.shared_tolerance > 0 ? spec.shared_tolerance : 1e-9 * c.diagonal;
+    return c;
+}
+
+std::span<const double> point(const Mesh& mesh, NodeId node) {
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    return {mesh.points.data() + static_cast<std::size_t>(node) * dim, dim};
+}
+
+/// Whether two motions of node x agree: equal, or the same new position within tol.
+bool agree(const NodeMotion& a, const NodeMotion& b, std::span<const double> x, double tol) {
+    if (a == b) return true;
+    double pa[3], pb[3];
+    apply_motion(a, x, pa);
+    apply_motion(b, x, pb);
+    double d2 = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) d2 += (pa[i] - pb[i]) * (pa[i] - pb[i]);
+    return std::sqrt(d2) <= tol;
+}
+
+/// Resolves one frame (see the header's rules). Appends warnings.
+BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
+                          std::vector<std::string>& warnings) {
+    const Mesh& mesh = c.mesh;
+    const std::size_t n_markers = mesh.markers.size();
+    std::vector<const MarkerMotion*> motions(n_markers);
+    for (std::size_t m = 0; m < n_markers; ++m) motions[m] = &marker_motion(c.spec, frame, mesh.markers[m].name);
+    const auto node_motions = marker_node_motions(mesh, c.marker_nodes, motions, time, at);
+
+    const std::size_t n = c.boundary.nodes.size();
+    BoundaryMotion resolved(n);
+    std::vector<std::int32_t> from(n, -1), clash(n, -1);  // first moving marker; first disagreeing one
+    const NodeMotion zero{};
+    for (std::size_t m = 0; m < n_markers; ++m) {
+        if (!c.marker_moving[m]) continue;
+        double largest = 0;
+        NodeId largest_node = -1;
+        for (std::size_t j = 0; j < c.marker_nodes[m].size(); ++j) {
+            const NodeMotion& nm = node_motions[m].empty() ? zero : node_motions[m][j];
+            const NodeId node = c.marker_nodes[m][j];
+            const auto x = point(mesh, node);
+            const auto b = static_cast<std::size_t>(c.slots[m][j]);
+            if (from[b] < 0) {
+                resolved[b] = nm;
+                from[b] = static_cast<std::int32_t>(m);
+            } else if (clash[b] < 0 && !agree(resolved[b], nm, x, c.tolerance)) {
+                clash[b] = static_cast<std::int32_t>(m);
+            }
+            double moved[3], d2 = 0;
+            apply_motion(nm, x, moved);
+            for (std::size_t i = 0; i < x.size(); ++i) d2 += (moved[i] - x[i]) * (moved[i] - x[i]);
+            if (d2 > largest * largest) {
+                largest = std::sqrt(d2);
+                largest_node = node;
+            }
+        }
+        if (largest > c.diagonal && largest_node >= 0) {
+            std::ostringstream w;
+            w << at << ": marker '" << mesh.markers[m].name << "' moves node " << largest_node << " by " << largest
+              << ", more than the diagonal of the mesh's bounding box (" << c.diagonal << ")";
+            warnings.push_back(w.str());
+        }
+    }
+
+    // Static nodes stay; count the disagreements that are not overruled.
+    std::map<std::pair<std::int32_t, std::int32_t>, std::pair<std::size_t, std::size_t>> clashes;  // -> count, example
+    for (std::size_t b = 0; b < n; ++b) {
+        if (!c.boundary.moving[b]) {
+            resolved[b] = zero;
+            continue;
+        }
+        if (clash[b] < 0) continue;
+        auto& entry = clashes[{from[b], clash[b]}];
+        if (entry.first++ == 0) entry.second = b;
+    }
+    if (!clashes.empty()) {
+        std::ostringstream e;
+        e << at << ": moving markers disagree on the nodes they share (rule "
+          << (c.spec.shared_nodes == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins") << "):";
+        for (const auto& [pair, entry] : clashes) {
+            const std::size_t b = entry.second;
+            const NodeId node = c.boundary.nodes[b];
+            const auto x = point(mesh, node);
+            const std::size_t m1 = static_cast<std::size_t>(pair.first), m2 = static_cast<std::size_t>(pair.second);
+            const auto j2 = static_cast<std::size_t>(
+                std::lower_bound(c.marker_nodes[m2].begin(), c.marker_nodes[m2].end(), node) - c.marker_nodes[m2].begin());
+            double p1[3], p2[3];
+            apply_motion(resolved[b], x, p1);
+            apply_motion(node_motions[m2].empty() ? zero : node_motions[m2][j2], x, p2);
+            e << " markers '" << mesh.markers[m1].name << "' and '" << mesh.markers[m2].name << "' on " << entry.first
+              << " node" << (entry.first == 1 ? "" : "s") << " (e.g. node " << node << " moves to "
+              << point_text({p1, x.size()}) << " with '" << mesh.markers[m1].name << "' and to "
+              << point_text({p2, x.size()}) << " with '" << mesh.markers[m2].name << "');";
+        }
+        std::string message = e.str();
+        message.back() = '.';
+        message += " Give the markers the same motion on the nodes they share (see shared_nodes in docs/MOTION.md).";
+        const auto& [pair, entry] = *clashes.begin();
+        throw MeshError(message, mesh.markers[static_cast<std::size_t>(pair.first)].name,
+                        c.boundary.nodes[entry.second]);
+    }
+    return resolved;
+}
+
+}  // namespace
+
+ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
+    const Context c = make_context(mesh, spec);
+    ResolvedBoundary out;
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
+        (c.marker_moving[m] ? out.moving_markers : out.static_markers).push_back(mesh.markers[m].name);
+
+    std::size_t shared = 0;
+    for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b) shared += c.on_moving[b] && c.on_static[b];
+    if (shared > 0)
+        out.warnings.push_back(
+            std::to_string(shared) + " boundary node" + (shared == 1 ? " is" : "s are") +
+            " on both a moving and a static marker; " +
+            (spec.shared_nodes == SharedNodeRule::moving_wins ? "they follow the moving markers (shared_nodes: moving_wins)"
+                                                              : "they stay fixed (shared_nodes: static_wins)"));
+
+    // Resolve every frame the spec writes out (step 0 for periodic motions),
+    // so that bad files and conflicts fail before any deformation.
+    for (std::size_t f = 0; f < spec.frames.size(); ++f)
+        resolve_at(c, spec.frames[f], 0.0, where(spec, f), out.warnings);
+    out.boundary = c.boundary;
+    return out;
+}
+
+ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
+                            std::size_t frame) {
+    const Context c = make_context(mesh, spec);
+    assert(boundary.nodes == c.boundary.nodes && boundary.moving == c.boundary.moving);
+    (void)boundary;
+    ResolvedFrame out;
+    out.motion = resolve_at(c, frame_spec(spec, frame), frame_time(spec, frame), where(spec, frame), out.warnings);
+    return out;
+}
+
+std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& boundary,
+                                          const BoundaryMotion& motion) {
+    assert(motion.size() == boundary.nodes.size());
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    std::vector<double> out(boundary.nodes.size() * dim);
+    for (std::size_t b = 0; b < boundary.nodes.size(); ++b)
+        apply_motion(motion[b], point(mesh, boundary.nodes[b]), {out.data() + b * dim, dim});
+    return out;
+}
+
+}  // namespace dgwarp

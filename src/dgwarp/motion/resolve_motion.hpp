@@ -1,0 +1,63 @@
+#pragma once
+// From a motion spec to per-node motions: which boundary nodes move, and how
+// each moves in frame k. The rules (docs/MOTION.md):
+//  - a marker is *moving* when some frame gives it a motion other than
+//    "fixed" (even one that is zero in that frame, such as step 0 of a
+//    pitching motion or the zero-displacement rim of a bump); otherwise static.
+//  - a boundary node is moving when it is on a moving marker, except, under
+//    SharedNodeRule::static_wins, when it is also on a static marker. This
+//    flag does not change from frame to frame (the DG-IDW weights depend on it).
+//  - a node on several moving markers takes their common motion; they must
+//    agree: the same NodeMotion, or new positions within the tolerance
+//    (spec.shared_tolerance, default 1e-9 × the mesh's bounding-box diagonal).
+//    When they agree only by position, the node takes the motion of the first
+//    of those markers in mesh order. Disagreement is an error naming the
+//    markers and the number of nodes, except for nodes that static_wins holds
+//    fixed.
+//  - static nodes get the zero motion (t = 0, w = 0, c = 0).
+// Nothing here prints: warnings come back as strings.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/motion/motion_spec.hpp"
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp {
+
+/// The boundary of a motion problem and how its markers were classified.
+struct ResolvedBoundary {
+    BoundarySet boundary;                     // every node of every marker, sorted; moving flags
+    std::vector<std::string> moving_markers;  // in mesh order
+    std::vector<std::string> static_markers;  // in mesh order
+    std::vector<std::string> warnings;        // e.g. nodes shared by moving and static markers
+};
+
+/// Classifies markers and boundary nodes, and checks everything about `spec`
+/// against `mesh` that can fail: unknown marker names, node files (coverage,
+/// ids, dimension), 2D motions out of the plane, and the shared-node rule in
+/// every frame of a frame list (for periodic motions, in step 0).
+/// Throws MeshError naming the marker (and node, when one node is at fault);
+/// for an unknown marker, the message lists the mesh's markers.
+ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec);
+
+/// One frame's motion of the boundary nodes.
+struct ResolvedFrame {
+    BoundaryMotion motion;              // one NodeMotion per node of the BoundarySet, in its order
+    std::vector<std::string> warnings;  // e.g. a marker moved farther than the mesh's size
+};
+
+/// The motion of every boundary node in frame `frame` (< frame_count(spec)).
+/// `boundary` must be resolve_boundary(mesh, spec).boundary. Throws MeshError
+/// as resolve_boundary does, and when moving markers disagree on shared
+/// nodes in this frame (naming the pairs of markers and the node counts).
+ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
+                            std::size_t frame);
+
+/// The new positions of the boundary nodes under `motion` (apply_motion per
+/// node): boundary.nodes.size() × mesh.dim, row-major, in BoundarySet order.
+std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& boundary,
+                                          const BoundaryMotion& motion);
+
+}  // namespace dgwarp
