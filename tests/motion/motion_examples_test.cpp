@@ -77,7 +77,9 @@ TEST(MotionExamples, EveryExampleResolvesOnItsMesh) {
             const ResolvedFrame fr = resolve_frame(mesh, spec, rb.boundary, k);
             ASSERT_EQ(fr.motion.size(), rb.boundary.nodes.size());
             for (std::size_t b = 0; b < fr.motion.size(); ++b) {
-                if (!rb.boundary.moving[b]) EXPECT_EQ(fr.motion[b], NodeMotion{});
+                if (!rb.boundary.moving[b]) {
+                    EXPECT_EQ(fr.motion[b], NodeMotion{});
+                }
             }
         }
     }
