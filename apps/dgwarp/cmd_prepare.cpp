@@ -1,0 +1,56 @@
+// dgwarp prepare MESH --motion M.json -o PLAN: build the plan once, reuse it every step.
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "deform_setup.hpp"
+#include "dgwarp/io/plan_file.hpp"
+#include "stopwatch.hpp"
+
+namespace dgwarp::cli {
+
+namespace {
+
+struct PrepareArgs {
+    SetupArgs setup;
+    std::string output;
+    bool json = false;
+    bool quiet = false;
+};
+
+void run_prepare(const PrepareArgs& a) {
+    const Setup s = set_up(a.setup, "");
+    Stopwatch sw;
+    save_dg_idw_plan(a.output, s.plan);
+    const double write_seconds = sw.lap();
+    if (a.json) {
+        nlohmann::json j = setup_json(s, "prepare");
+        j["output"] = a.output;
+        j["seconds"]["write"] = write_seconds;
+        std::cout << j.dump(2) << "\n";
+    } else if (!a.quiet) {
+        print_setup(std::cout, s, frame_count(s.spec));
+        std::cout << "wrote " << a.output << "\n";
+    }
+}
+
+}  // namespace
+
+void add_prepare_command(CLI::App& app) {
+    auto args = std::make_shared<PrepareArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "prepare", "Build the deformation plan (Delaunay graph, node location, weights) once and save it");
+    add_setup_options(cmd, args->setup);
+    cmd->add_option("-o,--output", args->output, "Plan file to write")->required();
+    cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
+    cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
+    cmd->footer(
+        "The plan depends on the mesh and on which markers move (from the motion file), not on the\n"
+        "motion's values: reuse it for every step with 'dgwarp deform --plan'. a and L are deform options.\n\n"
+        "Examples:\n"
+        "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
+        "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");
+    cmd->callback([args] { run_prepare(*args); });
+}
+
+}  // namespace dgwarp::cli
