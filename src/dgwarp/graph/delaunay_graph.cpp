@@ -1,0 +1,68 @@
+#include "dgwarp/graph/delaunay_graph.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/graph/coincident_points.hpp"
+#include "dgwarp/graph/triangulate_detail.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+void check_nodes(int dim, std::span<const double> points, std::span<const NodeId> nodes,
+                 const char* what) {
+    const auto num_points = static_cast<std::int64_t>(points.size() / static_cast<std::size_t>(dim));
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const NodeId n = nodes[k];
+        if (n < 0 || n >= num_points)
+            throw MeshError(std::string(what) + " node id " + std::to_string(n) + " is out of range (the mesh has " +
+                                std::to_string(num_points) + " points)",
+                            {}, n);
+        for (int d = 0; d < dim; ++d)
+            if (!std::isfinite(points[static_cast<std::size_t>(n) * dim + d]))
+                throw MeshError(std::string(what) + " node " + std::to_string(n) + " has a non-finite coordinate",
+                                {}, n);
+    }
+}
+
+}  // namespace
+
+LocatedGraph build_located_graph(int dim, std::span<const double> points,
+                                 std::span<const NodeId> boundary_nodes,
+                                 std::span<const NodeId> query_nodes, const GraphOptions& options) {
+    if (dim != 2 && dim != 3) throw MeshError("the Delaunay graph needs dim 2 or 3, got " + std::to_string(dim));
+    if (points.size() % static_cast<std::size_t>(dim) != 0)
+        throw MeshError("the point array holds " + std::to_string(points.size()) +
+                        " values, not a whole number of " + std::to_string(dim) + "D points");
+    check_nodes(dim, points, boundary_nodes, "boundary");
+    check_nodes(dim, points, query_nodes, "query");
+
+    const auto t0 = Clock::now();
+    LocatedGraph out;
+    out.graph.dim = dim;
+    CoincidentGroups groups = group_coincident_points(dim, points, boundary_nodes);
+    if (groups.size() < static_cast<std::size_t>(dim + 1))
+        throw MeshError("the Delaunay graph needs at least " + std::to_string(dim + 1) +
+                        " distinct boundary points in " + std::to_string(dim) + "D, got " +
+                        std::to_string(groups.size()) + " (from " + std::to_string(boundary_nodes.size()) +
+                        " boundary nodes)");
+    std::vector<NodeId> vertex_node(groups.size());
+    for (std::size_t v = 0; v < groups.size(); ++v) vertex_node[v] = boundary_nodes[groups.members[groups.offsets[v]]];
+    out.graph.vertex_offsets = std::move(groups.offsets);
+    out.graph.vertex_nodes = std::move(groups.members);
+    const double group_seconds = seconds_since(t0);
+
+    detail::TriangulationResult tri =
+        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, options.hilbert_order)
+                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, options.hilbert_order);
+    out.graph.simplices = std::move(tri.simplices);
+    out.location = std::move(tri.location);
+    out.timings = tri.timings;
+    out.timings.triangulate_seconds += group_seconds;
+    return out;
+}
+
+}  // namespace dgwarp

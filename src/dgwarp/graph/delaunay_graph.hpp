@@ -1,0 +1,76 @@
+#pragma once
+// The Delaunay graph of DG-IDW and DGM: the Delaunay triangulation (2D) or
+// tetrahedralisation (3D) of the boundary nodes in their original positions,
+// and the graph simplex that holds each volume node (METHODS.md, "DG-IDW",
+// prepare steps 1 and 2). Plain data out; CGAL stays inside the .cpp files.
+//
+// Indices: a "boundary index" b is a position in the boundary node list
+// given to build_located_graph (BoundarySet order); a graph vertex v stands
+// for one or more boundary indices with identical coordinates.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+
+namespace dgwarp {
+
+struct DelaunayGraph {
+    int dim = 3;
+    /// Graph vertex v stands for boundary indices
+    /// vertex_nodes[vertex_offsets[v] .. vertex_offsets[v+1]), ascending; more
+    /// than one when boundary nodes share coordinates. Vertices are numbered in
+    /// the order of their smallest boundary index.
+    std::vector<std::int32_t> vertex_offsets{0};  // num_vertices() + 1
+    std::vector<std::int32_t> vertex_nodes;       // one entry per boundary index
+    /// num_simplices() × (dim + 1) graph vertex ids, positively oriented.
+    std::vector<std::int32_t> simplices;
+
+    std::size_t num_vertices() const { return vertex_offsets.size() - 1; }
+    std::size_t num_simplices() const { return simplices.size() / static_cast<std::size_t>(dim + 1); }
+};
+
+/// Where each query node lies in the graph.
+struct GraphLocation {
+    /// Per query node (in the order given), the graph simplex holding it. A
+    /// node outside the graph's convex hull gets the finite simplex across the
+    /// hull facet (edge in 2D) that CGAL's walk stopped at: the hull simplex
+    /// whose outer facet faces the node.
+    std::vector<std::int32_t> simplex;
+    std::int64_t outside_count = 0;  // query nodes outside the convex hull
+};
+
+/// Wall-clock seconds of the two stages (for benchmarks and logs).
+struct GraphTimings {
+    double triangulate_seconds = 0;  // deduplication + Delaunay insertion + tables
+    double locate_seconds = 0;       // ordering + point location
+};
+
+struct LocatedGraph {
+    DelaunayGraph graph;
+    GraphLocation location;
+    GraphTimings timings;
+};
+
+struct GraphOptions {
+    /// Visit the query nodes in Hilbert-curve order (true) or in the given
+    /// order (false) when locating; each walk starts from the previous node's
+    /// simplex, so a spatially coherent order keeps walks short.
+    bool hilbert_order = true;
+};
+
+/// Builds the Delaunay graph of the boundary nodes and locates the query nodes in it.
+///  dim:            2 or 3
+///  points:         num_points × dim mesh coordinates, row-major
+///  boundary_nodes: node ids of the graph's points (any order; index b of this
+///                  list is "boundary index" b)
+///  query_nodes:    node ids to locate (usually the volume nodes)
+/// Throws MeshError when a node id is out of range, when there are fewer than
+/// dim + 1 distinct boundary points, or when they are all collinear (2D) /
+/// coplanar (3D), so that no graph simplex exists.
+LocatedGraph build_located_graph(int dim, std::span<const double> points,
+                                 std::span<const NodeId> boundary_nodes,
+                                 std::span<const NodeId> query_nodes,
+                                 const GraphOptions& options = {});
+
+}  // namespace dgwarp

@@ -1,0 +1,35 @@
+#pragma once
+// Internal: the CGAL stages of build_located_graph, one implementation per
+// dimension (triangulate_2d.cpp, triangulate_3d.cpp). Not part of the API.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dgwarp/graph/delaunay_graph.hpp"
+
+namespace dgwarp::detail {
+
+struct TriangulationResult {
+    std::vector<std::int32_t> simplices;  // num_simplices × (dim+1) graph vertex ids
+    GraphLocation location;
+    GraphTimings timings;
+};
+
+/// Delaunay triangulation of the points `vertex_node[v]` (graph vertex v; all
+/// distinct), then location of `query_nodes`. `points` is num_points × dim.
+/// Throws MeshError when the vertices do not span the plane / space.
+TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
+                                              std::span<const NodeId> vertex_node,
+                                              std::span<const NodeId> query_nodes,
+                                              bool hilbert_order);
+TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
+                                              std::span<const NodeId> vertex_node,
+                                              std::span<const NodeId> query_nodes,
+                                              bool hilbert_order);
+
+/// Queries are located in blocks of this many visits, each block walking from
+/// its own start, so blocks can run in parallel and the result does not
+/// depend on the thread count.
+inline constexpr std::int64_t locate_block_size = 8192;
+
+}  // namespace dgwarp::detail

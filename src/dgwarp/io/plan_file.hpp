@@ -1,0 +1,38 @@
+#pragma once
+// A DG-IDW plan on disk, so a solver can prepare once and deform in later runs.
+//
+// Format (version 1, little-endian, no padding):
+//   header:  magic "DGWPLAN\0" (8 bytes), u32 format version, u32 dim,
+//            i64 num_points, u64 points hash, u64 boundary hash (the mesh
+//            fingerprint), f64 auto length scale, i64 outside / snapped /
+//            shared-vertex counts, then u64 element counts of the 8 arrays;
+//   arrays:  boundary_nodes i32, boundary_moving u8, simplices i32,
+//            vertex_motion i32, shared_offsets i32, shared_members i32,
+//            node_simplex i32, node_coefficients f64 (DgIdwPlan's fields);
+//   trailer: u64 checksum: hash64 (XXH64) chained over the header and then
+//            each array (each part hashed with the previous part's hash as seed).
+#include <filesystem>
+#include <span>
+
+#include "dgwarp/methods/dg_idw.hpp"
+
+namespace dgwarp {
+
+/// Writes `plan` to `path` atomically (write_file_atomically). Throws IoError.
+void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan);
+
+/// Reads a plan. Throws IoError when the file cannot be read, and ParseError
+/// (naming the file and the byte offset) when it is not a plan file, has
+/// another format version, is truncated or longer than its header says, fails
+/// its checksum, or holds inconsistent indices. The sizes in the header are
+/// checked against the file size before anything is allocated. Timings in
+/// the loaded plan's stats are 0.
+DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path);
+
+/// load_dg_idw_plan, then check_plan_fits: also throws MeshError when the plan
+/// was made for another mesh (points: num_points × dim original coordinates)
+/// or another boundary set.
+DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path, std::span<const double> points,
+                           const BoundarySet& boundary);
+
+}  // namespace dgwarp

@@ -1,0 +1,126 @@
+#pragma once
+// DG-IDW: Delaunay-graph-based inverse distance weighting (Wang, Qin, Zhao;
+// METHODS.md "DG-IDW"). prepare_dg_idw builds a plan once per mesh and
+// boundary set; deform_dg_idw moves every node for one step's boundary motion
+// in a single pass over the plan, into the caller's array.
+//
+// Conventions: points are num_points × dim, row-major; node ids are 0-based;
+// a "boundary index" b is a position in BoundarySet::nodes (and in a
+// BoundaryMotion); volume nodes are the mesh nodes not in the boundary set.
+//
+// Weights. A volume node x0 lies in a graph simplex with corners v_k at
+// distances r_k (original configuration). With u_k = 1 / r_k, the plan stores
+// one coefficient per corner, q_k = u_k^2 for a moving corner and
+// q_k = m u_k for a static one, where m folds in the paper's multipliers:
+//   one static corner, rest moving  (paper: dim r^-1):  m = dim
+//   one moving corner, rest static  (paper: dim a):     m = 1 / dim
+//   otherwise                                           m = 1.
+// With distances divided by the length scale L, a component s of (t, w) is
+//   s = sum_moving A q_k s_k / (sum_moving A q_k + sum_static L q_k),  A = a L^2,
+// which is METHODS.md's formula: a (r/L)^-2 = A u^2 and (r/L)^-1 = L u.
+// Storing q rather than finished weights keeps a and L deform-time options
+// at the cost of (dim + 1) multiply-adds and one division per set of weights;
+// storing weights for two values of a would double the per-node plan size.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dgwarp/methods/mesh_fingerprint.hpp"
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp {
+
+struct DgIdwOptions {
+    double a_translation = 7.0;  // a for the translation components (paper: 7)
+    double a_rotation = 1.4;     // a for the rotation-vector components (paper: 1.4)
+    /// L, the length distances are divided by. 1 reproduces the paper's
+    /// formula (which is not scale invariant); 0 = auto: the diagonal of the
+    /// bounding box of the moving boundary nodes (of all boundary nodes when
+    /// none moves), computed at prepare time and kept in the plan.
+    double length_scale = 1.0;
+};
+
+/// What prepare_dg_idw found, and how long its stages took.
+struct DgIdwPrepareStats {
+    std::int64_t outside_count = 0;  // volume nodes outside the graph's convex hull (nearest hull simplex used)
+    std::int64_t snapped_count = 0;  // volume nodes on a graph vertex (they take its motion)
+    std::int64_t shared_vertex_count = 0;  // graph vertices standing for several boundary nodes
+    double graph_seconds = 0;    // Delaunay graph (0 in a loaded plan)
+    double locate_seconds = 0;   // point location (0 in a loaded plan)
+    double weights_seconds = 0;  // coefficients and fingerprint (0 in a loaded plan)
+};
+
+/// Everything deform_dg_idw needs, as plain arrays (see plan_file.hpp to save it).
+struct DgIdwPlan {
+    int dim = 3;
+    MeshFingerprint mesh;                     // the mesh and boundary set it was built for
+    double auto_length_scale = 1;             // L used when options.length_scale == 0
+    std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
+    std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
+    /// num_simplices × (dim + 1) graph vertex ids.
+    std::vector<std::int32_t> simplices;
+    /// Per graph vertex: b >= 0 when it moves, with the motion of boundary index b;
+    /// -1 - b when it is static (b its first boundary index).
+    std::vector<std::int32_t> vertex_motion;
+    /// Graph vertices standing for several boundary nodes (same coordinates):
+    /// group g holds boundary indices shared_members[shared_offsets[g] .. shared_offsets[g+1]).
+    /// Rule: such a vertex moves if any of its nodes moves, with the motion of
+    /// its first moving node (lowest boundary index).
+    std::vector<std::int32_t> shared_offsets{0};
+    std::vector<std::int32_t> shared_members;
+    /// Per mesh node (num_points): the graph simplex of a volume node, or -1 - b
+    /// for the boundary node with boundary index b.
+    std::vector<std::int32_t> node_simplex;
+    /// num_volume_nodes × (dim + 1): coefficient q_k per simplex corner, in
+    /// ascending node-id order of the volume nodes. A node on a graph vertex
+    /// has q = 1 for that corner and 0 for the others.
+    std::vector<double> node_coefficients;
+    DgIdwPrepareStats stats;
+
+    std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
+    std::int64_t num_volume_nodes() const { return num_points() - static_cast<std::int64_t>(boundary_nodes.size()); }
+};
+
+/// Builds the plan for `points` (num_points × dim, the original coordinates)
+/// and `boundary`: the Delaunay graph of the boundary nodes, the graph simplex
+/// of every volume node, and the per-corner coefficients. The plan does not
+/// depend on the options (they are only checked here): a and L are applied at
+/// deform time, and the auto length scale is always stored.
+/// Throws MeshError for an inconsistent boundary set (unsorted, duplicate or
+/// out-of-range ids, size mismatch) or a degenerate boundary (fewer than
+/// dim + 1 distinct points, all collinear / coplanar), Error for bad options.
+DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const BoundarySet& boundary,
+                         const DgIdwOptions& options = {});
+
+/// What one deformation step found.
+struct DgIdwStepReport {
+    /// Shared graph vertices (see DgIdwPlan::shared_offsets) whose boundary
+    /// nodes have different motions this step; the vertex used the rule above.
+    std::int64_t conflicting_shared_vertices = 0;
+};
+
+/// Deforms the mesh for one step. points: the original num_points × dim
+/// coordinates the plan was built for; motion: one NodeMotion per boundary
+/// index; out: num_points × dim, written completely (it may be `points`
+/// itself: each node is read before it is written). Boundary nodes move
+/// exactly as apply_motion says (static ones are copied); each volume node x0
+/// gets the weighted translation t and rotation vector w of its simplex's
+/// moving corners and the centre c (their centres averaged with the rotation
+/// weights normalised over the moving corners), and moves to
+/// x0 + t + (R(w) - I)(x0 - c). Uses options.a_translation, a_rotation and
+/// length_scale (0 = the plan's auto value). Results do not depend on the
+/// thread count. Throws MeshError when an array size does not match the plan,
+/// Error for bad options.
+DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
+                              const BoundaryMotion& motion, std::span<double> out,
+                              const DgIdwOptions& options = {});
+
+/// Bytes held by the plan's arrays.
+std::size_t plan_bytes(const DgIdwPlan& plan);
+
+/// Throws MeshError when `plan` was not built for these points and boundary
+/// set ("the plan was made for another mesh (N points vs M)" or the same count
+/// with other coordinates / boundary nodes).
+void check_plan_fits(const DgIdwPlan& plan, std::span<const double> points, const BoundarySet& boundary);
+
+}  // namespace dgwarp

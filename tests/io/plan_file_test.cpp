@@ -1,0 +1,149 @@
+#include "dgwarp/io/plan_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "dgwarp/core/error.hpp"
+#include "support/box_in_box.hpp"
+#include "support/test_paths.hpp"
+
+using namespace dgwarp;
+using dgwarp::test::box_in_box;
+using dgwarp::test::BoxInBox;
+
+namespace {
+
+std::vector<char> read_bytes(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void write_bytes(const std::filesystem::path& p, const std::vector<char>& bytes) {
+    std::ofstream out(p, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+BoundaryMotion rotating_motion(const BoxInBox& m) {
+    BoundaryMotion motion(m.boundary.nodes.size());
+    for (std::size_t b = 0; b < motion.size(); ++b)
+        if (m.boundary.moving[b])
+            motion[b] = {{0.01 * (b % 7), -0.02, 0.005}, {0.0, m.dim == 3 ? 0.1 : 0.0, 0.3}, m.inner_center};
+    return motion;
+}
+
+// A ParseError naming the file and a byte offset; returns its message.
+std::string expect_refused(const std::filesystem::path& file, const std::string& what) {
+    try {
+        load_dg_idw_plan(file);
+        ADD_FAILURE() << "accepted: " << what;
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.file(), file.string()) << what;
+        EXPECT_NE(std::string(e.what()).find("byte offset"), std::string::npos) << what << ": " << e.what();
+        return e.what();
+    }
+    return {};
+}
+
+}  // namespace
+
+TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
+    const auto dir = dgwarp::test::scratch_dir();
+    for (int dim : {2, 3}) {
+        // Shared vertices and an outside node, so every array is non-trivial.
+        BoxInBox m = box_in_box(dim, dim == 2 ? 20 : 8);
+        const std::size_t first_extra = m.num_points();
+        for (int d = 0; d < dim; ++d) m.points.push_back(d == 0 ? 1.5 : 0.5);  // outside the box
+        for (int d = 0; d < dim; ++d) m.points.push_back(m.points[m.boundary.nodes.back() * dim + d]);  // duplicate
+        m.boundary.nodes.push_back(static_cast<NodeId>(first_extra + 1));
+        m.boundary.moving.push_back(1);
+        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary);
+        ASSERT_EQ(plan.stats.shared_vertex_count, 1);
+        ASSERT_EQ(plan.stats.outside_count, 1);
+        const auto file = dir / ("plan" + std::to_string(dim) + ".dgwplan");
+        save_dg_idw_plan(file, plan);
+        const DgIdwPlan loaded = load_dg_idw_plan(file, m.points, m.boundary);
+
+        EXPECT_EQ(loaded.dim, plan.dim);
+        EXPECT_EQ(loaded.mesh, plan.mesh);
+        EXPECT_EQ(loaded.auto_length_scale, plan.auto_length_scale);
+        EXPECT_EQ(loaded.simplices, plan.simplices);
+        EXPECT_EQ(loaded.vertex_motion, plan.vertex_motion);
+        EXPECT_EQ(loaded.shared_members, plan.shared_members);
+        EXPECT_EQ(loaded.node_simplex, plan.node_simplex);
+        EXPECT_EQ(loaded.stats.outside_count, 1);
+        EXPECT_EQ(loaded.stats.shared_vertex_count, 1);
+
+        const BoundaryMotion motion = rotating_motion(m);
+        std::vector<double> a(m.points.size()), b(m.points.size());
+        deform_dg_idw(plan, m.points, motion, a, {.length_scale = 0});
+        deform_dg_idw(loaded, m.points, motion, b, {.length_scale = 0});
+        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+    }
+}
+
+TEST(PlanFile, EveryFlippedByteIsRefused) {
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10);
+    const auto file = dir / "good.dgwplan";
+    save_dg_idw_plan(file, prepare_dg_idw(2, m.points, m.boundary));
+    const std::vector<char> good = read_bytes(file);
+    const auto bad = dir / "bad.dgwplan";
+    // Every byte of the header and the trailer, and a stride through the arrays.
+    for (std::size_t i = 0; i < good.size(); i += (i < 160 || i + 16 > good.size()) ? 1 : 37) {
+        std::vector<char> flipped = good;
+        flipped[i] ^= 0x10;
+        write_bytes(bad, flipped);
+        expect_refused(bad, "byte " + std::to_string(i) + " flipped");
+    }
+}
+
+TEST(PlanFile, TruncatedOrExtendedFilesAreRefused) {
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(3, 6);
+    const auto file = dir / "good.dgwplan";
+    save_dg_idw_plan(file, prepare_dg_idw(3, m.points, m.boundary));
+    const std::vector<char> good = read_bytes(file);
+    const auto bad = dir / "bad.dgwplan";
+    for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{100}, good.size() / 2, good.size() - 1}) {
+        write_bytes(bad, std::vector<char>(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(size)));
+        const std::string message = expect_refused(bad, "truncated to " + std::to_string(size));
+        if (size >= 136) {
+            EXPECT_NE(message.find("truncated"), std::string::npos) << message;
+        }
+    }
+    std::vector<char> longer = good;
+    longer.push_back(0);
+    write_bytes(bad, longer);
+    expect_refused(bad, "one byte longer");
+    // A header claiming a huge array is refused before anything is allocated.
+    std::vector<char> huge = good;
+    const std::uint64_t count = std::uint64_t{1} << 60;
+    // Header: magic 8, version 4, dim 4, seven 8-byte fields, then the 8 array counts.
+    std::memcpy(huge.data() + 72 + 7 * 8, &count, 8);  // node_coefficients count
+    write_bytes(bad, huge);
+    const std::string message = expect_refused(bad, "huge count");
+    EXPECT_NE(message.find("array length that fits in the file"), std::string::npos) << message;
+    EXPECT_NE(message.find("byte offset 128"), std::string::npos) << message;
+}
+
+TEST(PlanFile, APlanForAnotherMeshIsRefused) {
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10), other = box_in_box(2, 11);
+    const auto file = dir / "plan.dgwplan";
+    save_dg_idw_plan(file, prepare_dg_idw(2, m.points, m.boundary));
+    try {
+        load_dg_idw_plan(file, other.points, other.boundary);
+        FAIL();
+    } catch (const MeshError& e) {
+        EXPECT_NE(std::string(e.what()).find("made for another mesh (" + std::to_string(m.num_points()) +
+                                             " points vs " + std::to_string(other.num_points())),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(load_dg_idw_plan(dir / "missing.dgwplan"), IoError);
+    write_bytes(dir / "text.dgwplan", std::vector<char>(200, 'x'));
+    expect_refused(dir / "text.dgwplan", "not a plan file");
+}

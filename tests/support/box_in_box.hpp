@@ -1,0 +1,65 @@
+#pragma once
+// A structured box-in-box point set for deformation tests: the nodes of a
+// grid on [0, size]^dim without the inside of an inner box. Nodes on the outer
+// box are static boundary nodes, nodes on the inner box moving ones. No cells:
+// the methods under test only need points and a boundary set.
+#include <random>
+#include <vector>
+
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp::test {
+
+struct BoxInBox {
+    int dim = 2;
+    std::vector<double> points;  // num_points × dim
+    BoundarySet boundary;        // outer box static, inner box moving
+    std::vector<NodeId> volume;  // the other nodes, ascending
+    Vec3 inner_center{};         // centre of the inner box
+
+    std::size_t num_points() const { return points.size() / static_cast<std::size_t>(dim); }
+};
+
+/// n + 1 grid nodes per side (n >= 4); the inner box spans grid indices
+/// [n/3, n - n/3]. `size` scales all coordinates.
+inline BoxInBox box_in_box(int dim, int n, double size = 1.0) {
+    BoxInBox m;
+    m.dim = dim;
+    const int lo = n / 3, hi = n - n / 3;
+    const int nz = dim == 3 ? n : 0;
+    NodeId id = 0;
+    for (int k = 0; k <= nz; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                const int c[3] = {i, j, k};
+                bool inside = true, on_inner = true, on_outer = false;
+                for (int d = 0; d < dim; ++d) {
+                    inside &= c[d] > lo && c[d] < hi;
+                    on_inner &= c[d] >= lo && c[d] <= hi;
+                    on_outer |= c[d] == 0 || c[d] == n;
+                }
+                if (inside) continue;
+                on_inner &= !inside;
+                for (int d = 0; d < dim; ++d) m.points.push_back(size * c[d] / n);
+                if (on_outer || on_inner) {
+                    m.boundary.nodes.push_back(id);
+                    m.boundary.moving.push_back(on_inner ? 1 : 0);
+                } else {
+                    m.volume.push_back(id);
+                }
+                ++id;
+            }
+    for (int d = 0; d < dim; ++d) m.inner_center[d] = size * 0.5 * (lo + hi) / n;
+    return m;
+}
+
+/// `m` with every coordinate moved by up to ±amount (uniform, from `seed`):
+/// removes the cospherical point sets of a grid, whose Delaunay graph is not unique.
+inline BoxInBox jittered(BoxInBox m, double amount, unsigned seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-amount, amount);
+    for (double& x : m.points) x += u(rng);
+    return m;
+}
+
+}  // namespace dgwarp::test
