@@ -115,6 +115,49 @@ inline std::map<CellType, std::size_t> count_by_type(const ElementList& list) {
     return counts;
 }
 
+/// A small valid MSH 2.2 file: a tetrahedron and a boundary triangle in physical
+/// group 5 (line numbers in comments, for the damage tests).
+inline const std::string tet_22 =
+    "$MeshFormat\n"     // 1
+    "2.2 0 8\n"         // 2
+    "$EndMeshFormat\n"  // 3
+    "$Nodes\n"          // 4
+    "4\n"               // 5
+    "1 0 0 0\n"         // 6
+    "2 1 0 0\n"         // 7
+    "3 0 1 0\n"         // 8
+    "4 0 0 1\n"         // 9
+    "$EndNodes\n"       // 10
+    "$Elements\n"       // 11
+    "2\n"               // 12
+    "1 4 2 1 1 1 2 3 4\n"  // 13
+    "2 2 2 5 2 1 3 2\n"    // 14
+    "$EndElements\n";      // 15
+
+/// The same mesh in MSH 4.1.
+inline const std::string tet_41 =
+    "$MeshFormat\n"            // 1
+    "4.1 0 8\n"                // 2
+    "$EndMeshFormat\n"         // 3
+    "$Entities\n"              // 4
+    "0 0 1 1\n"                // 5
+    "1 0 0 0 1 1 0 1 5 0\n"    // 6
+    "1 0 0 0 1 1 1 1 1 0\n"    // 7
+    "$EndEntities\n"           // 8
+    "$Nodes\n"                 // 9
+    "1 4 1 4\n"                // 10
+    "3 1 0 4\n"                // 11
+    "1\n2\n3\n4\n"             // 12-15
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n"  // 16-19
+    "$EndNodes\n"              // 20
+    "$Elements\n"              // 21
+    "2 2 1 2\n"                // 22
+    "2 1 2 1\n"                // 23
+    "1 1 3 2\n"                // 24
+    "3 1 4 1\n"                // 25
+    "2 1 2 3 4\n"              // 26
+    "$EndElements\n";          // 27
+
 /// A 2D mesh of 6 nodes: two triangles and a quadrangle (all counter-clockwise),
 /// markers with one shared edge and an empty marker. Coordinates are not
 /// short decimals, to exercise exact number output.

@@ -3,6 +3,7 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 
 #include "dgwarp/io/gmsh_element_types.hpp"
@@ -190,15 +191,23 @@ void read_elements_22(TextReader& r, GmshContent& c) {
     expect_end_of_record(r, "the number of elements");
 
     // Gmsh 2.2 writes an element that is in several physical groups once per
-    // group, on consecutive lines with the same elementary tag; such runs are
-    // merged back into one element in all those groups.
-    struct Previous {
-        bool valid = false;
+    // group, on consecutive lines with the same elementary tag; such a run is
+    // merged back into one element in all those groups. The run's groups are
+    // collected in a set and turned into a group list once, when it ends, so
+    // even a long run costs O(k log k).
+    struct Run {
+        bool open = false;
         CellType type{};
         int elementary = 0;
         ElementNodes nodes{};
-        std::vector<int> physicals;
-    } previous;
+        std::set<int> physicals;
+        bool merged = false;
+    } run;
+    const auto close_run = [&] {
+        if (run.merged && cell_dimension(run.type) > 0)
+            c.by_dim[cell_dimension(run.type)].groups.back() =
+                c.group_of(std::vector<int>(run.physicals.begin(), run.physicals.end()));
+    };
     std::map<int, std::uint32_t> group_of_physical;  // cache: most elements are in one group
 
     for (std::int64_t i = 0; i < total; ++i) {
@@ -216,25 +225,24 @@ void read_elements_22(TextReader& r, GmshContent& c) {
         const ElementNodes nodes = read_element_nodes(r, c, t);
         expect_end_of_record(r, node_tags_text(t));
 
-        const bool repeat = previous.valid && physical != 0 && t == previous.type && elementary == previous.elementary &&
-                            nodes == previous.nodes &&
-                            std::find(previous.physicals.begin(), previous.physicals.end(), physical) ==
-                                previous.physicals.end();
-        if (repeat) {
-            previous.physicals.push_back(physical);
-            if (cell_dimension(t) > 0) c.by_dim[cell_dimension(t)].groups.back() = c.group_of(previous.physicals);
+        if (run.open && physical != 0 && !run.physicals.empty() && t == run.type &&
+            elementary == run.elementary && nodes == run.nodes && !run.physicals.contains(physical)) {
+            run.physicals.insert(physical);
+            run.merged = true;
             continue;
         }
-        previous = {true, t, elementary, nodes, {}};
+        close_run();
+        run = {true, t, elementary, nodes, {}, false};
         std::uint32_t group = 0;
         if (physical != 0) {
-            previous.physicals.push_back(physical);
+            run.physicals.insert(physical);
             const auto [it, inserted] = group_of_physical.emplace(physical, 0);
             if (inserted) it->second = c.group_of({physical});
             group = it->second;
         }
         add_element(c, t, nodes, group);
     }
+    close_run();
     expect_end_marker(r, "$EndElements");
 }
 

@@ -2,15 +2,23 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/gmsh_sections.hpp"
+#include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp {
 
 namespace {
+
+std::string number_text(double v) {
+    std::ostringstream s;
+    write_number(s, v);
+    return s.str();
+}
 
 void read_sections(TextReader& r, msh::GmshContent& c) {
     if (!r.next_nonblank_line()) r.fail("$MeshFormat (a Gmsh .msh file)", "end of file");
@@ -75,7 +83,7 @@ Mesh assemble_mesh(const std::string& file, msh::GmshContent& c) {
         for (std::size_t i = 0; i < n; ++i)
             if (c.xyz[3 * i + 2] != 0)
                 throw MeshError(file + ": the highest-dimension elements are 2D, so this is a 2D mesh, but node " +
-                                    std::to_string(i) + " has z = " + std::to_string(c.xyz[3 * i + 2]) +
+                                    std::to_string(i) + " has z = " + number_text(c.xyz[3 * i + 2]) +
                                     "; dgwarp reads 2D meshes only in the z = 0 plane (surface meshes in 3D "
                                     "are not supported)",
                                 "", static_cast<std::int64_t>(i));

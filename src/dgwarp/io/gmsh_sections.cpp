@@ -1,19 +1,16 @@
 #include "dgwarp/io/gmsh_sections.hpp"
 
 #include <algorithm>
-#include <array>
-#include <limits>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/gmsh_element_types.hpp"
 #include "dgwarp/io/gmsh_record.hpp"
 
 namespace dgwarp::msh {
 
 GmshContent::GmshContent(std::size_t size)
-    // Tags below file_size / 4 are mapped densely: at most one NodeId (4 bytes)
-    // per byte of the file, and enough for tags 1..N since a node takes more
-    // than 4 bytes of text.
+    // Tags below file_size / 4 are mapped densely: the table (4 bytes per
+    // entry) is never larger than the file, yet holds tags 1..N, since every
+    // node takes more than 4 bytes of text.
     : file_size(size), node_ids(static_cast<std::int64_t>(size / 4 + 64)) {}
 
 std::uint32_t GmshContent::group_of(std::vector<int> tags) {

@@ -10,7 +10,9 @@
 // back the same Mesh.
 #include <algorithm>
 #include <array>
-#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/atomic_write.hpp"
@@ -84,9 +86,7 @@ void write_header(std::ostream& out, const Mesh& mesh, int version) {
 
 // Bounding box (min x y z, max x y z) of the nodes of `list`; zeros when empty.
 std::array<double, 6> bounding_box(const Mesh& mesh, const ElementList& list) {
-    if (list.nodes.empty()) return {};
     std::array<double, 6> box{};
-    box.fill(0);
     bool first = true;
     for (NodeId id : list.nodes) {
         for (int k = 0; k < 3; ++k) {
