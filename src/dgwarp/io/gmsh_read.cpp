@@ -47,7 +47,7 @@ void read_sections(TextReader& r, msh::GmshContent& c) {
             // Elements of a partitioned mesh take their physical groups from
             // this section; ignoring it would silently drop every marker.
             throw FormatError(r.file() + ": partitioned MSH files are not supported; save the mesh "
-                              "unpartitioned (Gmsh: Mesh.PartitionSplitMeshFiles = 0 and no partitioning)");
+                              "before partitioning it");
         } else {
             msh::skip_section(r, name);  // $Periodic, $NodeData, $Comments, ...
         }
