@@ -1,10 +1,3 @@
-// GCC 12 warns (-Wrestrict) about std::string's operator+ inlined into
-// ParseError's constructor (fail_at_line below): a known false positive (GCC
-// bug 105329). The warning is reported at the libstdc++ line, so it can only be
-// silenced before the includes.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wrestrict"
-#endif
 #include "dgwarp/io/gmsh_record.hpp"
 
 #include <algorithm>
