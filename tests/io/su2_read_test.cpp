@@ -98,6 +98,7 @@ std::string test_name(const testing::TestParamInfo<std::filesystem::path>& info)
 }  // namespace
 
 TEST(Su2Meshes, TheFolderHoldsExactlyTheMeshesOfTheReadme) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     std::set<std::string> found, expected;
     for (const auto& p : test::su2_meshes()) found.insert(p.filename().string());
     for (const ExpectedMesh& e : expected_meshes()) expected.insert(e.file);
@@ -117,8 +118,10 @@ TEST_P(Su2ReadRealMesh, CountsMatchTheReadmeAndTheMeshIsValid) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Su2, Su2ReadRealMesh, testing::ValuesIn(test::su2_meshes()), test_name);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Su2ReadRealMesh);
 
 TEST(Su2ReadRealMeshValues, FirstAndLastRecordsAreTheFilesText) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     // Values copied from the files' text.
     const Mesh a = read_su2(test::su2_meshes_dir() / "deformation_naca0012_mesh_NACA0012_inv.su2");
     EXPECT_EQ(a.points[0], 9.997500181200000e-01);
@@ -145,6 +148,7 @@ TEST(Su2ReadRealMeshValues, FirstAndLastRecordsAreTheFilesText) {
 }
 
 TEST(Su2ReadZones, BothZonesOfTheChtFileReadWithTheReadmeCounts) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     const auto path = test::su2_meshes_dir() / cht_file;
     const Mesh z1 = read_su2(path, 1);
     const Mesh z2 = read_su2(path, 2);
@@ -160,6 +164,7 @@ TEST(Su2ReadZones, BothZonesOfTheChtFileReadWithTheReadmeCounts) {
 }
 
 TEST(Su2ReadZones, AnAbsentZoneNamesTheFileTheZoneAndTheZoneCount) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     const auto path = test::su2_meshes_dir() / cht_file;
     try {
         read_su2(path, 3);

@@ -29,3 +29,11 @@ CommandResult run_command(const std::string& command);
 CommandResult run_cli(const std::string& args);
 
 }  // namespace dgwarp::test
+
+/// Skips the current test when ../shared/meshes/su2 is not beside the
+/// repository (users' clones do not have it; CI does).
+#define DGWARP_REQUIRE_SHARED_MESHES()                       \
+    do {                                                     \
+        if (::dgwarp::test::su2_meshes().empty())            \
+            GTEST_SKIP() << "../shared/meshes/su2 not found"; \
+    } while (0)
