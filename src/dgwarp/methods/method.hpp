@@ -1,0 +1,68 @@
+#pragma once
+// One interface for every deformation method: prepare once per mesh and
+// boundary classification, deform every step. Tools and benchmarks choose a
+// method by value and treat them all alike:
+//
+//   Plan plan = prepare(Method::dg_idw, dim, points, boundary, options);
+//   StepReport r = deform(plan, points, motion, out, options);
+//
+// Methods (METHODS.md): DG-IDW (the paper's), DGM (Delaunay graph mapping),
+// IDW (global inverse distance weighting), RBF (radial basis functions).
+// Conventions as everywhere: points num_points × dim row-major, 0-based ids,
+// motions one NodeMotion per boundary node in BoundarySet order.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "dgwarp/methods/dg_idw.hpp"
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp {
+
+enum class Method { dg_idw };
+
+/// All methods, in the order tools list them.
+inline constexpr Method all_methods[] = {Method::dg_idw};
+
+/// "dg-idw", "dgm", "idw", "rbf".
+std::string_view method_name(Method m);
+
+/// The method called `name` (as method_name prints it), or nullopt.
+std::optional<Method> method_from_name(std::string_view name);
+
+/// Options of every method, each in its own plain struct with defaults.
+struct MethodOptions {
+    DgIdwOptions dg_idw;
+};
+
+/// A prepared plan of any method.
+using Plan = std::variant<DgIdwPlan>;
+
+/// What one step did, whatever the method (fields a method does not use stay 0).
+struct StepReport {
+    std::int64_t conflicting_shared_vertices = 0;  // DG-IDW: shared graph vertices with differing motions
+};
+
+/// Builds the plan of `method` for the original `points` and `boundary`.
+/// Throws as the method's own prepare does (MeshError for a bad boundary set
+/// or degenerate geometry, Error for bad options).
+Plan prepare(Method method, int dim, std::span<const double> points, const BoundarySet& boundary,
+             const MethodOptions& options = {});
+
+/// One step: writes the new coordinates of every node to `out`
+/// (num_points × dim; may alias `points`). Throws as the method's deform does
+/// (MeshError on size mismatch, InvalidResultError when the method cannot
+/// produce a valid result and was told to fail).
+StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                  std::span<double> out, const MethodOptions& options = {});
+
+/// The method a plan belongs to.
+Method plan_method(const Plan& plan);
+
+/// Bytes held by a plan's arrays.
+std::size_t plan_memory_bytes(const Plan& plan);
+
+}  // namespace dgwarp
