@@ -1,0 +1,190 @@
+// `dgwarp deform` and `dgwarp prepare` end to end on the built-in rect-box
+// mesh (written by `dgwarp demo`) and, when present, the real NACA0012 mesh.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "dgwarp/io/mesh_io.hpp"
+#include "support/test_paths.hpp"
+
+using namespace dgwarp;
+using namespace dgwarp::test;
+
+namespace {
+
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::stringstream s;
+    s << std::ifstream(p, std::ios::binary).rdbuf();
+    return s.str();
+}
+
+// The rect-box mesh in `dir`.
+std::filesystem::path rect_box(const std::filesystem::path& dir) {
+    EXPECT_EQ(run_cli("demo -o " + quoted(dir)).exit_code, 0);
+    return dir / "rect_box.su2";
+}
+
+const char* small_rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
+const char* huge_translation = R"({"markers": {"rectangle": {"translate": [4.5, 0]}}})";
+
+}  // namespace
+
+TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", small_rotation);
+    const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
+                                    quoted(dir / "out.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("command"), "deform");
+    EXPECT_EQ(j.at("method"), "dg-idw");
+    EXPECT_EQ(j.at("boundary").at("moving_markers"), nlohmann::json::array({"rectangle"}));
+    EXPECT_EQ(j.at("boundary").at("static_markers"), nlohmann::json::array({"farfield"}));
+    ASSERT_EQ(j.at("frames").size(), 1u);
+    const auto& f = j.at("frames").at(0);
+    EXPECT_EQ(f.at("quality").at("inverted").get<long>(), 0);
+    EXPECT_GT(f.at("quality").at("min").get<double>(), 0.0);
+    EXPECT_LE(f.at("ratio").at("min").get<double>(), 1.0);
+    EXPECT_TRUE(j.at("valid").get<bool>());
+    for (const char* phase : {"read", "prepare", "graph", "locate", "weights"})
+        EXPECT_GE(j.at("seconds").at(phase).get<double>(), 0.0) << phase;
+    EXPECT_GE(f.at("seconds").at("deform").get<double>(), 0.0);
+
+    // The written mesh is the original with moved points: same cells and markers.
+    const Mesh before = read_mesh(mesh), after = read_mesh(dir / "out.su2");
+    EXPECT_EQ(after.cells, before.cells);
+    EXPECT_EQ(after.markers, before.markers);
+    EXPECT_NE(after.points, before.points);
+}
+
+TEST(CliDeform, VtuOutputCarriesDisplacementAndQuality) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", small_rotation);
+    ASSERT_EQ(run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "out.vtu") + " -q")
+                  .exit_code,
+              0);
+    const CommandResult py = run_command(std::string(DGWARP_PYTHON) + " " +
+                                         quoted(source_dir() / "tests/tools/read_vtu.py") + " " +
+                                         quoted(dir / "out.vtu"));
+    ASSERT_EQ(py.exit_code, 0) << py.err;
+    EXPECT_NE(py.out.find("\"displacement\""), std::string::npos);
+    EXPECT_NE(py.out.find("\"quality\""), std::string::npos);
+    EXPECT_NE(py.out.find("\"quality_ratio\""), std::string::npos);
+}
+
+TEST(CliDeform, InvertedCellsExitWith3AndWriteNothingUnlessAllowed) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", huge_translation);
+    const auto out = write_text(dir / "out.su2", "previous result");
+    CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(out));
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_NE(r.err.find("inverted cell"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("worst:"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(out), "previous result");
+
+    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(out) + " --allow-invalid -q");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_mesh(out).num_points(), 2340u);
+}
+
+TEST(CliDeform, TimeSeriesWritesOneFilePerFrame) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "pitch.json", R"({
+        "markers": {"rectangle": {"periodic": {"pitch": {"amplitude_deg": 10, "frequency": 1, "center": [0, 0]}}}},
+        "time": {"time_step": 0.125, "steps": 5}})");
+    const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
+                                    quoted(dir / "frame.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j.at("frames").size(), 5u);
+    for (int k = 0; k < 5; ++k) {
+        const auto path = dir / ("frame_000" + std::to_string(k) + ".su2");
+        EXPECT_TRUE(std::filesystem::exists(path)) << path;
+        EXPECT_EQ(j.at("frames").at(k).at("output"), path.string());
+    }
+    // Step 0 of a sine pitch is the original mesh.
+    EXPECT_EQ(read_mesh(dir / "frame_0000.su2").points, read_mesh(mesh).points);
+    EXPECT_NE(read_mesh(dir / "frame_0002.su2").points, read_mesh(mesh).points);
+}
+
+TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", small_rotation);
+    ASSERT_EQ(run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "rb.plan") + " -q")
+                  .exit_code,
+              0);
+    ASSERT_EQ(run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "a.su2") + " -q")
+                  .exit_code,
+              0);
+    const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " --plan " +
+                                    quoted(dir / "rb.plan") + " -o " + quoted(dir / "b.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out).at("plan").at("file"), (dir / "rb.plan").string());
+    EXPECT_EQ(slurp(dir / "a.su2"), slurp(dir / "b.su2"));
+}
+
+TEST(CliPrepare, PlanOfAnotherMeshIsRefused) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", small_rotation);
+    ASSERT_EQ(run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "rb.plan") + " -q")
+                  .exit_code,
+              0);
+    // The same mesh moved a little is another mesh.
+    ASSERT_EQ(run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "moved.su2") + " -q")
+                  .exit_code,
+              0);
+    const CommandResult r = run_cli("deform " + quoted(dir / "moved.su2") + " -m " + quoted(motion) + " --plan " +
+                                    quoted(dir / "rb.plan") + " -o " + quoted(dir / "x.su2"));
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("plan"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.su2"));
+}
+
+TEST(CliDeform, BadMotionFilesExitWith2NamingTheProblem) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"({"markers": {"wing": {"translate": [1, 0]}}})", "wing"},
+        {R"({"markers": {"rectangle": {"translte": [1, 0]}}})", "translte"},
+        {R"({"markers": {"rectangle": {"translate": [1, 0)", "m.json"},
+    };
+    for (const auto& [text, needle] : cases) {
+        const auto motion = write_text(dir / "m.json", text);
+        const CommandResult r =
+            run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "x.su2"));
+        EXPECT_EQ(r.exit_code, 2) << text;
+        EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+    }
+}
+
+TEST(CliDeform, Naca0012RotationsKeepEveryCellValid) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = scratch_dir();
+    const auto mesh = su2_meshes_dir() / "deformation_naca0012_mesh_NACA0012_inv.su2";
+    for (int angle : {30, 45, 60, 90}) {
+        const auto motion = write_text(dir / "m.json", R"({"markers": {"airfoil": {"rotate": {"angle_deg": )" +
+                                                           std::to_string(angle) +
+                                                           R"(, "axis": [0, 0, 1], "center": [0.25, 0, 0]}}, "farfield": "fixed"}})");
+        const CommandResult r =
+            run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "x.su2") + " --json");
+        ASSERT_EQ(r.exit_code, 0) << angle << ": " << r.err;
+        const auto q = nlohmann::json::parse(r.out).at("frames").at(0).at("quality");
+        EXPECT_EQ(q.at("inverted").get<long>(), 0) << angle;
+        EXPECT_GT(q.at("min").get<double>(), 0.2) << angle;
+    }
+}
