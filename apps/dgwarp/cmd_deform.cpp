@@ -85,9 +85,10 @@ void print_frame_line(const FrameResult& f) {
 }
 
 void run_deform(const DeformArgs& a) {
-    Setup s = set_up(a.setup, a.plan);
-    const std::size_t frames = frame_count(s.spec);
     const bool text = !a.json && !a.quiet;
+    ProgressLine progress(text);
+    Setup s = set_up(a.setup, a.plan, progress);
+    const std::size_t frames = frame_count(s.spec);
     if (text) print_setup(std::cout, s, frames);
 
     Mesh deformed = s.mesh;
@@ -97,6 +98,7 @@ void run_deform(const DeformArgs& a) {
         FrameResult f;
         f.frame = k;
         f.time = frame_time(s.spec, k);
+        if (frames > 1) progress.step("deforming frame", k + 1, frames);
         Stopwatch sw;
         const ResolvedFrame motion = resolve_frame(s.mesh, s.spec, s.boundary.boundary, k);
         f.warnings = motion.warnings;
@@ -116,6 +118,7 @@ void run_deform(const DeformArgs& a) {
             f.write_seconds = sw.lap();
         }
         if (text) {
+            progress.clear();
             for (const auto& w : f.warnings) std::cerr << "warning: frame " << k << ": " << w << "\n";
             if (frames == 1)
                 print_single_frame(s, f);

@@ -19,7 +19,8 @@ struct PrepareArgs {
 };
 
 void run_prepare(const PrepareArgs& a) {
-    const Setup s = set_up(a.setup, "");
+    ProgressLine progress(!a.json && !a.quiet);
+    const Setup s = set_up(a.setup, "", progress);
     Stopwatch sw;
     save_dg_idw_plan(a.output, s.plan);
     const double write_seconds = sw.lap();

@@ -65,7 +65,7 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str();
 }
 
-Setup set_up(const SetupArgs& args, const std::string& plan_file) {
+Setup set_up(const SetupArgs& args, const std::string& plan_file, ProgressLine& progress) {
     if (args.threads > 0) set_num_threads(args.threads);
     Setup s;
     s.args = args;
@@ -75,20 +75,25 @@ Setup set_up(const SetupArgs& args, const std::string& plan_file) {
     s.options.length_scale = parse_length_scale(args.length_scale);
 
     Stopwatch sw;
+    progress.phase("reading " + args.mesh);
     s.mesh = read_mesh(args.mesh, {args.zone});
     s.spec = read_motion_file(args.motion);
     s.seconds.read = sw.lap();
+    progress.phase("classifying the boundary");
     s.boundary = resolve_boundary(s.mesh, s.spec);
     s.seconds.resolve = sw.lap();
+    progress.phase(plan_file.empty() ? "building the Delaunay graph, locating nodes" : "loading " + plan_file);
     if (plan_file.empty())
         s.plan = prepare_dg_idw(s.mesh.dim, s.mesh.points, s.boundary.boundary, s.options);
     else
         s.plan = load_dg_idw_plan(plan_file, s.mesh.points, s.boundary.boundary);
     s.seconds.prepare = sw.lap();
+    progress.phase("measuring the original mesh's quality");
     s.orientation = cell_orientations(s.mesh);
     s.original_cell_quality = cell_qualities(s.mesh, s.orientation);
     s.original_quality = summarize_quality(s.original_cell_quality);
     s.seconds.quality = sw.lap();
+    progress.clear();
     return s;
 }
 

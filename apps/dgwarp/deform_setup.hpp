@@ -12,6 +12,7 @@
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "progress_line.hpp"
 
 namespace dgwarp::cli {
 
@@ -50,8 +51,9 @@ struct Setup {
 };
 
 /// Reads, resolves, and builds the plan (or loads it from `plan_file` when
-/// not empty, checking it was made for this mesh and boundary).
-Setup set_up(const SetupArgs& args, const std::string& plan_file);
+/// not empty, checking it was made for this mesh and boundary), showing each
+/// phase on `progress`.
+Setup set_up(const SetupArgs& args, const std::string& plan_file, ProgressLine& progress);
 
 /// Moves the mesh for one frame: new coordinates of every node into `out`.
 void deform_mesh(const Setup& s, const BoundaryMotion& motion, std::vector<double>& out);
