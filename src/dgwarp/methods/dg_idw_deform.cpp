@@ -7,6 +7,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
+#include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
 
 namespace dgwarp {
@@ -103,23 +104,6 @@ void deform_range(const DgIdwPlan& plan, const double* x0, const NodeMotion* mot
     }
 }
 
-std::int64_t count_conflicting_shared_vertices(const DgIdwPlan& plan, const BoundaryMotion& motion) {
-    std::int64_t conflicts = 0;
-    for (std::size_t g = 0; g + 1 < plan.shared_offsets.size(); ++g) {
-        const auto first = plan.shared_members.begin() + plan.shared_offsets[g];
-        const auto last = plan.shared_members.begin() + plan.shared_offsets[g + 1];
-        const auto mover = std::find_if(first, last, [&](std::int32_t b) { return plan.boundary_moving[b] != 0; });
-        if (mover == last) continue;
-        const NodeMotion& used = motion[*mover];
-        const bool moves = !is_zero(used.translation) || !is_zero(used.rotation);
-        const bool conflict = std::any_of(first, last, [&](std::int32_t b) {
-            return plan.boundary_moving[b] ? !(motion[b] == used) : moves;
-        });
-        conflicts += conflict;
-    }
-    return conflicts;
-}
-
 }  // namespace
 
 void check_dg_idw_options(const DgIdwOptions& options) {
@@ -171,7 +155,7 @@ DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> poi
         if (rotate) run(deform_range<3, true>);
         else run(deform_range<3, false>);
     }
-    return {count_conflicting_shared_vertices(plan, motion)};
+    return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
 }
 
 }  // namespace dgwarp

@@ -10,6 +10,8 @@
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
+#include "dgwarp/methods/graph_vertex_motion.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
 
 namespace dgwarp {
 
@@ -19,27 +21,6 @@ namespace {
 // diagonal to a graph vertex takes that vertex's motion: u = 1/r would
 // overflow or dominate anyway, and this keeps q finite.
 constexpr double snap_fraction = 1e-12;
-
-void check_boundary_set(std::size_t num_points, const BoundarySet& boundary) {
-    if (boundary.moving.size() != boundary.nodes.size())
-        throw MeshError("the boundary set has " + std::to_string(boundary.nodes.size()) + " nodes but " +
-                        std::to_string(boundary.moving.size()) + " moving flags");
-    for (std::size_t b = 0; b < boundary.nodes.size(); ++b) {
-        const NodeId n = boundary.nodes[b];
-        if (n < 0 || static_cast<std::size_t>(n) >= num_points)
-            throw MeshError("boundary node id " + std::to_string(n) + " is out of range (the mesh has " +
-                                std::to_string(num_points) + " points)",
-                            {}, n);
-        if (b > 0 && n <= boundary.nodes[b - 1])
-            throw MeshError("boundary node ids must be sorted and unique; node " + std::to_string(n) +
-                                " follows node " + std::to_string(boundary.nodes[b - 1]),
-                            {}, n);
-        if (boundary.moving[b] > 1)
-            throw MeshError("boundary node " + std::to_string(n) + " has moving flag " +
-                                std::to_string(int(boundary.moving[b])) + " (expected 0 or 1)",
-                            {}, n);
-    }
-}
 
 // Bounding-box diagonal of the boundary nodes with moving flag `moving`
 // (any flag when `any`); 0 when there are none.
@@ -94,15 +75,8 @@ bool corner_coefficients(int dim, const double* x0, const double* const* p, cons
 
 DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const BoundarySet& boundary,
                          const DgIdwOptions& options) {
-    if (dim != 2 && dim != 3) throw MeshError("DG-IDW needs dim 2 or 3, got " + std::to_string(dim));
-    if (points.size() % static_cast<std::size_t>(dim) != 0)
-        throw MeshError("the point array holds " + std::to_string(points.size()) +
-                        " values, not a whole number of " + std::to_string(dim) + "D points");
-    const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
-    if (num_points > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-        throw MeshError("the mesh has " + std::to_string(num_points) + " points, more than int32 node ids can hold");
+    const std::size_t num_points = check_points_and_boundary("DG-IDW", dim, points, boundary);
     check_dg_idw_options(options);
-    check_boundary_set(num_points, boundary);
 
     DgIdwPlan plan;
     plan.dim = dim;
@@ -113,16 +87,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.auto_length_scale = moving_diagonal > 0 ? moving_diagonal : boundary_diagonal > 0 ? boundary_diagonal : 1.0;
 
     // Volume nodes: every node not in the (sorted) boundary list.
-    std::vector<NodeId> volume;
-    volume.reserve(num_points - std::min(num_points, boundary.nodes.size()));
-    plan.node_simplex.resize(num_points);
-    for (std::size_t n = 0, b = 0; n < num_points; ++n) {
-        if (b < boundary.nodes.size() && static_cast<std::size_t>(boundary.nodes[b]) == n) {
-            plan.node_simplex[n] = -1 - static_cast<std::int32_t>(b++);
-        } else {
-            volume.push_back(static_cast<NodeId>(n));
-        }
-    }
+    const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
 
     LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume);
     plan.stats.graph_seconds = lg.timings.triangulate_seconds;
@@ -132,17 +97,10 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     const auto t0 = Clock::now();
     const DelaunayGraph& g = lg.graph;
     plan.simplices = std::move(lg.graph.simplices);
-    plan.vertex_motion.resize(g.num_vertices());
-    for (std::size_t v = 0; v < g.num_vertices(); ++v) {
-        const auto first = g.vertex_nodes.begin() + g.vertex_offsets[v];
-        const auto last = g.vertex_nodes.begin() + g.vertex_offsets[v + 1];
-        const auto mover = std::find_if(first, last, [&](std::int32_t b) { return boundary.moving[b] != 0; });
-        plan.vertex_motion[v] = mover != last ? *mover : -1 - *first;
-        if (last - first > 1) {
-            plan.shared_members.insert(plan.shared_members.end(), first, last);
-            plan.shared_offsets.push_back(static_cast<std::int32_t>(plan.shared_members.size()));
-        }
-    }
+    GraphVertexMotion vm = graph_vertex_motion(g, boundary.moving);
+    plan.vertex_motion = std::move(vm.vertex_motion);
+    plan.shared_offsets = std::move(vm.shared_offsets);
+    plan.shared_members = std::move(vm.shared_members);
     plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
 
     const int corners = dim + 1;

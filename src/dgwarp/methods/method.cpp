@@ -5,6 +5,7 @@ namespace dgwarp {
 std::string_view method_name(Method m) {
     switch (m) {
         case Method::dg_idw: return "dg-idw";
+        case Method::dgm: return "dgm";
     }
     return "?";
 }
@@ -19,6 +20,7 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
              const MethodOptions& options) {
     switch (method) {
         case Method::dg_idw: return prepare_dg_idw(dim, points, boundary, options.dg_idw);
+        case Method::dgm: return prepare_dgm(dim, points, boundary, options.dgm);
     }
     return {};
 }
@@ -39,16 +41,28 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                           r.conflicting_shared_vertices =
                               deform_dg_idw(p, points, motion, out, options.dg_idw).conflicting_shared_vertices;
                           return r;
-                      }},
+                      },
+                                     [&](const DgmPlan& p) {
+                                         const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
+                                         StepReport r;
+                                         r.conflicting_shared_vertices = d.conflicting_shared_vertices;
+                                         r.substeps = d.substeps;
+                                         r.invalid_graph_simplices = d.invalid_simplices;
+                                         return r;
+                                     }},
                       plan);
 }
 
 Method plan_method(const Plan& plan) {
-    return std::visit(overloaded{[](const DgIdwPlan&) { return Method::dg_idw; }}, plan);
+    return std::visit(overloaded{[](const DgIdwPlan&) { return Method::dg_idw; },
+                                 [](const DgmPlan&) { return Method::dgm; }},
+                      plan);
 }
 
 std::size_t plan_memory_bytes(const Plan& plan) {
-    return std::visit(overloaded{[](const DgIdwPlan& p) { return plan_bytes(p); }}, plan);
+    return std::visit(overloaded{[](const DgIdwPlan& p) { return plan_bytes(p); },
+                                 [](const DgmPlan& p) { return plan_bytes(p); }},
+                      plan);
 }
 
 }  // namespace dgwarp

@@ -18,14 +18,21 @@
 #include <vector>
 
 #include "dgwarp/methods/dg_idw.hpp"
+#include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
 
-enum class Method { dg_idw };
+enum class Method {
+    dg_idw,
+    dgm,
+};
 
 /// All methods, in the order tools list them.
-inline constexpr Method all_methods[] = {Method::dg_idw};
+inline constexpr Method all_methods[] = {
+    Method::dg_idw,
+    Method::dgm,
+};
 
 /// "dg-idw", "dgm", "idw", "rbf".
 std::string_view method_name(Method m);
@@ -36,14 +43,19 @@ std::optional<Method> method_from_name(std::string_view name);
 /// Options of every method, each in its own plain struct with defaults.
 struct MethodOptions {
     DgIdwOptions dg_idw;
+    DgmOptions dgm;
 };
 
 /// A prepared plan of any method.
-using Plan = std::variant<DgIdwPlan>;
+using Plan = std::variant<
+    DgIdwPlan,
+    DgmPlan>;
 
-/// What one step did, whatever the method (fields a method does not use stay 0).
+/// What one step did, whatever the method (fields a method does not use keep their defaults).
 struct StepReport {
-    std::int64_t conflicting_shared_vertices = 0;  // DG-IDW: shared graph vertices with differing motions
+    std::int64_t conflicting_shared_vertices = 0;  // DG-IDW, DGM: shared graph vertices with differing motions
+    int substeps = 1;                               // DGM: increments used (1 = one step)
+    std::int64_t invalid_graph_simplices = 0;       // DGM: invalid simplices of the graph moved in one step
 };
 
 /// Builds the plan of `method` for the original `points` and `boundary`.

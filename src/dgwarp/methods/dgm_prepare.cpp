@@ -1,0 +1,131 @@
+// prepare_dgm: the Delaunay graph, point location and barycentric coordinates.
+#include <string>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/methods/dgm.hpp"
+#include "dgwarp/methods/dgm_detail.hpp"
+#include "dgwarp/methods/graph_vertex_motion.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
+
+namespace dgwarp {
+
+namespace detail {
+
+void check_dgm_options(const DgmOptions& options) {
+    if (options.max_substeps < 1)
+        throw Error("DGM: max_substeps must be at least 1, got " + std::to_string(options.max_substeps));
+}
+
+namespace {
+
+// Signed area (2D) / six times the signed volume (3D) of the simplex q[0..dim].
+template <int Dim>
+double signed_measure(const double (&q)[Dim + 1][Dim]) {
+    if constexpr (Dim == 2) {
+        return (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
+    } else {
+        double a[3], b[3], c[3];
+        for (int d = 0; d < 3; ++d) {
+            a[d] = q[1][d] - q[0][d];
+            b[d] = q[2][d] - q[0][d];
+            c[d] = q[3][d] - q[0][d];
+        }
+        return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+}
+
+// e_k = measure of the simplex with corner k replaced by x, over their sum
+// (the paper's area / volume ratios). Corners are taken relative to x, which
+// keeps the sub-measures accurate for a small simplex far from the origin.
+template <int Dim>
+void barycentric(const double* x, const double* const* corner, double* e) {
+    double rel[Dim + 1][Dim];
+    for (int k = 0; k <= Dim; ++k)
+        for (int d = 0; d < Dim; ++d) rel[k][d] = corner[k][d] - x[d];
+    double sum = 0;
+    for (int k = 0; k <= Dim; ++k) {
+        double q[Dim + 1][Dim];
+        for (int j = 0; j <= Dim; ++j)
+            for (int d = 0; d < Dim; ++d) q[j][d] = j == k ? 0.0 : rel[j][d];
+        e[k] = signed_measure<Dim>(q);
+        sum += e[k];
+    }
+    const double inv = 1.0 / sum;
+    for (int k = 0; k <= Dim; ++k) e[k] *= inv;
+}
+
+}  // namespace
+
+std::vector<double> barycentric_coordinates(int dim, std::span<const double> points,
+                                            std::span<const NodeId> vertex_node,
+                                            std::span<const std::int32_t> simplices,
+                                            std::span<const NodeId> query_nodes,
+                                            std::span<const std::int32_t> query_simplex) {
+    const int corners = dim + 1;
+    std::vector<double> e(query_nodes.size() * static_cast<std::size_t>(corners));
+    parallel_for(static_cast<std::int64_t>(query_nodes.size()), [&](std::int64_t i) {
+        const std::int32_t* c = simplices.data() + static_cast<std::size_t>(query_simplex[i]) * corners;
+        const double* p[4];
+        for (int k = 0; k < corners; ++k) p[k] = points.data() + static_cast<std::size_t>(vertex_node[c[k]]) * dim;
+        const double* x = points.data() + static_cast<std::size_t>(query_nodes[i]) * dim;
+        double* out = e.data() + static_cast<std::size_t>(i) * corners;
+        if (dim == 2) barycentric<2>(x, p, out);
+        else barycentric<3>(x, p, out);
+    });
+    return e;
+}
+
+}  // namespace detail
+
+DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& boundary,
+                    const DgmOptions& options) {
+    const std::size_t num_points = check_points_and_boundary("DGM", dim, points, boundary);
+    detail::check_dgm_options(options);
+
+    DgmPlan plan;
+    plan.dim = dim;
+    plan.boundary_nodes = boundary.nodes;
+    plan.boundary_moving = boundary.moving;
+    const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
+
+    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume);
+    plan.stats.graph_seconds = lg.timings.triangulate_seconds;
+    plan.stats.locate_seconds = lg.timings.locate_seconds;
+    plan.stats.outside_count = lg.location.outside_count;
+
+    const auto t0 = Clock::now();
+    const DelaunayGraph& g = lg.graph;
+    GraphVertexMotion vm = graph_vertex_motion(g, boundary.moving);
+    plan.vertex_motion = std::move(vm.vertex_motion);
+    plan.shared_offsets = std::move(vm.shared_offsets);
+    plan.shared_members = std::move(vm.shared_members);
+    plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
+
+    std::vector<NodeId> vertex_node(g.num_vertices());
+    for (std::size_t v = 0; v < vertex_node.size(); ++v) vertex_node[v] = boundary.nodes[g.vertex_nodes[g.vertex_offsets[v]]];
+    plan.node_barycentric =
+        detail::barycentric_coordinates(dim, points, vertex_node, g.simplices, volume, lg.location.simplex);
+    for (std::size_t i = 0; i < volume.size(); ++i) plan.node_simplex[volume[i]] = lg.location.simplex[i];
+    plan.simplices = std::move(lg.graph.simplices);
+    plan.stats.barycentric_seconds = seconds_since(t0);
+    return plan;
+}
+
+namespace {
+template <class T>
+std::size_t bytes_of(const std::vector<T>& v) {
+    return v.size() * sizeof(T);
+}
+}  // namespace
+
+std::size_t plan_bytes(const DgmPlan& plan) {
+    return sizeof(DgmPlan) + bytes_of(plan.boundary_nodes) + bytes_of(plan.boundary_moving) +
+           bytes_of(plan.simplices) + bytes_of(plan.vertex_motion) + bytes_of(plan.shared_offsets) +
+           bytes_of(plan.shared_members) + bytes_of(plan.node_simplex) + bytes_of(plan.node_barycentric);
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,29 @@
+#pragma once
+// Checks every method's prepare makes on its inputs (points and boundary set).
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp {
+
+/// Checks that dim is 2 or 3, that `points` is a whole number of dim-D points
+/// that int32 node ids can address, and that `boundary` is consistent with
+/// them (as many moving flags as nodes, flags 0 or 1, node ids sorted, unique
+/// and in range). Returns the number of points. `method` names the method in
+/// messages ("DG-IDW", "DGM"). Throws MeshError (with the node id when one node
+/// is at fault).
+std::size_t check_points_and_boundary(std::string_view method, int dim, std::span<const double> points,
+                                      const BoundarySet& boundary);
+
+/// The volume nodes (every node id in [0, num_points) not in boundary.nodes,
+/// ascending), and node_simplex sized num_points with -1 - b for the boundary
+/// node of boundary index b (volume entries left 0 for the caller to fill).
+/// boundary.nodes must be sorted (check_points_and_boundary).
+std::vector<NodeId> split_volume_nodes(std::size_t num_points, const BoundarySet& boundary,
+                                       std::vector<std::int32_t>& node_simplex);
+
+}  // namespace dgwarp
