@@ -304,3 +304,32 @@ TEST(Picture, AMissingFolderIsAnIoError) {
     Picture p;
     EXPECT_THROW(write_mesh_picture(test::scratch_dir() / "none" / "x.png", p.mesh, p.quality, p.options), IoError);
 }
+
+TEST(Picture, ADeepCloseUpStillDrawsTheCellsAroundANode) {
+    // A window a millionth of the cells' size: the cells reach far beyond
+    // what Cairo's fixed-point coordinates hold, so they must be clipped first.
+    Picture p;
+    const NodeId corner[] = {0};  // the rectangle's corner (-1, -0.5)
+    p.options.window = window_around(p.mesh, corner, 1e-5);
+    const auto png = test::scratch_dir() / "deep.png";
+    write_mesh_picture(png, p.mesh, p.quality, p.options);
+    const Image img = read_png(png);
+    const PictureLayout layout = picture_layout(p.mesh, p.quality, p.options);
+    ASSERT_GT(layout.scale, 1e8);
+    const auto at_node = to_pixel(layout, p.mesh.points[0], p.mesh.points[1]);
+    int checked = 0;
+    for (std::size_t i = 0; i < p.mesh.cells.size(); ++i) {
+        const auto nodes = p.mesh.cells.nodes_of(i);
+        if (std::find(nodes.begin(), nodes.end(), NodeId{0}) == nodes.end()) continue;
+        // Near its corner a cell is a wedge; its centroid's direction lies inside it.
+        const auto c = centroid(p.mesh, i);
+        const double dx = c[0] - p.mesh.points[0], dy = c[1] - p.mesh.points[1];
+        const double r = 150.0 / std::hypot(dx, dy);
+        const std::array<double, 2> probe = {at_node[0] + r * dx, at_node[1] - r * dy};
+        EXPECT_TRUE(same_color(img.at(probe), expected_pixel(value_color(p.quality[i])))) << "cell " << i;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 2);  // the O-grid's corner node has two cells
+    // Towards the hole (up and right of the corner): background.
+    EXPECT_TRUE(same_color(img.at({at_node[0] + 150, at_node[1] - 150}), expected_pixel(background_color), 0));
+}

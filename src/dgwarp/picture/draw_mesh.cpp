@@ -127,10 +127,10 @@ double area(const Polygon& poly) {
     return 0.5 * std::fabs(twice);
 }
 
-// Edges fade out in four steps as cells shrink from 8 to 2 pixels across:
-// in a whole-mesh view the boundary layer would otherwise be a black smear
-// that hides the cells' colours.
-constexpr int edge_levels = 4;
+// Over coloured cells, edges fade out in eight steps as cells shrink from 8
+// to 2 pixels across: in a whole-mesh view the boundary layer would otherwise
+// be a black smear that hides the cells' colours. (Fewer steps show as bands.)
+constexpr int edge_levels = 8;
 int edge_level(const Polygon& poly) {
     const double size_px = std::sqrt(area(poly));
     return static_cast<int>(std::ceil(std::clamp((size_px - 2.0) / 6.0, 0.0, 1.0) * edge_levels));
@@ -139,6 +139,7 @@ int edge_level(const Polygon& poly) {
 constexpr Rgb edge_color{0.07, 0.07, 0.09};
 constexpr double edge_alpha = 0.6;
 constexpr Rgb marker_color{0, 0, 0};
+constexpr Rgb frame_color{0.6, 0.6, 0.6};
 
 }  // namespace
 
@@ -158,12 +159,14 @@ void draw_mesh(cairo_t* cr, const PictureLayout& layout, const Mesh& mesh, std::
     // that overlapping neighbours never hide them.
     std::vector<std::int64_t> shown, inverted;
     std::vector<std::uint8_t> level;
+    bool cut = false;  // some cell reaches outside the plot
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
     for (std::size_t i = 0; i < mesh.cells.size(); ++i) {
         const Polygon poly = pixels.cell(i);
         if (poly.n == 0) continue;
         shown.push_back(static_cast<std::int64_t>(i));
-        level.push_back(static_cast<std::uint8_t>(edge_level(poly)));
+        for (int k = 0; k < poly.n; ++k) cut = cut || !inside_box(poly.p[k], visible);
+        level.push_back(static_cast<std::uint8_t>(layout.colored ? edge_level(poly) : edge_levels));
         if (layout.colored && !(values[i] > 0)) {
             inverted.push_back(static_cast<std::int64_t>(i));
             continue;
@@ -197,7 +200,7 @@ void draw_mesh(cairo_t* cr, const PictureLayout& layout, const Mesh& mesh, std::
         cairo_stroke(cr);
     }
 
-    cairo_set_line_width(cr, std::max(1.5, 3 * edge_width_px));
+    cairo_set_line_width(cr, std::max(2.0, 3 * edge_width_px));
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     set_color(cr, marker_color);
@@ -213,6 +216,16 @@ void draw_mesh(cairo_t* cr, const PictureLayout& layout, const Mesh& mesh, std::
             cairo_move_to(cr, a[0], a[1]);
             cairo_line_to(cr, b[0], b[1]);
         }
+    cairo_stroke(cr);
+    cairo_restore(cr);
+
+    // A thin frame, so that a close-up's cut-off cells end at a line.
+    if (!cut) return;
+    cairo_save(cr);
+    cairo_rectangle(cr, std::round(plot[0]) - 0.5, std::round(plot[1]) - 0.5, std::round(plot[2]) + 1,
+                    std::round(plot[3]) + 1);
+    set_color(cr, frame_color);
+    cairo_set_line_width(cr, 1.0);
     cairo_stroke(cr);
     cairo_restore(cr);
 }

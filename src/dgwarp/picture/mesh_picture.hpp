@@ -17,10 +17,11 @@ namespace dgwarp {
 /// each cell filled with value_color(cell_values[i]) (color_map.hpp: viridis
 /// over [0, 1], red for values <= 0, which are drawn last so they are never
 /// hidden), or light grey when cell_values is empty or
-/// options.color_by_quality is false; cell edges thin and dark, fading out
-/// where cells are smaller than a few pixels so dense regions keep their
-/// colour; marker lines thick and black; the title above and a colour bar
-/// (ticks 0, 0.25, 0.5, 0.75, 1 and an "inverted" swatch) on the right.
+/// options.color_by_quality is false; cell edges thin and dark (over coloured
+/// cells they fade out where cells are smaller than a few pixels, so dense
+/// regions keep their colour); marker lines thick and black; a thin grey frame
+/// when the window cuts cells off; the title above and a colour bar (ticks 0,
+/// 0.25, 0.5, 0.75, 1 and an "inverted" swatch) on the right.
 /// `mesh.points` is num_points × 2, row-major; `cell_values` has one value per
 /// cell (mesh.cells order) or is empty.
 /// The file is written through write_file_atomically: on any error a file

@@ -13,7 +13,8 @@ namespace dgwarp::picture_detail {
 
 /// Fills the cells that meet layout.window (values as in write_mesh_picture,
 /// used when layout.colored), strokes their edges `edge_width_px` wide and the
-/// mesh's marker lines on top, all clipped to layout.plot.
+/// mesh's marker lines on top, all clipped to layout.plot; frames the plot
+/// when some cell reaches outside it.
 void draw_mesh(cairo_t* cr, const PictureLayout& layout, const Mesh& mesh, std::span<const double> cell_values,
                double edge_width_px);
 
