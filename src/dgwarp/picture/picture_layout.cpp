@@ -42,7 +42,7 @@ PictureLayout picture_layout(const Mesh& mesh, std::span<const double> cell_valu
     layout.height = o.height;
     layout.colored = o.color_by_quality && !cell_values.empty();
     layout.colorbar = layout.colored && o.colorbar;
-    layout.font_px = std::clamp(std::min(o.width, o.height) / 48.0, 9.0, 48.0);
+    layout.font_px = std::clamp(std::min(o.width, o.height) / 42.0, 11.0, 48.0);
 
     const double f = layout.font_px;
     const double margin = 0.8 * f;
