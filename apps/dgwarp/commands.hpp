@@ -18,6 +18,7 @@ void add_quality_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_info_command(CLI::App& app);
+void add_picture_command(CLI::App& app);
 void add_deform_command(CLI::App& app);
 void add_prepare_command(CLI::App& app);
 

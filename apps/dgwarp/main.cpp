@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
         "  dgwarp info mesh.su2                     counts, markers, bounding box, quality\n"
         "  dgwarp quality mesh.su2                  quality summary of a mesh\n"
         "  dgwarp convert mesh.su2 mesh.vtu         convert between formats\n"
+        "  dgwarp picture mesh.su2 -o mesh.png      a 2D mesh coloured by quality\n"
         "Run 'dgwarp COMMAND --help' for a command's options and examples.\n"
         "Exit codes: 0 success, 1 usage error, 2 bad input, 3 invalid result, 4 internal error.");
     add_deform_command(app);
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
     add_info_command(app);
     add_quality_command(app);
     add_convert_command(app);
+    add_picture_command(app);
     add_demo_command(app);
 
     try {
