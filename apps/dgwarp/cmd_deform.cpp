@@ -3,7 +3,6 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
 #include "deform_setup.hpp"
@@ -33,16 +32,19 @@ struct FrameResult {
     std::string output;  // empty when not written
     QualitySummary quality;
     RatioSummary ratio;
+    StepReport step;
     std::vector<std::int64_t> worst_inverted;
     double deform_seconds = 0, quality_seconds = 0, write_seconds = 0;
     std::vector<std::string> warnings;
 };
 
-std::string ms(double seconds) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(seconds < 0.01 ? 2 : 1) << seconds * 1e3 << " ms";
-    return s.str();
-}
+/// One method's run over every frame.
+struct MethodRun {
+    PlannedMethod planned;
+    std::vector<FrameResult> frames;
+    std::string error;  // why the method stopped (invalid graph, too large, ...), "" if it ran
+    bool invalid = false;  // a frame had inverted cells, or the method could not produce a valid mesh
+};
 
 std::string cell_list(const std::vector<std::int64_t>& cells) {
     std::string s;
@@ -57,99 +59,193 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"quality", quality_json(f.quality)},
             {"ratio", ratio_json(f.ratio)},
             {"worst_inverted_cells", f.worst_inverted},
+            {"substeps", f.step.substeps},
+            {"invalid_graph_simplices", f.step.invalid_graph_simplices},
             {"seconds", {{"deform", f.deform_seconds}, {"quality", f.quality_seconds}, {"write", f.write_seconds}}},
             {"warnings", f.warnings}};
 }
 
-void print_single_frame(const Setup& s, const FrameResult& f) {
+nlohmann::json run_json(const Inputs& in, const MethodRun& r) {
+    nlohmann::json j = {{"method", method_name(r.planned.method)}, {"plan", plan_json(in, r.planned)},
+                        {"frames", nlohmann::json::array()}, {"valid", !r.invalid},
+                        {"error", r.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.error)}};
+    for (const auto& f : r.frames) j["frames"].push_back(frame_json(f));
+    return j;
+}
+
+void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout << "quality (Knupp shape)   before      after\n" << std::fixed << std::setprecision(6);
-    std::cout << "  min               " << std::setw(10) << s.original_quality.min << "  " << std::setw(10)
+    std::cout << "  min               " << std::setw(10) << in.original_quality.min << "  " << std::setw(10)
               << f.quality.min << "  (cell " << f.quality.worst_cell << ")\n";
-    std::cout << "  mean              " << std::setw(10) << s.original_quality.mean << "  " << std::setw(10)
+    std::cout << "  mean              " << std::setw(10) << in.original_quality.mean << "  " << std::setw(10)
               << f.quality.mean << "\n";
-    std::cout << "  inverted          " << std::setw(10) << s.original_quality.inverted << "  " << std::setw(10)
+    std::cout << "  inverted          " << std::setw(10) << in.original_quality.inverted << "  " << std::setw(10)
               << f.quality.inverted << "\n";
     std::cout << "ratio after/before, per cell: min " << f.ratio.min << " (cell " << f.ratio.worst_cell
               << "), mean " << f.ratio.mean << "\n";
     std::cout.unsetf(std::ios::floatfield);
-    std::cout << "time      deform " << ms(f.deform_seconds) << ", quality " << ms(f.quality_seconds)
-              << ", write " << ms(f.write_seconds) << "\n";
+    std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
+              << ", write " << milliseconds(f.write_seconds) << "\n";
+    if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
+                                       << f.step.invalid_graph_simplices << " invalid simplices)\n";
 }
 
 void print_frame_line(const FrameResult& f) {
     char line[200];
     std::snprintf(line, sizeof line, "frame %4zu  t=%-10g min %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
                   f.frame, f.time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
-                  f.ratio.min, ms(f.deform_seconds).c_str());
+                  f.ratio.min, milliseconds(f.deform_seconds).c_str());
     std::cout << line << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
 }
 
-void run_deform(const DeformArgs& a) {
-    const bool text = !a.json && !a.quiet;
-    ProgressLine progress(text);
-    Setup s = set_up(a.setup, a.plan, progress);
-    const std::size_t frames = frame_count(s.spec);
-    if (text) print_setup(std::cout, s, frames);
+/// The output of `method` when several methods run: OUT with the method's name before the extension.
+std::filesystem::path method_output(const std::filesystem::path& out, Method method, bool several) {
+    if (!several) return out;
+    std::filesystem::path p = out;
+    p.replace_filename(out.stem().string() + "_" + std::string(method_name(method)) + out.extension().string());
+    return p;
+}
 
-    Mesh deformed = s.mesh;
-    std::vector<FrameResult> results;
-    std::int64_t invalid_frames = 0;
+MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
+                     ProgressLine& progress) {
+    MethodRun run;
+    const std::size_t frames = frame_count(in.spec);
+    try {
+        run.planned = plan_method(in, method, a.plan, progress);
+    } catch (const InvalidResultError& e) {
+        run.planned.method = method;
+        run.error = e.what();
+        run.invalid = true;
+        return run;
+    } catch (const Error& e) {
+        if (!several) throw;
+        run.planned.method = method;
+        run.error = e.what();
+        return run;
+    }
+    if (text && !several) print_plan(std::cout, in, run.planned);
+    const auto out = method_output(a.output, method, several);
+    Mesh deformed = in.mesh;
     for (std::size_t k = 0; k < frames; ++k) {
         FrameResult f;
         f.frame = k;
-        f.time = frame_time(s.spec, k);
-        if (frames > 1) progress.step("deforming frame", k + 1, frames);
+        f.time = frame_time(in.spec, k);
+        if (frames > 1) progress.step(std::string(method_name(method)) + ": deforming frame", k + 1, frames);
         Stopwatch sw;
-        const ResolvedFrame motion = resolve_frame(s.mesh, s.spec, s.boundary.boundary, k);
+        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
         f.warnings = motion.warnings;
-        deform_mesh(s, motion.motion, deformed.points);
+        try {
+            f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points, run.planned.options);
+        } catch (const InvalidResultError& e) {
+            if (!several) throw;
+            run.error = e.what();
+            run.invalid = true;
+            break;
+        }
         f.deform_seconds = sw.lap();
-        const std::vector<double> quality = cell_qualities(deformed, s.orientation);
-        const std::vector<double> ratio = quality_ratios(quality, s.original_cell_quality);
+        const std::vector<double> quality = cell_qualities(deformed, in.orientation);
+        const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
         f.quality = summarize_quality(quality);
         f.ratio = summarize_ratios(ratio);
         f.worst_inverted = worst_inverted_cells(quality, 10);
         f.quality_seconds = sw.lap();
         const bool invalid = f.quality.inverted > 0;
         if (!invalid || a.allow_invalid) {
-            const auto path = frame_path(a.output, k, frames);
-            write_mesh(path, deformed, deformation_fields(s.mesh, deformed.points, quality, ratio));
+            const auto path = frame_path(out, k, frames);
+            write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, quality, ratio));
             f.output = path.string();
             f.write_seconds = sw.lap();
         }
-        if (text) {
+        if (text && !several) {
             progress.clear();
             for (const auto& w : f.warnings) std::cerr << "warning: frame " << k << ": " << w << "\n";
-            if (frames == 1)
-                print_single_frame(s, f);
-            else
+            if (frames == 1) {
+                print_single_frame(in, f);
+                if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
+            } else {
                 print_frame_line(f);
-            if (!f.output.empty() && frames == 1) std::cout << "wrote " << f.output << "\n";
+            }
         }
-        results.push_back(std::move(f));
+        run.frames.push_back(std::move(f));
         if (invalid) {
-            ++invalid_frames;
+            run.invalid = true;
+            const FrameResult& bad = run.frames.back();
+            run.error = std::to_string(bad.quality.inverted) + " inverted cell" + (bad.quality.inverted == 1 ? "" : "s") +
+                        " in frame " + std::to_string(bad.frame) + " (worst: " + cell_list(bad.worst_inverted) + ")";
             if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
         }
     }
+    progress.clear();
+    return run;
+}
+
+void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
+    std::cout << "\nmethod      prepare     deform     min quality  mean quality  inverted  ratio min   status\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11.4f  %12.4f  %8lld  %9s   %s\n", "original", "", "",
+                  in.original_quality.min, in.original_quality.mean,
+                  static_cast<long long>(in.original_quality.inverted), "", "");
+    std::cout << line;
+    for (const MethodRun& r : runs) {
+        const std::string name(method_name(r.planned.method));
+        if (r.frames.empty()) {
+            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11s  %12s  %8s  %9s   %s\n", name.c_str(),
+                          r.error.empty() ? "" : "-", "-", "-", "-", "-", "-", r.error.c_str());
+        } else {
+            const FrameResult& f = r.frames.back();
+            double deform_seconds = 0;
+            for (const auto& fr : r.frames) deform_seconds += fr.deform_seconds;
+            std::string status = r.error.empty() ? "ok" : r.error;
+            if (f.step.substeps > 1) status += " (" + std::to_string(f.step.substeps) + " DGM sub-steps)";
+            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11.4f  %12.4f  %8lld  %9.4f   %s\n", name.c_str(),
+                          milliseconds(r.planned.prepare_seconds).c_str(), milliseconds(deform_seconds).c_str(),
+                          f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted), f.ratio.min,
+                          status.c_str());
+        }
+        std::cout << line;
+    }
+}
+
+void run_deform(const DeformArgs& a) {
+    const std::vector<Method> methods = chosen_methods(a.setup, true);
+    const bool several = methods.size() > 1;
+    if (several && !a.plan.empty())
+        throw CLI::ValidationError("--plan", "a saved plan belongs to one method; it cannot be used with --method all");
+    const bool text = !a.json && !a.quiet;
+    ProgressLine progress(text);
+    const Inputs in = read_inputs(a.setup, progress);
+    const std::size_t frames = frame_count(in.spec);
+    if (text) print_inputs(std::cout, in, frames);
+
+    std::vector<MethodRun> runs;
+    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress));
+    if (text && several) print_table(in, runs);
 
     if (a.json) {
-        nlohmann::json j = setup_json(s, "deform");
+        nlohmann::json j = inputs_json(in, "deform");
         j["output"] = a.output;
-        j["frames"] = nlohmann::json::array();
-        for (const auto& f : results) j["frames"].push_back(frame_json(f));
-        j["valid"] = invalid_frames == 0;
+        if (several) {
+            j["methods"] = nlohmann::json::array();
+            for (const auto& r : runs) j["methods"].push_back(run_json(in, r));
+        } else {
+            const nlohmann::json run = run_json(in, runs[0]);
+            for (const auto& [key, value] : run.items()) j[key] = value;
+        }
+        j["valid"] = std::none_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.invalid; });
         std::cout << j.dump(2) << "\n";
     }
-    if (invalid_frames > 0) {
-        const FrameResult& f = results.back();
-        const std::string what = std::to_string(f.quality.inverted) + " inverted cell" +
-                                 (f.quality.inverted == 1 ? "" : "s") + " in frame " + std::to_string(f.frame) +
-                                 " (worst: " + cell_list(f.worst_inverted) + ")";
+    std::int64_t invalid_runs = 0;
+    std::string what;
+    for (const MethodRun& r : runs)
+        if (r.invalid) {
+            ++invalid_runs;
+            what += (what.empty() ? "" : "; ") + std::string(method_name(r.planned.method)) + ": " + r.error;
+        }
+    if (invalid_runs > 0) {
         if (!a.allow_invalid)
-            throw InvalidResultError(what + "; nothing was written for it. The motion is too large for one step: "
-                                            "split it into frames, or use --allow-invalid to write it anyway",
-                                     f.quality.inverted);
+            throw InvalidResultError(what + ". Nothing was written for an invalid frame. The motion is too large "
+                                            "for one step: split it into frames, or use --allow-invalid to write it anyway",
+                                     invalid_runs);
         if (!a.quiet) std::cerr << "warning: " << what << "; written anyway (--allow-invalid)\n";
     }
 }
@@ -162,7 +258,7 @@ void add_deform_command(CLI::App& app) {
     add_setup_options(cmd, args->setup);
     cmd->add_option("-o,--output", args->output,
                     "Output mesh (.su2, .msh, .vtu; VTU adds displacement and quality); a time series writes "
-                    "one file per frame, numbered before the extension")
+                    "one file per frame, numbered before the extension; --method all one per method")
         ->required();
     cmd->add_option("--plan", args->plan, "Use a plan saved by 'dgwarp prepare' instead of building it");
     cmd->add_flag("--allow-invalid", args->allow_invalid, "Write the result even if cells are inverted");
@@ -170,9 +266,11 @@ void add_deform_command(CLI::App& app) {
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
         "The motion file names each moving marker's motion (docs/MOTION.md); markers not named stay fixed.\n"
+        "--method all runs every method and prints a comparison table (as the paper's tables).\n"
         "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n\n"
         "Examples:\n"
         "  dgwarp deform naca0012.su2 --motion rotate45.json -o deformed.vtu\n"
+        "  dgwarp deform naca0012.su2 --motion rotate45.json -o cmp.vtu --method all\n"
         "  dgwarp deform naca0012.su2 --motion pitching.json -o frames/pitch.su2    (one file per frame)\n"
         "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
         "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.su2 --json");

@@ -19,18 +19,24 @@ struct PrepareArgs {
 };
 
 void run_prepare(const PrepareArgs& a) {
+    if (chosen_methods(a.setup, false).front() != Method::dg_idw)
+        throw CLI::ValidationError("--method", "only DG-IDW plans can be saved");
     ProgressLine progress(!a.json && !a.quiet);
-    const Setup s = set_up(a.setup, "", progress);
+    const Inputs in = read_inputs(a.setup, progress);
+    const PlannedMethod p = plan_method(in, Method::dg_idw, "", progress);
     Stopwatch sw;
-    save_dg_idw_plan(a.output, s.plan);
+    save_dg_idw_plan(a.output, std::get<DgIdwPlan>(p.plan));
     const double write_seconds = sw.lap();
     if (a.json) {
-        nlohmann::json j = setup_json(s, "prepare");
+        nlohmann::json j = inputs_json(in, "prepare");
+        j["method"] = "dg-idw";
+        j["plan"] = plan_json(in, p);
         j["output"] = a.output;
         j["seconds"]["write"] = write_seconds;
         std::cout << j.dump(2) << "\n";
     } else if (!a.quiet) {
-        print_setup(std::cout, s, frame_count(s.spec));
+        print_inputs(std::cout, in, frame_count(in.spec));
+        print_plan(std::cout, in, p);
         std::cout << "wrote " << a.output << "\n";
     }
 }
@@ -40,7 +46,7 @@ void run_prepare(const PrepareArgs& a) {
 void add_prepare_command(CLI::App& app) {
     auto args = std::make_shared<PrepareArgs>();
     CLI::App* cmd = app.add_subcommand(
-        "prepare", "Build the deformation plan (Delaunay graph, node location, weights) once and save it");
+        "prepare", "Build the DG-IDW plan (Delaunay graph, node location, weights) once and save it");
     add_setup_options(cmd, args->setup);
     cmd->add_option("-o,--output", args->output, "Plan file to write")->required();
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");

@@ -34,10 +34,10 @@ std::string joined(const std::vector<std::string>& names) {
     return s.empty() ? "none" : s;
 }
 
-std::string ms(double seconds) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(seconds < 0.01 ? 2 : 1) << seconds * 1e3 << " ms";
-    return s.str();
+std::string method_list() {
+    std::string s;
+    for (Method m : all_methods) s += (s.empty() ? "" : ", ") + std::string(method_name(m));
+    return s;
 }
 
 std::int64_t moving_count(const BoundarySet& b) {
@@ -48,9 +48,17 @@ std::int64_t moving_count(const BoundarySet& b) {
 
 }  // namespace
 
+std::string milliseconds(double seconds) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(seconds < 0.01 ? 2 : 1) << seconds * 1e3 << " ms";
+    return s.str();
+}
+
 void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
+    cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
+        ->capture_default_str();
     cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
     cmd->add_option("--threads", a.threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
@@ -60,104 +68,134 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
     cmd->add_option("--length-scale", a.length_scale,
-                    "Reference length L the distances are divided by: a number (1 reproduces the paper) or "
+                    "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or "
                     "'auto' (the diagonal of the moving boundary's bounding box)")
         ->capture_default_str();
+    cmd->add_flag("--dgm-substep", a.dgm_substep,
+                  "DGM: when the moved graph is invalid, split the motion into increments (default: fail)");
 }
 
-Setup set_up(const SetupArgs& args, const std::string& plan_file, ProgressLine& progress) {
-    if (args.threads > 0) set_num_threads(args.threads);
-    Setup s;
-    s.args = args;
-    s.plan_file = plan_file;
-    s.options.a_translation = args.a_translation;
-    s.options.a_rotation = args.a_rotation;
-    s.options.length_scale = parse_length_scale(args.length_scale);
+std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
+    if (allow_all && args.method == "all") return {std::begin(all_methods), std::end(all_methods)};
+    if (auto m = method_from_name(args.method)) return {*m};
+    throw CLI::ValidationError("--method", "unknown method '" + args.method + "'; choose one of " + method_list() +
+                                               (allow_all ? ", or all" : ""));
+}
 
+MethodOptions method_options(const SetupArgs& args) {
+    MethodOptions o;
+    o.dg_idw.a_translation = args.a_translation;
+    o.dg_idw.a_rotation = args.a_rotation;
+    o.dg_idw.length_scale = parse_length_scale(args.length_scale);
+    o.dgm.on_invalid = args.dgm_substep ? DgmOptions::OnInvalidGraph::substep : DgmOptions::OnInvalidGraph::fail;
+    return o;
+}
+
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
+    if (args.threads > 0) set_num_threads(args.threads);
+    Inputs in;
+    in.args = args;
     Stopwatch sw;
     progress.phase("reading " + args.mesh);
-    s.mesh = read_mesh(args.mesh, {args.zone});
-    s.spec = read_motion_file(args.motion);
-    s.seconds.read = sw.lap();
+    in.mesh = read_mesh(args.mesh, {args.zone});
+    in.spec = read_motion_file(args.motion);
+    in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
-    s.boundary = resolve_boundary(s.mesh, s.spec);
-    s.seconds.resolve = sw.lap();
-    progress.phase(plan_file.empty() ? "building the Delaunay graph, locating nodes" : "loading " + plan_file);
-    if (plan_file.empty())
-        s.plan = prepare_dg_idw(s.mesh.dim, s.mesh.points, s.boundary.boundary, s.options);
-    else
-        s.plan = load_dg_idw_plan(plan_file, s.mesh.points, s.boundary.boundary);
-    s.seconds.prepare = sw.lap();
+    in.boundary = resolve_boundary(in.mesh, in.spec);
+    in.resolve_seconds = sw.lap();
     progress.phase("measuring the original mesh's quality");
-    s.orientation = cell_orientations(s.mesh);
-    s.original_cell_quality = cell_qualities(s.mesh, s.orientation);
-    s.original_quality = summarize_quality(s.original_cell_quality);
-    s.seconds.quality = sw.lap();
+    in.orientation = cell_orientations(in.mesh);
+    in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
+    in.original_quality = summarize_quality(in.original_cell_quality);
+    in.quality_seconds = sw.lap();
     progress.clear();
-    return s;
+    return in;
 }
 
-void deform_mesh(const Setup& s, const BoundaryMotion& motion, std::vector<double>& out) {
-    deform_dg_idw(s.plan, s.mesh.points, motion, out, s.options);
+PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress) {
+    PlannedMethod p;
+    p.method = method;
+    p.options = method_options(in.args);
+    p.plan_file = plan_file;
+    Stopwatch sw;
+    if (!plan_file.empty()) {
+        if (method != Method::dg_idw)
+            throw CLI::ValidationError("--plan", "saved plans are DG-IDW plans; they cannot be used with --method " +
+                                                     std::string(method_name(method)));
+        progress.phase("loading " + plan_file);
+        p.plan = load_dg_idw_plan(plan_file, in.mesh.points, in.boundary.boundary);
+    } else {
+        progress.phase("preparing " + std::string(method_name(method)));
+        p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.boundary.boundary, p.options);
+    }
+    p.prepare_seconds = sw.lap();
+    progress.clear();
+    return p;
 }
 
-void print_setup(std::ostream& out, const Setup& s, std::size_t frames) {
-    const auto& b = s.boundary.boundary;
-    const auto& st = s.plan.stats;
-    out << "mesh      " << s.args.mesh << ": " << describe_mesh(s.mesh) << "\n";
-    out << "motion    " << s.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
-        << "; moving: " << joined(s.boundary.moving_markers) << "; static: " << joined(s.boundary.static_markers)
+void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames) {
+    const auto& b = in.boundary.boundary;
+    out << "mesh      " << in.args.mesh << ": " << describe_mesh(in.mesh) << "\n";
+    out << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
+        << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers)
         << "\n";
     out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving)\n";
-    out << "plan      DG-IDW, " << s.plan.simplices.size() / static_cast<std::size_t>(s.mesh.dim + 1)
-        << " graph simplices, " << s.plan.num_volume_nodes() << " volume nodes, " << st.outside_count
-        << " outside the graph's hull, " << plan_bytes(s.plan) / 1024 << " KiB"
-        << (s.plan_file.empty() ? "" : ", loaded from " + s.plan_file) << "\n";
-    out << "time      read " << ms(s.seconds.read) << ", prepare " << ms(s.seconds.prepare);
-    if (s.plan_file.empty())
-        out << " (graph " << ms(st.graph_seconds) << ", locate " << ms(st.locate_seconds) << ", weights "
-            << ms(st.weights_seconds) << ")";
-    out << "\n";
-    for (const auto& w : s.boundary.warnings) std::cerr << "warning: " << w << "\n";
+    for (const auto& w : in.boundary.warnings) std::cerr << "warning: " << w << "\n";
 }
 
-nlohmann::json setup_json(const Setup& s, const std::string& command) {
-    const auto& b = s.boundary.boundary;
-    const auto& st = s.plan.stats;
+void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p) {
+    const PlanSummary s = plan_summary(p.plan);
+    out << "plan      " << method_name(p.method);
+    if (s.graph_simplices > 0)
+        out << ", " << s.graph_simplices << " graph simplices, " << s.outside_hull << " nodes outside the graph's hull";
+    out << ", " << plan_memory_bytes(p.plan) / 1024 << " KiB"
+        << (p.plan_file.empty() ? "" : ", loaded from " + p.plan_file) << "\n";
+    out << "time      read " << milliseconds(in.read_seconds) << ", prepare " << milliseconds(p.prepare_seconds);
+    if (!s.phase_seconds.empty()) {
+        out << " (";
+        for (std::size_t i = 0; i < s.phase_seconds.size(); ++i)
+            out << (i ? ", " : "") << s.phase_seconds[i].first << " " << milliseconds(s.phase_seconds[i].second);
+        out << ")";
+    }
+    out << "\n";
+}
+
+nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
+    const auto& b = in.boundary.boundary;
+    const MethodOptions o = method_options(in.args);
     return {{"schema_version", json_schema_version},
             {"command", command},
-            {"file", s.args.mesh},
-            {"motion", s.args.motion},
-            {"method", "dg-idw"},
-            {"mesh", mesh_json(s.mesh)},
+            {"file", in.args.mesh},
+            {"motion", in.args.motion},
+            {"mesh", mesh_json(in.mesh)},
             {"boundary",
              {{"nodes", b.nodes.size()},
               {"moving_nodes", moving_count(b)},
-              {"moving_markers", s.boundary.moving_markers},
-              {"static_markers", s.boundary.static_markers}}},
-            {"plan",
-             {{"file", s.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.plan_file)},
-              {"graph_simplices", s.plan.simplices.size() / static_cast<std::size_t>(s.mesh.dim + 1)},
-              {"volume_nodes", s.plan.num_volume_nodes()},
-              {"outside_hull", st.outside_count},
-              {"on_graph_vertex", st.snapped_count},
-              {"shared_graph_vertices", st.shared_vertex_count},
-              {"bytes", plan_bytes(s.plan)}}},
+              {"moving_markers", in.boundary.moving_markers},
+              {"static_markers", in.boundary.static_markers}}},
             {"options",
-             {{"a_translation", s.options.a_translation},
-              {"a_rotation", s.options.a_rotation},
-              {"length_scale", s.options.length_scale == 0 ? s.plan.auto_length_scale : s.options.length_scale},
-              {"length_scale_auto", s.options.length_scale == 0}}},
-            {"seconds",
-             {{"read", s.seconds.read},
-              {"resolve", s.seconds.resolve},
-              {"prepare", s.seconds.prepare},
-              {"graph", st.graph_seconds},
-              {"locate", st.locate_seconds},
-              {"weights", st.weights_seconds},
-              {"original_quality", s.seconds.quality}}},
-            {"original_quality", quality_json(s.original_quality)},
-            {"warnings", s.boundary.warnings}};
+             {{"a_translation", o.dg_idw.a_translation},
+              {"a_rotation", o.dg_idw.a_rotation},
+              {"length_scale", in.args.length_scale == "auto" ? nlohmann::json("auto")
+                                                               : nlohmann::json(o.dg_idw.length_scale)},
+              {"dgm_substep", in.args.dgm_substep}}},
+            {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
+            {"original_quality", quality_json(in.original_quality)},
+            {"warnings", in.boundary.warnings}};
+}
+
+nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
+    const PlanSummary s = plan_summary(p.plan);
+    nlohmann::json phases = nlohmann::json::object();
+    for (const auto& [name, seconds] : s.phase_seconds) phases[name] = seconds;
+    return {{"method", method_name(p.method)},
+            {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
+            {"graph_simplices", s.graph_simplices},
+            {"outside_hull", s.outside_hull},
+            {"shared_graph_vertices", s.shared_vertices},
+            {"bytes", plan_memory_bytes(p.plan)},
+            {"seconds", p.prepare_seconds},
+            {"phase_seconds", phases}};
 }
 
 }  // namespace dgwarp::cli

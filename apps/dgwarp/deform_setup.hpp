@@ -1,6 +1,6 @@
 #pragma once
 // What `dgwarp deform` and `dgwarp prepare` share: reading the mesh and the
-// motion, classifying the boundary, and building (or loading) the plan.
+// motion, classifying the boundary, and building (or loading) a method's plan.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "dgwarp/io/motion_file.hpp"
-#include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "progress_line.hpp"
@@ -19,49 +19,60 @@ namespace dgwarp::cli {
 struct SetupArgs {
     std::string mesh;
     std::string motion;
+    std::string method = "dg-idw";  // a method name, or "all" where a command allows it
     int zone = 1;
     int threads = 0;
     double a_translation = 7.0;
     double a_rotation = 1.4;
     std::string length_scale = "1";
+    bool dgm_substep = false;
 };
 
-/// Adds the mesh, --motion, --zone, --threads and method options to `cmd`.
+/// Adds the mesh, --motion, --method, --zone, --threads and method options to `cmd`.
 void add_setup_options(CLI::App* cmd, SetupArgs& args);
 
-struct SetupTimes {
-    double read = 0;     // mesh and motion files
-    double resolve = 0;  // boundary classification
-    double prepare = 0;  // plan: built or loaded
-    double quality = 0;  // quality of the original mesh
-};
+/// The methods `args.method` names: one, or all of them for "all" (when allowed).
+std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all);
 
-struct Setup {
+/// The method options from the command line.
+MethodOptions method_options(const SetupArgs& args);
+
+/// The mesh, the motion and the boundary, read and checked once.
+struct Inputs {
     SetupArgs args;
-    std::string plan_file;  // the plan loaded, "" when built
     Mesh mesh;
     MotionSpec spec;
     ResolvedBoundary boundary;
-    DgIdwOptions options;
-    DgIdwPlan plan;
-    std::vector<std::int8_t> orientation;      // per cell, of the original mesh
+    std::vector<std::int8_t> orientation;       // per cell, of the original mesh
     std::vector<double> original_cell_quality;  // per cell
     QualitySummary original_quality;
-    SetupTimes seconds;
+    double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
 
-/// Reads, resolves, and builds the plan (or loads it from `plan_file` when
-/// not empty, checking it was made for this mesh and boundary), showing each
-/// phase on `progress`.
-Setup set_up(const SetupArgs& args, const std::string& plan_file, ProgressLine& progress);
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress);
 
-/// Moves the mesh for one frame: new coordinates of every node into `out`.
-void deform_mesh(const Setup& s, const BoundaryMotion& motion, std::vector<double>& out);
+/// A method's plan for the inputs: built, or loaded from `plan_file` (DG-IDW
+/// only) and checked to fit the mesh and boundary.
+struct PlannedMethod {
+    Method method = Method::dg_idw;
+    MethodOptions options;
+    std::string plan_file;  // "" when built
+    Plan plan;
+    double prepare_seconds = 0;
+};
 
-/// Lines about the mesh, motion, boundary, plan and set-up times.
-void print_setup(std::ostream& out, const Setup& s, std::size_t frames);
+PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress);
+
+/// Lines about the mesh, motion and boundary.
+void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames);
+/// One line about the plan and its prepare time.
+void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
 
 /// The JSON report's common part (docs/JSON.md).
-nlohmann::json setup_json(const Setup& s, const std::string& command);
+nlohmann::json inputs_json(const Inputs& in, const std::string& command);
+nlohmann::json plan_json(const Inputs& in, const PlannedMethod& p);
+
+/// "12.3 ms".
+std::string milliseconds(double seconds);
 
 }  // namespace dgwarp::cli

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/methods/method.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -56,8 +57,11 @@ TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
     EXPECT_GT(f.at("quality").at("min").get<double>(), 0.0);
     EXPECT_LE(f.at("ratio").at("min").get<double>(), 1.0);
     EXPECT_TRUE(j.at("valid").get<bool>());
-    for (const char* phase : {"read", "prepare", "graph", "locate", "weights"})
-        EXPECT_GE(j.at("seconds").at(phase).get<double>(), 0.0) << phase;
+    EXPECT_GE(j.at("seconds").at("read").get<double>(), 0.0);
+    EXPECT_GE(j.at("plan").at("seconds").get<double>(), 0.0);
+    for (const char* phase : {"graph", "locate", "weights"})
+        EXPECT_GE(j.at("plan").at("phase_seconds").at(phase).get<double>(), 0.0) << phase;
+    EXPECT_GT(j.at("plan").at("graph_simplices").get<long>(), 0);
     EXPECT_GE(f.at("seconds").at("deform").get<double>(), 0.0);
 
     // The written mesh is the original with moved points: same cells and markers.
@@ -153,6 +157,27 @@ TEST(CliPrepare, PlanOfAnotherMeshIsRefused) {
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("plan"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.su2"));
+}
+
+TEST(CliDeform, MethodAllPrintsOneRowPerMethod) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", small_rotation);
+    CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "out.su2") +
+                              " --method all");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (Method m : all_methods) {
+        const std::string name(method_name(m));
+        EXPECT_NE(r.out.find("\n" + name + " "), std::string::npos) << name << " row missing:\n" << r.out;
+        EXPECT_TRUE(std::filesystem::exists(dir / ("out_" + name + ".su2"))) << name;
+    }
+    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "out.su2") +
+                " --method all --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j.at("methods").size(), std::size(all_methods));
+    for (const auto& m : j.at("methods")) EXPECT_EQ(m.at("frames").size(), 1u) << m.at("method");
+    EXPECT_EQ(run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o x.su2 --method spring").exit_code, 1);
 }
 
 TEST(CliDeform, BadMotionFilesExitWith2NamingTheProblem) {

@@ -66,3 +66,30 @@ std::size_t plan_memory_bytes(const Plan& plan) {
 }
 
 }  // namespace dgwarp
+
+namespace dgwarp {
+
+PlanSummary plan_summary(const Plan& plan) {
+    PlanSummary s;
+    std::visit(overloaded{[&](const DgIdwPlan& p) {
+                              s.graph_simplices = static_cast<std::int64_t>(p.simplices.size()) / (p.dim + 1);
+                              s.outside_hull = p.stats.outside_count;
+                              s.shared_vertices = p.stats.shared_vertex_count;
+                              if (p.stats.graph_seconds > 0 || p.stats.locate_seconds > 0)
+                                  s.phase_seconds = {{"graph", p.stats.graph_seconds},
+                                                     {"locate", p.stats.locate_seconds},
+                                                     {"weights", p.stats.weights_seconds}};
+                          },
+                          [&](const DgmPlan& p) {
+                              s.graph_simplices = static_cast<std::int64_t>(p.simplices.size()) / (p.dim + 1);
+                              s.outside_hull = p.stats.outside_count;
+                              s.shared_vertices = p.stats.shared_vertex_count;
+                              s.phase_seconds = {{"graph", p.stats.graph_seconds},
+                                                 {"locate", p.stats.locate_seconds},
+                                                 {"barycentric", p.stats.barycentric_seconds}};
+                          }},
+               plan);
+    return s;
+}
+
+}  // namespace dgwarp

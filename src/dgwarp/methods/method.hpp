@@ -12,6 +12,8 @@
 // motions one NodeMotion per boundary node in BoundarySet order.
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <utility>
 #include <span>
 #include <string_view>
 #include <variant>
@@ -76,5 +78,16 @@ Method plan_method(const Plan& plan);
 
 /// Bytes held by a plan's arrays.
 std::size_t plan_memory_bytes(const Plan& plan);
+
+/// What a plan holds and how long building it took, whatever the method
+/// (counts a method does not have stay 0).
+struct PlanSummary {
+    std::int64_t graph_simplices = 0;   // DG-IDW, DGM: simplices of the Delaunay graph
+    std::int64_t outside_hull = 0;      // DG-IDW, DGM: volume nodes outside the graph's hull
+    std::int64_t shared_vertices = 0;   // DG-IDW, DGM: graph vertices standing for several boundary nodes
+    /// Prepare phases in order, e.g. {"graph", 0.01}, {"locate", 0.02}; empty for a loaded plan.
+    std::vector<std::pair<std::string, double>> phase_seconds;
+};
+PlanSummary plan_summary(const Plan& plan);
 
 }  // namespace dgwarp
