@@ -1,12 +1,16 @@
 #!/usr/bin/python3
 """Writes the per-node files of the example motions (stdlib only).
 
-    make_node_files.py NACA0012.su2 BRICK.su2 [OUTPUT_FOLDER]
+    make_node_files.py SU2_MESHES [OUTPUT_FOLDER]
 
-NACA0012.su2 is SU2's deformation/naca0012/mesh_NACA0012_inv.su2 (markers airfoil,
-farfield) and BRICK.su2 its deformation/brick_hex/mesh_brick_hex_ffd.su2 (the box
-[0,2]x[0,1]x[0,1], markers x_m x_p y_m y_p z_m z_p). Node ids are the points'
-0-based positions in the .su2 file, which is what dgwarp and SU2 use.
+SU2_MESHES is a folder with SU2's test meshes under the names of ../shared/meshes/su2:
+deformation_naca0012_mesh_NACA0012_inv.su2 (SU2's deformation/naca0012/mesh_NACA0012_inv.su2,
+markers airfoil, farfield) and deformation_brick_KIND_mesh_brick_KIND_ffd.su2 for KIND in
+hex, prism, pyra, tets (SU2's deformation/brick_KIND/mesh_brick_KIND_ffd.su2: the box
+[0,2]x[0,1]x[0,1], markers x_m x_p y_m y_p z_m z_p, meshed with hexahedra, prisms,
+pyramids + tetrahedra, tetrahedra). Node ids are the points' 0-based positions in the
+.su2 file, which is what dgwarp and SU2 use; each brick mesh numbers its nodes
+differently, so each gets its own bump file (brick_top_bump.csv is the hex one).
 """
 import math
 import os
@@ -70,28 +74,37 @@ def airfoil_files(mesh, out):
     write(os.path.join(out, "airfoil_flap.csv"), "node,tx,ty,wz,cx,cy", rows)
 
 
-def brick_files(mesh, out):
+def brick_bump(mesh, out, name):
     _, points, markers = read_su2(mesh)
-    top = markers["z_p"]
     # A bump on the top face, zero on its edges: dz = 0.1 sin(πx/2) sin(πy).
-    write(os.path.join(out, "brick_top_bump.csv"), "node,dx,dy,dz",
+    write(os.path.join(out, name), "node,dx,dy,dz",
           ["%d,0,0,%s" % (n, num(0.1 * math.sin(math.pi * points[n][0] / 2) * math.sin(math.pi * points[n][1])))
-           for n in top])
+           for n in markers["z_p"]])
+
+
+def brick_twist(mesh, out):
+    _, points, markers = read_su2(mesh)
     # A twist of the top face about the brick's long axis (y = z = 0.5): the angle grows from 0
-    # at x = 0 to 10° at x = 2 (3D form: node,tx,ty,tz,wx,wy,wz,cx,cy,cz).
+    # at x = 0 to 5° at x = 2 (3D form: node,tx,ty,tz,wx,wy,wz,cx,cy,cz). At 10° the top
+    # face's edges would drop below the side faces' next row of nodes (0.053 lower).
     rows = []
-    for n in top:
+    for n in markers["z_p"]:
         x = points[n][0]
-        rows.append("%d,0,0,0,%s,0,0,%s,0.5,0.5" % (n, num(math.radians(10.0) * x / 2), num(x)))
+        rows.append("%d,0,0,0,%s,0,0,%s,0.5,0.5" % (n, num(math.radians(5.0) * x / 2), num(x)))
     write(os.path.join(out, "brick_top_twist.csv"), "node,tx,ty,tz,wx,wy,wz,cx,cy,cz", rows)
 
 
 def main():
-    if len(sys.argv) not in (3, 4):
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
-    out = sys.argv[3] if len(sys.argv) == 4 else os.path.dirname(os.path.abspath(__file__))
-    airfoil_files(sys.argv[1], out)
-    brick_files(sys.argv[2], out)
+    meshes = sys.argv[1]
+    out = sys.argv[2] if len(sys.argv) == 3 else os.path.dirname(os.path.abspath(__file__))
+    brick = lambda kind: os.path.join(meshes, "deformation_brick_%s_mesh_brick_%s_ffd.su2" % (kind, kind))
+    airfoil_files(os.path.join(meshes, "deformation_naca0012_mesh_NACA0012_inv.su2"), out)
+    brick_bump(brick("hex"), out, "brick_top_bump.csv")
+    for kind in ("prism", "pyra", "tets"):
+        brick_bump(brick(kind), out, "brick_%s_top_bump.csv" % kind)
+    brick_twist(brick("hex"), out)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include "dgwarp/core/error.hpp"
@@ -302,12 +303,55 @@ TEST(DgIdw, LengthScaleMakesTheDeformationScaleInvariant) {
     }
 }
 
-TEST(DgIdw, AutoLengthScaleIsTheDiagonalOfTheMovingBoundary) {
-    // Inner box: grid indices [8, 16] of 24 in 2D, [3, 6] of 9 in 3D, times size 2.
-    EXPECT_NEAR(prepare_dg_idw(2, box_in_box(2, 24, 2.0).points, box_in_box(2, 24, 2.0).boundary).auto_length_scale,
-                2.0 * std::sqrt(2.0) * 8 / 24, 1e-15);
-    EXPECT_NEAR(prepare_dg_idw(3, box_in_box(3, 9, 2.0).points, box_in_box(3, 9, 2.0).boundary).auto_length_scale,
-                2.0 * std::sqrt(3.0) * 3 / 9, 1e-15);
+namespace {
+
+// Brute force: the shortest distance between a moving and a static boundary node.
+double brute_force_gap(const BoxInBox& m) {
+    double gap = std::numeric_limits<double>::infinity();
+    const auto& b = m.boundary;
+    for (std::size_t i = 0; i < b.nodes.size(); ++i)
+        for (std::size_t j = 0; j < b.nodes.size(); ++j) {
+            if (!b.moving[i] || b.moving[j]) continue;
+            double d2 = 0;
+            for (int d = 0; d < m.dim; ++d) {
+                const double e = m.points[b.nodes[i] * m.dim + d] - m.points[b.nodes[j] * m.dim + d];
+                d2 += e * e;
+            }
+            gap = std::min(gap, std::sqrt(d2));
+        }
+    return gap;
+}
+
+}  // namespace
+
+TEST(DgIdw, AutoLengthScaleIsTheMovingDiagonalWhenTheGapIsWide) {
+    // Inner box: grid indices [8, 16] of 24 in 2D, [3, 6] of 9 in 3D, times size 2;
+    // small a's make gap / a (6.7) larger than the diagonal.
+    const DgIdwOptions small_a{.a_translation = 0.1, .a_rotation = 0.05};
+    const BoxInBox m2 = box_in_box(2, 24, 2.0), m3 = box_in_box(3, 9, 2.0);
+    EXPECT_NEAR(prepare_dg_idw(2, m2.points, m2.boundary, small_a).auto_length_scale, 2.0 * std::sqrt(2.0) * 8 / 24,
+                1e-15);
+    EXPECT_NEAR(prepare_dg_idw(3, m3.points, m3.boundary, small_a).auto_length_scale, 2.0 * std::sqrt(3.0) * 3 / 9,
+                1e-15);
+}
+
+TEST(DgIdw, AutoLengthScaleFitsTheFollowingZoneInTheGap) {
+    // With the paper's a, gap / 7 (0.67 / 7) is below the diagonal; a_rotation above
+    // a_translation takes over. The gap is checked against brute force on jittered points.
+    for (int dim : {2, 3}) {
+        const BoxInBox m = dgwarp::test::jittered(box_in_box(dim, dim == 2 ? 24 : 9, 2.0), 0.02, 7);
+        const double gap = brute_force_gap(m);
+        EXPECT_LT(gap, 2.0 * 8 / 24 + 0.1);
+        EXPECT_NEAR(prepare_dg_idw(dim, m.points, m.boundary).auto_length_scale, gap / 7, 1e-15) << dim << "D";
+        EXPECT_NEAR(prepare_dg_idw(dim, m.points, m.boundary, {.a_rotation = 12.5}).auto_length_scale, gap / 12.5,
+                    1e-15)
+            << dim << "D";
+    }
+}
+
+TEST(DgIdw, AutoLengthScaleWithoutStaticNodesIsTheDiagonal) {
+    const BoxInBox m = all_moving(box_in_box(3, 9, 2.0));
+    EXPECT_NEAR(prepare_dg_idw(3, m.points, m.boundary).auto_length_scale, 2.0 * std::sqrt(3.0), 1e-15);
 }
 
 TEST(DgIdw, NodeOnAGraphVertexTakesItsMotion) {

@@ -34,9 +34,8 @@ struct DgIdwOptions {
     double a_translation = 7.0;  // a for the translation components (paper: 7)
     double a_rotation = 1.4;     // a for the rotation-vector components (paper: 1.4)
     /// L, the length distances are divided by. 1 reproduces the paper's
-    /// formula (which is not scale invariant); 0 = auto: the diagonal of the
-    /// bounding box of the moving boundary nodes (of all boundary nodes when
-    /// none moves), computed at prepare time and kept in the plan.
+    /// formula (which is not scale invariant); 0 = auto (DgIdwPlan::auto_length_scale),
+    /// computed at prepare time and kept in the plan.
     double length_scale = 1.0;
 };
 
@@ -54,7 +53,20 @@ struct DgIdwPrepareStats {
 struct DgIdwPlan {
     int dim = 3;
     MeshFingerprint mesh;                     // the mesh and boundary set it was built for
-    double auto_length_scale = 1;             // L used when options.length_scale == 0
+    /// L used when options.length_scale == 0: min(D, G / max(a_translation, a_rotation)),
+    /// with the a's given to prepare_dg_idw. D is the bounding-box diagonal of
+    /// the moving boundary nodes (of all boundary nodes when none moves), the
+    /// body's size, as the paper's L = 1 is for its bodies of size 1. G is the
+    /// gap between the moving and the static boundary (shortest distance from
+    /// a moving to a static graph vertex; D alone when either set is empty).
+    /// Why G / a: at equal distance r from a moving and a static vertex the
+    /// moving weight a (r/L)^-2 wins when r < a L, so a L is the thickness of
+    /// the zone that follows the moving boundary (nearly) rigidly; it must fit
+    /// in the gap. Where moving and static boundaries touch (a moving face
+    /// bounded by fixed walls) G is one cell, and with L = 1 the first cells
+    /// next to the fixed walls would follow the moving face and cross the
+    /// walls' nodes (docs/DG-IDW.md has the measurements).
+    double auto_length_scale = 1;
     std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
     /// num_simplices × (dim + 1) graph vertex ids.
@@ -83,9 +95,10 @@ struct DgIdwPlan {
 
 /// Builds the plan for `points` (num_points × dim, the original coordinates)
 /// and `boundary`: the Delaunay graph of the boundary nodes, the graph simplex
-/// of every volume node, and the per-corner coefficients. The plan does not
-/// depend on the options (they are only checked here): a and L are applied at
-/// deform time, and the auto length scale is always stored.
+/// of every volume node, and the per-corner coefficients. a and L are applied
+/// at deform time; the options given here only set the auto length scale
+/// (always stored: it uses max(a_translation, a_rotation), see
+/// DgIdwPlan::auto_length_scale).
 /// Throws MeshError for an inconsistent boundary set (unsorted, duplicate or
 /// out-of-range ids, size mismatch) or a degenerate boundary (fewer than
 /// dim + 1 distinct points, all collinear / coplanar), Error for bad options.

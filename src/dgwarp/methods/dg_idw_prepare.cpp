@@ -44,6 +44,32 @@ double bounding_diagonal(int dim, std::span<const double> points, const Boundary
     return std::sqrt(s);
 }
 
+// The gap between the moving and the static boundary: the shortest distance
+// from a moving to a static graph vertex (infinity when either set is empty).
+// The closest such pair is always a graph edge (the ball with the pair as
+// diameter holds no other point, or that point would make a closer
+// moving-static pair), so scanning the simplices' edges finds it exactly.
+double moving_static_gap(int dim, std::span<const double> points, std::span<const NodeId> boundary_nodes,
+                         std::span<const std::int32_t> simplices, std::span<const std::int32_t> vertex_motion) {
+    const int corners = dim + 1;
+    auto coordinates = [&](std::int32_t v) {
+        const std::int32_t b = vertex_motion[v] >= 0 ? vertex_motion[v] : -1 - vertex_motion[v];
+        return points.data() + static_cast<std::size_t>(boundary_nodes[b]) * dim;
+    };
+    double gap2 = std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s < simplices.size(); s += corners)
+        for (int i = 0; i < corners; ++i)
+            for (int j = i + 1; j < corners; ++j) {
+                const std::int32_t u = simplices[s + i], v = simplices[s + j];
+                if ((vertex_motion[u] >= 0) == (vertex_motion[v] >= 0)) continue;
+                const double *p = coordinates(u), *q = coordinates(v);
+                double d2 = 0;
+                for (int d = 0; d < dim; ++d) d2 += (p[d] - q[d]) * (p[d] - q[d]);
+                gap2 = std::min(gap2, d2);
+            }
+    return std::sqrt(gap2);
+}
+
 // Coefficients of one volume node at x0 in a simplex with corners p[k]
 // (moving[k]): see dg_idw.hpp. Returns true when the node was snapped.
 bool corner_coefficients(int dim, const double* x0, const double* const* p, const bool* moving,
@@ -84,7 +110,6 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.boundary_moving = boundary.moving;
     const double moving_diagonal = bounding_diagonal(dim, points, boundary, false);
     const double boundary_diagonal = bounding_diagonal(dim, points, boundary, true);
-    plan.auto_length_scale = moving_diagonal > 0 ? moving_diagonal : boundary_diagonal > 0 ? boundary_diagonal : 1.0;
 
     // Volume nodes: every node not in the (sorted) boundary list.
     const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
@@ -102,6 +127,12 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.shared_offsets = std::move(vm.shared_offsets);
     plan.shared_members = std::move(vm.shared_members);
     plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
+
+    // Auto length scale (dg_idw.hpp): the moving boundary's size, but small
+    // enough that the zone following the moving boundary, a L, fits in the gap.
+    const double size = moving_diagonal > 0 ? moving_diagonal : boundary_diagonal > 0 ? boundary_diagonal : 1.0;
+    const double gap = moving_static_gap(dim, points, plan.boundary_nodes, plan.simplices, plan.vertex_motion);
+    plan.auto_length_scale = std::min(size, gap / std::max(options.a_translation, options.a_rotation));
 
     const int corners = dim + 1;
     const double snap_distance = snap_fraction * boundary_diagonal;
