@@ -69,8 +69,8 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         EXPECT_EQ(loaded.dim, plan.dim);
         EXPECT_EQ(loaded.mesh, plan.mesh);
         EXPECT_EQ(loaded.auto_length_scale, plan.auto_length_scale);
-        EXPECT_EQ(loaded.simplices, plan.simplices);
-        EXPECT_EQ(loaded.vertex_motion, plan.vertex_motion);
+        EXPECT_EQ(loaded.simplex_motion, plan.simplex_motion);
+        EXPECT_EQ(loaded.stats.graph_vertex_count, plan.stats.graph_vertex_count);
         EXPECT_EQ(loaded.shared_members, plan.shared_members);
         EXPECT_EQ(loaded.node_simplex, plan.node_simplex);
         EXPECT_EQ(loaded.stats.outside_count, 1);
@@ -121,8 +121,8 @@ TEST(PlanFile, TruncatedOrExtendedFilesAreRefused) {
     // A header claiming a huge array is refused before anything is allocated.
     std::vector<char> huge = good;
     const std::uint64_t count = std::uint64_t{1} << 60;
-    // Header: magic 8, version 4, dim 4, seven 8-byte fields, then the 8 array counts.
-    std::memcpy(huge.data() + 72 + 7 * 8, &count, 8);  // node_coefficients count
+    // Header: magic 8, version 4, dim 4, eight 8-byte fields, then the 7 array counts.
+    std::memcpy(huge.data() + 80 + 6 * 8, &count, 8);  // node_coefficients count
     write_bytes(bad, huge);
     const std::string message = expect_refused(bad, "huge count");
     EXPECT_NE(message.find("array length that fits in the file"), std::string::npos) << message;
