@@ -147,3 +147,28 @@ TEST(PlanFile, APlanForAnotherMeshIsRefused) {
     write_bytes(dir / "text.dgwplan", std::vector<char>(200, 'x'));
     expect_refused(dir / "text.dgwplan", "not a plan file");
 }
+
+TEST(PlanFile, InconsistentContentWithAValidChecksumIsRefused) {
+    // Such a plan would make deform read out of bounds, so load checks its indices.
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10);
+    const DgIdwPlan good = prepare_dg_idw(2, m.points, m.boundary);
+    const auto file = dir / "crafted.dgwplan";
+    // A row with a static corner before a moving one.
+    DgIdwPlan swapped = good;
+    std::size_t row = 0;
+    while (!(swapped.simplex_motion[3 * row] >= 0 && swapped.simplex_motion[3 * row + 2] < 0)) ++row;
+    std::swap(swapped.simplex_motion[3 * row], swapped.simplex_motion[3 * row + 2]);
+    save_dg_idw_plan(file, swapped);
+    EXPECT_NE(expect_refused(file, "unpartitioned row").find("moving corners first"), std::string::npos);
+    // A corner motion index past the boundary nodes.
+    DgIdwPlan out_of_range = good;
+    out_of_range.simplex_motion[0] = static_cast<std::int32_t>(good.boundary_nodes.size());
+    save_dg_idw_plan(file, out_of_range);
+    EXPECT_NE(expect_refused(file, "index out of range").find("corner motion index"), std::string::npos);
+    // A volume node whose simplex does not exist.
+    DgIdwPlan bad_simplex = good;
+    bad_simplex.node_simplex[static_cast<std::size_t>(m.volume[0])] = 1 << 30;
+    save_dg_idw_plan(file, bad_simplex);
+    EXPECT_NE(expect_refused(file, "simplex out of range").find("simplex id"), std::string::npos);
+}

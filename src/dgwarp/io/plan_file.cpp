@@ -213,6 +213,10 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path) {
             fail(path, offsets[boundary_moving_at] + b, "a moving flag 0 or 1", std::to_string(plan.boundary_moving[b]));
     check_range(path, offsets[simplex_motion_at], "a corner motion index", plan.simplex_motion, -num_boundary,
                 num_boundary);
+    for (std::size_t k = 0; k < plan.simplex_motion.size(); ++k)
+        if (k % corners != 0 && plan.simplex_motion[k] >= 0 && plan.simplex_motion[k - 1] < 0)
+            fail(path, offsets[simplex_motion_at] + 4 * k, "the moving corners first in each simplex row",
+                 "a moving corner after a static one");
     check_range(path, offsets[shared_members_at], "a boundary index", plan.shared_members, 0, num_boundary);
     check_range(path, offsets[node_simplex_at], "a simplex id or boundary index", plan.node_simplex, -num_boundary,
                 num_simplices);
