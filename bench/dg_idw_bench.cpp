@@ -27,8 +27,12 @@ namespace {
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+struct Timing {
+    double median = 0, min = 0;  // seconds
+};
+
 template <class F>
-double median_seconds(int repeats, F&& f) {
+Timing time_repeats(int repeats, F&& f) {
     std::vector<double> t;
     for (int r = 0; r < repeats; ++r) {
         const auto t0 = Clock::now();
@@ -36,7 +40,12 @@ double median_seconds(int repeats, F&& f) {
         t.push_back(since(t0));
     }
     std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
+    return {t[t.size() / 2], t[0]};
+}
+
+template <class F>
+double median_seconds(int repeats, F&& f) {
+    return time_repeats(repeats, f).median;
 }
 
 // The least any one-pass method must do: read the plan's per-node arrays and
@@ -127,15 +136,16 @@ void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int 
     for (int threads : {1, 2}) {
         set_num_threads(threads);
         deform_dg_idw(plan, m.points, motion, out);  // warm up
-        const double step = median_seconds(steps, [&] { deform_dg_idw(plan, m.points, motion, out); });
+        const Timing step = time_repeats(steps, [&] { deform_dg_idw(plan, m.points, motion, out); });
         streaming_pass(plan, m.points, out);
-        const double stream = median_seconds(steps, [&] { streaming_pass(plan, m.points, out); });
+        const Timing stream = time_repeats(steps, [&] { streaming_pass(plan, m.points, out); });
         BoundaryMotion translate_only = motion;
         for (NodeMotion& nm : translate_only) nm.rotation = {};
-        const double step_t = median_seconds(steps, [&] { deform_dg_idw(plan, m.points, translate_only, out); });
-        std::printf("step %d thread(s): %.2f ms (translation only %.2f ms); streaming pass %.2f ms; "
-                    "step / streaming %.2f\n",
-                    threads, 1e3 * step, 1e3 * step_t, 1e3 * stream, step / stream);
+        const Timing step_t = time_repeats(steps, [&] { deform_dg_idw(plan, m.points, translate_only, out); });
+        std::printf("step %d thread(s), median (min) of %d: %.2f (%.2f) ms; translation only %.2f (%.2f) ms; "
+                    "streaming pass %.2f (%.2f) ms; step / streaming %.2f\n",
+                    threads, steps, 1e3 * step.median, 1e3 * step.min, 1e3 * step_t.median, 1e3 * step_t.min,
+                    1e3 * stream.median, 1e3 * stream.min, step.median / stream.median);
     }
     set_num_threads(1);
 
