@@ -111,15 +111,16 @@ struct DgIdwStepReport {
 /// Deforms the mesh for one step. points: the original num_points × dim
 /// coordinates the plan was built for; motion: one NodeMotion per boundary
 /// index; out: num_points × dim, written completely (it may be `points`
-/// itself: each node is read before it is written). Boundary nodes move
-/// exactly as apply_motion says (static ones are copied); each volume node x0
-/// gets the weighted translation t and rotation vector w of its simplex's
-/// moving corners and the centre c (their centres averaged with the rotation
-/// weights normalised over the moving corners), and moves to
-/// x0 + t + (R(w) - I)(x0 - c). Uses options.a_translation, a_rotation and
-/// length_scale (0 = the plan's auto value). Results do not depend on the
-/// thread count. Throws MeshError when an array size does not match the plan,
-/// Error for bad options.
+/// itself: each node is read before it is written). Moving boundary nodes
+/// move exactly as apply_motion says; static ones are copied (their motion
+/// entries are ignored). Each volume node x0 gets the weighted translation t
+/// and rotation vector w of its simplex's moving corners and the centre c
+/// (their centres averaged with weights r^-2 normalised over the moving
+/// corners), and moves to x0 + t + (R(w) - I)(x0 - c). Uses
+/// options.a_translation, a_rotation and length_scale (0 = the plan's auto
+/// value). No allocation; results do not depend on the thread count. Throws
+/// MeshError when an array size does not match the plan or a motion is not
+/// finite (naming the node), Error for bad options.
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
                               const BoundaryMotion& motion, std::span<double> out,
                               const DgIdwOptions& options = {});
