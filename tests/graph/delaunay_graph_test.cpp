@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <random>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
@@ -185,8 +186,10 @@ TEST(GraphLocate, HilbertAndGivenOrderAgreeAndThreadCountDoesNotMatter) {
         const LocatedGraph one = build_located_graph(dim, s.points, s.boundary, s.volume);
         set_num_threads(2);
         const LocatedGraph two = build_located_graph(dim, s.points, s.boundary, s.volume);
-        const LocatedGraph given = build_located_graph(dim, s.points, s.boundary, s.volume, {.hilbert_order = false});
+        const LocatedGraph given = build_located_graph(dim, s.points, s.boundary, s.volume, {LocateOrder::given});
         set_num_threads(threads);
+        EXPECT_TRUE(one.timings.hilbert_sorted);  // random points: not coherent
+        EXPECT_FALSE(given.timings.hilbert_sorted);
         EXPECT_EQ(one.graph.simplices, two.graph.simplices);
         EXPECT_EQ(one.location.simplex, two.location.simplex);
         // Random points are in general position: each lies in exactly one simplex.
@@ -273,4 +276,19 @@ TEST(GraphLocate, DegenerateBoundariesAreRefused) {
     const std::vector<double> nan_pts = {0, 0, 1, 0, 0, std::nan("")};
     const std::vector<NodeId> ok = {0, 1, 2};
     EXPECT_THROW(build_located_graph(2, nan_pts, ok, {}), MeshError);
+}
+
+TEST(GraphLocate, GridOrderIsCoherentAndARandomOrderIsNot) {
+    for (int dim : {2, 3}) {
+        std::vector<double> grid;
+        const int n = dim == 2 ? 60 : 16;
+        for (int i = 0; i < (dim == 2 ? n * n : n * n * n); ++i)
+            for (int d = 0; d < dim; ++d) grid.push_back((i / (d == 0 ? 1 : d == 1 ? n : n * n)) % n);
+        std::vector<NodeId> ids(grid.size() / dim);
+        std::iota(ids.begin(), ids.end(), 0);
+        EXPECT_TRUE(is_coherent_order(dim, grid, ids)) << dim << "D";
+        std::mt19937 rng(3);
+        std::shuffle(ids.begin(), ids.end(), rng);
+        EXPECT_FALSE(is_coherent_order(dim, grid, ids)) << dim << "D";
+    }
 }

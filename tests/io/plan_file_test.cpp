@@ -69,8 +69,8 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         EXPECT_EQ(loaded.dim, plan.dim);
         EXPECT_EQ(loaded.mesh, plan.mesh);
         EXPECT_EQ(loaded.auto_length_scale, plan.auto_length_scale);
-        EXPECT_EQ(loaded.simplices, plan.simplices);
-        EXPECT_EQ(loaded.vertex_motion, plan.vertex_motion);
+        EXPECT_EQ(loaded.simplex_motion, plan.simplex_motion);
+        EXPECT_EQ(loaded.stats.graph_vertex_count, plan.stats.graph_vertex_count);
         EXPECT_EQ(loaded.shared_members, plan.shared_members);
         EXPECT_EQ(loaded.node_simplex, plan.node_simplex);
         EXPECT_EQ(loaded.stats.outside_count, 1);
@@ -121,8 +121,8 @@ TEST(PlanFile, TruncatedOrExtendedFilesAreRefused) {
     // A header claiming a huge array is refused before anything is allocated.
     std::vector<char> huge = good;
     const std::uint64_t count = std::uint64_t{1} << 60;
-    // Header: magic 8, version 4, dim 4, seven 8-byte fields, then the 8 array counts.
-    std::memcpy(huge.data() + 72 + 7 * 8, &count, 8);  // node_coefficients count
+    // Header: magic 8, version 4, dim 4, eight 8-byte fields, then the 7 array counts.
+    std::memcpy(huge.data() + 80 + 6 * 8, &count, 8);  // node_coefficients count
     write_bytes(bad, huge);
     const std::string message = expect_refused(bad, "huge count");
     EXPECT_NE(message.find("array length that fits in the file"), std::string::npos) << message;
@@ -146,4 +146,29 @@ TEST(PlanFile, APlanForAnotherMeshIsRefused) {
     EXPECT_THROW(load_dg_idw_plan(dir / "missing.dgwplan"), IoError);
     write_bytes(dir / "text.dgwplan", std::vector<char>(200, 'x'));
     expect_refused(dir / "text.dgwplan", "not a plan file");
+}
+
+TEST(PlanFile, InconsistentContentWithAValidChecksumIsRefused) {
+    // Such a plan would make deform read out of bounds, so load checks its indices.
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10);
+    const DgIdwPlan good = prepare_dg_idw(2, m.points, m.boundary);
+    const auto file = dir / "crafted.dgwplan";
+    // A row with a static corner before a moving one.
+    DgIdwPlan swapped = good;
+    std::size_t row = 0;
+    while (!(swapped.simplex_motion[3 * row] >= 0 && swapped.simplex_motion[3 * row + 2] < 0)) ++row;
+    std::swap(swapped.simplex_motion[3 * row], swapped.simplex_motion[3 * row + 2]);
+    save_dg_idw_plan(file, swapped);
+    EXPECT_NE(expect_refused(file, "unpartitioned row").find("moving corners first"), std::string::npos);
+    // A corner motion index past the boundary nodes.
+    DgIdwPlan out_of_range = good;
+    out_of_range.simplex_motion[0] = static_cast<std::int32_t>(good.boundary_nodes.size());
+    save_dg_idw_plan(file, out_of_range);
+    EXPECT_NE(expect_refused(file, "index out of range").find("corner motion index"), std::string::npos);
+    // A volume node whose simplex does not exist.
+    DgIdwPlan bad_simplex = good;
+    bad_simplex.node_simplex[static_cast<std::size_t>(m.volume[0])] = 1 << 30;
+    save_dg_idw_plan(file, bad_simplex);
+    EXPECT_NE(expect_refused(file, "simplex out of range").find("simplex id"), std::string::npos);
 }

@@ -76,6 +76,11 @@ TEST(DgIdw, ARigidMotionOfEveryBoundaryNodeMovesEveryNodeRigidly) {
                 const auto y = moved(dim, m.points, n, rigid);
                 for (int d = 0; d < dim; ++d) ASSERT_NEAR(out[n * dim + d], y[d], 1e-12 * 2.0) << dim << "D node " << n;
             }
+            // Boundary nodes (here sharing one rotation) move exactly as apply_motion says.
+            for (NodeId n : m.boundary.nodes) {
+                const auto y = moved(dim, m.points, n, rigid);
+                for (int d = 0; d < dim; ++d) ASSERT_EQ(out[n * dim + d], y[d]) << dim << "D node " << n;
+            }
         }
     }
 }
@@ -430,6 +435,14 @@ TEST(DgIdw, WrongSizesAndOptionsAreRefused) {
     EXPECT_THROW(deform_dg_idw(plan, m.points, BoundaryMotion(motion.size() - 1), out), MeshError);
     EXPECT_THROW(deform_dg_idw(plan, m.points, motion, out, {.a_translation = 0}), Error);
     EXPECT_THROW(deform_dg_idw(plan, m.points, motion, out, {.length_scale = -1}), Error);
+    BoundaryMotion not_finite = motion;
+    not_finite[3].translation[1] = std::nan("");
+    try {
+        deform_dg_idw(plan, m.points, not_finite, out);
+        ADD_FAILURE();
+    } catch (const MeshError& e) {
+        EXPECT_EQ(e.index(), m.boundary.nodes[3]);
+    }
     BoundarySet unsorted = m.boundary;
     std::swap(unsorted.nodes[0], unsorted.nodes[1]);
     EXPECT_THROW(prepare_dg_idw(2, m.points, unsorted), MeshError);

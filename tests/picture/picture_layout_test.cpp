@@ -16,6 +16,18 @@
 using namespace dgwarp;
 
 namespace {
+// The rect-box these tests were written for: the rectangle [-1, 1] × [-0.5, 0.5]
+// in the box [-6, 6]², cells 0.25 wide.
+const RectBoxOptions picture_test_box{6.0, 48, 8, 4};
+[[maybe_unused]] NodeId rectangle_corner(const Mesh& mesh) {
+    for (std::size_t n = 0; n < mesh.num_points(); ++n)
+        if (mesh.points[2 * n] == -1.0 && mesh.points[2 * n + 1] == -0.5) return static_cast<NodeId>(n);
+    ADD_FAILURE() << "no node at the rectangle's corner";
+    return 0;
+}
+}  // namespace
+
+namespace {
 
 void expect_window(const std::array<double, 4>& got, const std::array<double, 4>& want) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(got[k], want[k], 1e-12) << "entry " << k;
@@ -51,7 +63,7 @@ void check_layout(const PictureLayout& l, const std::array<double, 4>& wanted) {
 }  // namespace
 
 TEST(PictureLayout, DefaultWindowIsTheBoundingBoxWithAMargin) {
-    const Mesh mesh = make_rect_box();  // box [-6, 6]²
+    const Mesh mesh = make_rect_box(picture_test_box);  // box [-6, 6]²
     const std::vector<double> values(mesh.cells.size(), 0.5);
     const PictureLayout l = picture_layout(mesh, values, {});
     EXPECT_EQ(l.width, 1600);
@@ -63,7 +75,7 @@ TEST(PictureLayout, DefaultWindowIsTheBoundingBoxWithAMargin) {
 }
 
 TEST(PictureLayout, AGivenWindowIsKeptAndEnlargedToTheAspect) {
-    const Mesh mesh = make_rect_box();
+    const Mesh mesh = make_rect_box(picture_test_box);
     PictureOptions o;
     o.width = 900;
     o.height = 300;
@@ -74,7 +86,7 @@ TEST(PictureLayout, AGivenWindowIsKeptAndEnlargedToTheAspect) {
 }
 
 TEST(PictureLayout, ColorBarAndTitleTakeTheirBands) {
-    const Mesh mesh = make_rect_box();
+    const Mesh mesh = make_rect_box(picture_test_box);
     const std::vector<double> values(mesh.cells.size(), 0.5);
     PictureOptions o;
     const PictureLayout with_bar = picture_layout(mesh, values, o);
@@ -96,7 +108,7 @@ TEST(PictureLayout, ColorBarAndTitleTakeTheirBands) {
 }
 
 TEST(PictureLayout, BadSizesAndWindowsAreRefused) {
-    const Mesh mesh = make_rect_box();
+    const Mesh mesh = make_rect_box(picture_test_box);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (const std::array<double, 4> w : {std::array<double, 4>{1, 1, 0, 1}, {2, 1, 0, 1}, {0, 1, 1, 0},
                                           {0, nan, 0, 1}, {0, 1, 0, INFINITY}}) {
@@ -140,7 +152,7 @@ TEST(PictureWindow, WindowAroundFramesTheNodes) {
 }
 
 TEST(PictureWindow, WindowAroundRefusesBadInput) {
-    const Mesh mesh = make_rect_box();
+    const Mesh mesh = make_rect_box(picture_test_box);
     EXPECT_THROW(window_around(mesh, {}, 1.5), MeshError);
     const NodeId bad[] = {0, 5, static_cast<NodeId>(mesh.num_points())};
     try {

@@ -1,5 +1,6 @@
 #include "dgwarp/graph/delaunay_graph.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -30,6 +31,28 @@ void check_nodes(int dim, std::span<const double> points, std::span<const NodeId
 
 }  // namespace
 
+bool is_coherent_order(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
+    if (nodes.size() < 2) return true;
+    double lo[3], hi[3];
+    for (int d = 0; d < dim; ++d) lo[d] = hi[d] = points[static_cast<std::size_t>(nodes[0]) * dim + d];
+    double path = 0;
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+        const double* a = points.data() + static_cast<std::size_t>(nodes[i - 1]) * dim;
+        const double* b = points.data() + static_cast<std::size_t>(nodes[i]) * dim;
+        double sq = 0;
+        for (int d = 0; d < dim; ++d) {
+            sq += (b[d] - a[d]) * (b[d] - a[d]);
+            lo[d] = std::min(lo[d], b[d]);
+            hi[d] = std::max(hi[d], b[d]);
+        }
+        path += std::sqrt(sq);
+    }
+    double volume = 1;
+    for (int d = 0; d < dim; ++d) volume *= hi[d] - lo[d];
+    const double spacing = std::pow(volume / static_cast<double>(nodes.size()), 1.0 / dim);
+    return path / static_cast<double>(nodes.size() - 1) <= 4 * spacing;
+}
+
 LocatedGraph build_located_graph(int dim, std::span<const double> points,
                                  std::span<const NodeId> boundary_nodes,
                                  std::span<const NodeId> query_nodes, const GraphOptions& options) {
@@ -55,13 +78,19 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     out.graph.vertex_nodes = std::move(groups.members);
     const double group_seconds = seconds_since(t0);
 
+    const auto t1 = Clock::now();
+    const bool hilbert = options.order == LocateOrder::hilbert ||
+                         (options.order == LocateOrder::automatic && !is_coherent_order(dim, points, query_nodes));
+    const double order_seconds = seconds_since(t1);
     detail::TriangulationResult tri =
-        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, options.hilbert_order)
-                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, options.hilbert_order);
+        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, hilbert)
+                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, hilbert);
     out.graph.simplices = std::move(tri.simplices);
     out.location = std::move(tri.location);
     out.timings = tri.timings;
     out.timings.triangulate_seconds += group_seconds;
+    out.timings.locate_seconds += order_seconds;
+    out.timings.hilbert_sorted = hilbert;
     return out;
 }
 

@@ -44,6 +44,7 @@ struct GraphLocation {
 struct GraphTimings {
     double triangulate_seconds = 0;  // deduplication + Delaunay insertion + tables
     double locate_seconds = 0;       // ordering + point location
+    bool hilbert_sorted = false;     // whether the queries were Hilbert-sorted
 };
 
 struct LocatedGraph {
@@ -52,12 +53,24 @@ struct LocatedGraph {
     GraphTimings timings;
 };
 
-struct GraphOptions {
-    /// Visit the query nodes in Hilbert-curve order (true) or in the given
-    /// order (false) when locating; each walk starts from the previous node's
-    /// simplex, so a spatially coherent order keeps walks short.
-    bool hilbert_order = true;
+/// The order in which query nodes are located. Each walk starts from the
+/// previous node's simplex, so a spatially coherent order keeps walks short.
+enum class LocateOrder {
+    automatic,  // the given order when it is coherent (see is_coherent_order), else Hilbert
+    hilbert,    // Hilbert-curve order (CGAL::hilbert_sort, median policy)
+    given,      // the order of query_nodes
 };
+
+struct GraphOptions {
+    LocateOrder order = LocateOrder::automatic;
+};
+
+/// Whether visiting `nodes` (ids into `points`, num_points × dim) in the
+/// given order is spatially coherent: the mean distance between consecutive
+/// nodes is at most 4 times the typical spacing (bounding-box volume / count)^(1/dim).
+/// Mesh generators' node orders usually are (Gmsh's HXT: about 1.5); a random
+/// order is not (about 0.5 n^(1/dim)). Empty and single-node lists are coherent.
+bool is_coherent_order(int dim, std::span<const double> points, std::span<const NodeId> nodes);
 
 /// Builds the Delaunay graph of the boundary nodes and locates the query nodes in it.
 ///  dim:            2 or 3

@@ -19,7 +19,10 @@ static_assert(std::endian::native == std::endian::little, "plan files are little
 
 constexpr std::array<char, 8> magic = {'D', 'G', 'W', 'P', 'L', 'A', 'N', '\0'};
 constexpr std::uint32_t format_version = 1;
-constexpr int num_arrays = 8;
+constexpr int num_arrays = 7;
+// Positions of the arrays in the file (and in Header::counts).
+enum ArrayIndex { boundary_nodes_at, boundary_moving_at, simplex_motion_at, shared_offsets_at, shared_members_at,
+                  node_simplex_at, node_coefficients_at };
 
 // The fixed-size header, field by field (written without padding).
 struct Header {
@@ -32,6 +35,7 @@ struct Header {
     std::int64_t outside_count = 0;
     std::int64_t snapped_count = 0;
     std::int64_t shared_vertex_count = 0;
+    std::int64_t graph_vertex_count = 0;
     std::array<std::uint64_t, num_arrays> counts{};  // elements of each array
 };
 
@@ -47,6 +51,7 @@ constexpr void visit_header(Header& h, F&& field) {
     field(h.outside_count);
     field(h.snapped_count);
     field(h.shared_vertex_count);
+    field(h.graph_vertex_count);
     for (auto& c : h.counts) field(c);
 }
 
@@ -57,15 +62,14 @@ constexpr std::size_t header_size() {
     return n;
 }
 constexpr std::size_t header_bytes = header_size();
-static_assert(header_bytes == 8 + 2 * 4 + 7 * 8 + num_arrays * 8);
+static_assert(header_bytes == 8 + 2 * 4 + 8 * 8 + num_arrays * 8);
 
 // The plan's arrays in file order, as (bytes, element size) views.
 template <class Plan, class F>
 void visit_arrays(Plan& plan, F&& array) {
     array(plan.boundary_nodes);
     array(plan.boundary_moving);
-    array(plan.simplices);
-    array(plan.vertex_motion);
+    array(plan.simplex_motion);
     array(plan.shared_offsets);
     array(plan.shared_members);
     array(plan.node_simplex);
@@ -109,6 +113,7 @@ void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) 
     h.outside_count = plan.stats.outside_count;
     h.snapped_count = plan.stats.snapped_count;
     h.shared_vertex_count = plan.stats.shared_vertex_count;
+    h.graph_vertex_count = plan.stats.graph_vertex_count;
     int a = 0;
     visit_arrays(plan, [&](const auto& v) { h.counts[a++] = v.size(); });
     const auto header = encode_header(h);
@@ -175,8 +180,9 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path) {
     const std::uint64_t corners = h.dim + 1;
     const auto& c = h.counts;
     const std::uint64_t n = static_cast<std::uint64_t>(h.num_points);
-    if (h.num_points < 0 || c[1] != c[0] || c[6] != n || c[0] > n || c[2] % corners != 0 || c[4] < 1 ||
-        c[7] != (n - c[0]) * corners || c[3] == 0)
+    if (h.num_points < 0 || c[boundary_moving_at] != c[boundary_nodes_at] || c[node_simplex_at] != n ||
+        c[boundary_nodes_at] > n || c[simplex_motion_at] % corners != 0 || c[shared_offsets_at] < 1 ||
+        c[node_coefficients_at] != (n - c[boundary_nodes_at]) * corners)
         fail(path, header_bytes - 8 * num_arrays,
              "array lengths consistent with each other and num_points " + std::to_string(h.num_points),
              "inconsistent lengths");
@@ -198,41 +204,50 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path) {
     if (stored != checksum) fail(path, offset, "checksum " + std::to_string(checksum), std::to_string(stored));
 
     // Indices must be in range, so a plan deforms without reading out of bounds.
-    const auto num_boundary = static_cast<std::int64_t>(c[0]);
-    const auto num_vertices = static_cast<std::int64_t>(c[3]);
-    const auto num_simplices = static_cast<std::int64_t>(c[2] / corners);
-    check_range(path, offsets[0], "a boundary node id", plan.boundary_nodes, 0, h.num_points);
+    const auto num_boundary = static_cast<std::int64_t>(c[boundary_nodes_at]);
+    const auto num_simplices = static_cast<std::int64_t>(c[simplex_motion_at] / corners);
+    const auto num_shared = static_cast<std::int32_t>(c[shared_members_at]);
+    check_range(path, offsets[boundary_nodes_at], "a boundary node id", plan.boundary_nodes, 0, h.num_points);
     for (std::size_t b = 0; b < plan.boundary_moving.size(); ++b)
-        if (plan.boundary_moving[b] > 1) fail(path, offsets[1] + b, "a moving flag 0 or 1", std::to_string(plan.boundary_moving[b]));
-    check_range(path, offsets[2], "a graph vertex id", plan.simplices, 0, num_vertices);
-    check_range(path, offsets[3], "a vertex motion index", plan.vertex_motion, -num_boundary, num_boundary);
-    check_range(path, offsets[4], "a shared-vertex offset", plan.shared_offsets, 0, static_cast<std::int64_t>(c[5]) + 1);
-    check_range(path, offsets[5], "a boundary index", plan.shared_members, 0, num_boundary);
-    check_range(path, offsets[6], "a simplex id or boundary index", plan.node_simplex, -num_boundary, num_simplices);
+        if (plan.boundary_moving[b] > 1)
+            fail(path, offsets[boundary_moving_at] + b, "a moving flag 0 or 1", std::to_string(plan.boundary_moving[b]));
+    check_range(path, offsets[simplex_motion_at], "a corner motion index", plan.simplex_motion, -num_boundary,
+                num_boundary);
+    for (std::size_t k = 0; k < plan.simplex_motion.size(); ++k)
+        if (k % corners != 0 && plan.simplex_motion[k] >= 0 && plan.simplex_motion[k - 1] < 0)
+            fail(path, offsets[simplex_motion_at] + 4 * k, "the moving corners first in each simplex row",
+                 "a moving corner after a static one");
+    check_range(path, offsets[shared_members_at], "a boundary index", plan.shared_members, 0, num_boundary);
+    check_range(path, offsets[node_simplex_at], "a simplex id or boundary index", plan.node_simplex, -num_boundary,
+                num_simplices);
     // Boundary nodes sorted, and node_simplex marks exactly them (deform counts
     // volume nodes from this), shared groups well formed.
     for (std::size_t b = 0; b < plan.boundary_nodes.size(); ++b) {
         if (b > 0 && plan.boundary_nodes[b] <= plan.boundary_nodes[b - 1])
-            fail(path, offsets[0] + 4 * b, "sorted boundary node ids", std::to_string(plan.boundary_nodes[b]));
+            fail(path, offsets[boundary_nodes_at] + 4 * b, "sorted boundary node ids",
+                 std::to_string(plan.boundary_nodes[b]));
         const auto node = static_cast<std::size_t>(plan.boundary_nodes[b]);
         if (plan.node_simplex[node] != -1 - static_cast<std::int32_t>(b))
-            fail(path, offsets[6] + 4 * node, "boundary index " + std::to_string(b) + " encoded as " +
-                 std::to_string(-1 - static_cast<std::int64_t>(b)), std::to_string(plan.node_simplex[node]));
+            fail(path, offsets[node_simplex_at] + 4 * node,
+                 "boundary index " + std::to_string(b) + " encoded as " + std::to_string(-1 - static_cast<std::int64_t>(b)),
+                 std::to_string(plan.node_simplex[node]));
     }
     if (std::count_if(plan.node_simplex.begin(), plan.node_simplex.end(), [](std::int32_t s) { return s < 0; }) !=
         num_boundary)
-        fail(path, offsets[6], std::to_string(num_boundary) + " boundary entries in node_simplex", "another count");
-    for (std::size_t g = 0; g < plan.shared_offsets.size(); ++g)
-        if ((g == 0 && plan.shared_offsets[0] != 0) || (g > 0 && plan.shared_offsets[g] < plan.shared_offsets[g - 1]) ||
-            (g + 1 == plan.shared_offsets.size() && plan.shared_offsets[g] != static_cast<std::int32_t>(c[5])))
-            fail(path, offsets[4] + 4 * g, "nondecreasing shared-vertex offsets from 0 to " + std::to_string(c[5]),
-                 std::to_string(plan.shared_offsets[g]));
+        fail(path, offsets[node_simplex_at], std::to_string(num_boundary) + " boundary entries in node_simplex",
+             "another count");
+    const auto& so = plan.shared_offsets;
+    for (std::size_t g = 0; g < so.size(); ++g)
+        if ((g == 0 && so[0] != 0) || (g > 0 && so[g] < so[g - 1]) || (g + 1 == so.size() && so[g] != num_shared))
+            fail(path, offsets[shared_offsets_at] + 4 * g,
+                 "nondecreasing shared-vertex offsets from 0 to " + std::to_string(num_shared), std::to_string(so[g]));
 
     plan.mesh = {h.num_points, h.points_hash, h.boundary_hash};
     plan.auto_length_scale = h.auto_length_scale;
     plan.stats.outside_count = h.outside_count;
     plan.stats.snapped_count = h.snapped_count;
     plan.stats.shared_vertex_count = h.shared_vertex_count;
+    plan.stats.graph_vertex_count = h.graph_vertex_count;
     return plan;
 }
 

@@ -5,10 +5,11 @@
 //   header:  magic "DGWPLAN\0" (8 bytes), u32 format version, u32 dim,
 //            i64 num_points, u64 points hash, u64 boundary hash (the mesh
 //            fingerprint), f64 auto length scale, i64 outside / snapped /
-//            shared-vertex counts, then u64 element counts of the 8 arrays;
-//   arrays:  boundary_nodes i32, boundary_moving u8, simplices i32,
-//            vertex_motion i32, shared_offsets i32, shared_members i32,
-//            node_simplex i32, node_coefficients f64 (DgIdwPlan's fields);
+//            shared-vertex / graph-vertex counts, then u64 element counts of
+//            the 7 arrays;
+//   arrays:  boundary_nodes i32, boundary_moving u8, simplex_motion i32,
+//            shared_offsets i32, shared_members i32, node_simplex i32,
+//            node_coefficients f64 (DgIdwPlan's fields);
 //   trailer: u64 checksum: hash64 (XXH64) chained over the header and then
 //            each array (each part hashed with the previous part's hash as seed).
 #include <filesystem>

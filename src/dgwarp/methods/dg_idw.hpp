@@ -9,18 +9,22 @@
 // BoundaryMotion); volume nodes are the mesh nodes not in the boundary set.
 //
 // Weights. A volume node x0 lies in a graph simplex with corners v_k at
-// distances r_k (original configuration). With u_k = 1 / r_k, the plan stores
-// one coefficient per corner, q_k = u_k^2 for a moving corner and
-// q_k = m u_k for a static one, where m folds in the paper's multipliers:
+// distances r_k (original configuration); u_k = 1 / r_k. The paper's
+// multipliers are folded into m:
 //   one static corner, rest moving  (paper: dim r^-1):  m = dim
 //   one moving corner, rest static  (paper: dim a):     m = 1 / dim
-//   otherwise                                           m = 1.
-// With distances divided by the length scale L, a component s of (t, w) is
-//   s = sum_moving A q_k s_k / (sum_moving A q_k + sum_static L q_k),  A = a L^2,
-// which is METHODS.md's formula: a (r/L)^-2 = A u^2 and (r/L)^-1 = L u.
-// Storing q rather than finished weights keeps a and L deform-time options
-// at the cost of (dim + 1) multiply-adds and one division per set of weights;
-// storing weights for two values of a would double the per-node plan size.
+//   otherwise                                           m = 1,
+// so that with P = sum_moving u_k^2 and Q = sum_static m u_k, and distances
+// divided by the length scale L (a (r/L)^-2 = a L^2 u^2, (r/L)^-1 = L u),
+// METHODS.md's formula for a component s of (t, w) is
+//   s = sum_moving a L^2 u_k^2 s_k / (a L^2 P + L Q) = sigma sum_moving qhat_k s_k,
+//   qhat_k = u_k^2 / P,  rho = Q / P,  sigma = 1 / (1 + rho / (a L)).
+// The plan stores one number per corner: qhat_k for a moving corner and
+// -m u_k / P for a static one (so rho = -sum of the static slots). At deform
+// time, a and L enter only through sigma: they stay options of each step, the
+// kernel needs no moving/static branch per corner, and the centre
+// c = sum_moving qhat_k c_k needs no division. Storing finished weights for
+// the two values of a instead would double the per-node plan size.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,6 +48,7 @@ struct DgIdwPrepareStats {
     std::int64_t outside_count = 0;  // volume nodes outside the graph's convex hull (nearest hull simplex used)
     std::int64_t snapped_count = 0;  // volume nodes on a graph vertex (they take its motion)
     std::int64_t shared_vertex_count = 0;  // graph vertices standing for several boundary nodes
+    std::int64_t graph_vertex_count = 0;   // distinct boundary points
     double graph_seconds = 0;    // Delaunay graph (0 in a loaded plan)
     double locate_seconds = 0;   // point location (0 in a loaded plan)
     double weights_seconds = 0;  // coefficients and fingerprint (0 in a loaded plan)
@@ -69,11 +74,14 @@ struct DgIdwPlan {
     double auto_length_scale = 1;
     std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
-    /// num_simplices × (dim + 1) graph vertex ids.
-    std::vector<std::int32_t> simplices;
-    /// Per graph vertex: b >= 0 when it moves, with the motion of boundary index b;
-    /// -1 - b when it is static (b its first boundary index).
-    std::vector<std::int32_t> vertex_motion;
+    /// num_simplices × (dim + 1): for each corner of each graph simplex that
+    /// holds a volume node (numbered in order of first use by the nodes;
+    /// moving corners first in each row, else in CGAL's order), b >= 0
+    /// when the corner's graph vertex moves, with the motion of boundary index
+    /// b; -1 - b when it is static (b its first boundary index). (The graph
+    /// vertex ids themselves are not needed to deform, so they are folded away:
+    /// one dependent load less per corner.)
+    std::vector<std::int32_t> simplex_motion;
     /// Graph vertices standing for several boundary nodes (same coordinates):
     /// group g holds boundary indices shared_members[shared_offsets[g] .. shared_offsets[g+1]).
     /// Rule: such a vertex moves if any of its nodes moves, with the motion of
@@ -83,9 +91,10 @@ struct DgIdwPlan {
     /// Per mesh node (num_points): the graph simplex of a volume node, or -1 - b
     /// for the boundary node with boundary index b.
     std::vector<std::int32_t> node_simplex;
-    /// num_volume_nodes × (dim + 1): coefficient q_k per simplex corner, in
-    /// ascending node-id order of the volume nodes. A node on a graph vertex
-    /// has q = 1 for that corner and 0 for the others.
+    /// num_volume_nodes × (dim + 1), in ascending node-id order of the volume
+    /// nodes: per simplex corner, qhat_k (moving) or -m u_k / P (static), see
+    /// above. All zero when no corner moves; a node on a graph vertex has 1
+    /// for that corner if it moves, and 0 everywhere else.
     std::vector<double> node_coefficients;
     DgIdwPrepareStats stats;
 
@@ -115,15 +124,16 @@ struct DgIdwStepReport {
 /// Deforms the mesh for one step. points: the original num_points × dim
 /// coordinates the plan was built for; motion: one NodeMotion per boundary
 /// index; out: num_points × dim, written completely (it may be `points`
-/// itself: each node is read before it is written). Boundary nodes move
-/// exactly as apply_motion says (static ones are copied); each volume node x0
-/// gets the weighted translation t and rotation vector w of its simplex's
-/// moving corners and the centre c (their centres averaged with the rotation
-/// weights normalised over the moving corners), and moves to
-/// x0 + t + (R(w) - I)(x0 - c). Uses options.a_translation, a_rotation and
-/// length_scale (0 = the plan's auto value). Results do not depend on the
-/// thread count. Throws MeshError when an array size does not match the plan,
-/// Error for bad options.
+/// itself: each node is read before it is written). Moving boundary nodes
+/// move exactly as apply_motion says; static ones are copied (their motion
+/// entries are ignored). Each volume node x0 gets the weighted translation t
+/// and rotation vector w of its simplex's moving corners and the centre c
+/// (their centres averaged with weights r^-2 normalised over the moving
+/// corners), and moves to x0 + t + (R(w) - I)(x0 - c). Uses
+/// options.a_translation, a_rotation and length_scale (0 = the plan's auto
+/// value). No allocation; results do not depend on the thread count. Throws
+/// MeshError when an array size does not match the plan or a motion is not
+/// finite (naming the node), Error for bad options.
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
                               const BoundaryMotion& motion, std::span<double> out,
                               const DgIdwOptions& options = {});

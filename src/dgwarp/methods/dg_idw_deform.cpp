@@ -1,6 +1,8 @@
 // deform_dg_idw: one pass over the nodes per step.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "dgwarp/core/error.hpp"
@@ -14,18 +16,113 @@ namespace dgwarp {
 
 namespace {
 
-// Per-step constants of the weights (dg_idw.hpp): A = a L^2 for each a, L for static corners.
+// Per-step constants: sigma = 1 / (1 + rho * k) with k = 1 / (a L) (dg_idw.hpp).
 struct StepConstants {
-    double a_t;  // a_translation L^2
-    double a_r;  // a_rotation L^2
-    double l;    // L
+    double k_t;  // 1 / (a_translation L)
+    double k_r;  // 1 / (a_rotation L)
 };
 
-bool is_zero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
+// apply_motion for runs of boundary nodes that share a rotation (a rigid
+// marker): the rotation matrix (3D) or cos/sin (2D) of the last rotation
+// vector is reused. Same values, same expressions as apply_motion, so the
+// result is bit-identical to it; only the std::sin/std::cos calls are saved.
+template <int Dim>
+class BoundaryMover {
+public:
+    void move(const NodeMotion& motion, const double* x, double* out) {
+        if (std::memcmp(&motion.rotation, &rotation_, sizeof rotation_) != 0 || !valid_) {
+            rotation_ = motion.rotation;
+            valid_ = true;
+            if constexpr (Dim == 2) {
+                cos_ = std::cos(motion.rotation[2]);
+                sin_ = std::sin(motion.rotation[2]);
+            } else {
+                r_ = rotation_matrix(motion.rotation);
+            }
+        }
+        if constexpr (Dim == 2) {
+            const double c = cos_, s = sin_;
+            const double dx = x[0] - motion.center[0], dy = x[1] - motion.center[1];
+            out[0] = motion.center[0] + c * dx - s * dy + motion.translation[0];
+            out[1] = motion.center[1] + s * dx + c * dy + motion.translation[1];
+        } else {
+            const auto& r = r_;
+            const double d[3] = {x[0] - motion.center[0], x[1] - motion.center[1], x[2] - motion.center[2]};
+            for (int i = 0; i < 3; ++i)
+                out[i] = motion.center[i] + r[3 * i] * d[0] + r[3 * i + 1] * d[1] + r[3 * i + 2] * d[2] +
+                         motion.translation[i];
+        }
+    }
+
+private:
+    bool valid_ = false;
+    Vec3 rotation_{};
+    double cos_ = 1, sin_ = 0;
+    std::array<double, 9> r_{};
+};
+
+// The rotation factors with a series of Terms terms; 10: any angle.
+template <int Terms>
+RotationFactors factors(double angle2) {
+    if constexpr (Terms >= 10) {
+        return rotation_factors(angle2);
+    } else {
+        return rotation_factors_series<Terms>(angle2);
+    }
+}
+
+// One volume node x (dim coordinates) in a simplex whose first Moving corners
+// move: y = x0 + t + (R(w) - I)(x0 - c), with the coefficients v of dg_idw.hpp
+// (moving slots qhat, static slots -m u / P). No branch per corner.
+template <int Dim, int Terms, int Moving>
+inline void interpolate(const double* x, double* y, const double* v, const std::int32_t* corner,
+                        const NodeMotion* motion, double k_t, double k_r) {
+    constexpr int Corners = Dim + 1;
+    double q_sum = 0, rho = 0;
+    for (int k = 0; k < Moving; ++k) q_sum += v[k];
+    for (int k = Moving; k < Corners; ++k) rho -= v[k];
+    if (q_sum == 0) {  // on a static graph vertex
+        for (int d = 0; d < Dim; ++d) y[d] = x[d];
+        return;
+    }
+    const NodeMotion* mk[Moving];
+    for (int k = 0; k < Moving; ++k) mk[k] = motion + corner[k];
+    const double sigma_t = 1.0 / (1.0 + rho * k_t);
+    double t[Dim] = {};
+    for (int k = 0; k < Moving; ++k)
+        for (int d = 0; d < Dim; ++d) t[d] += v[k] * mk[k]->translation[d];
+    if constexpr (Terms == 0) {
+        for (int d = 0; d < Dim; ++d) y[d] = x[d] + sigma_t * t[d];
+    } else {
+        const double sigma_r = 1.0 / (1.0 + rho * k_r);
+        constexpr int W = Dim == 2 ? 1 : 3;  // rotation components: w_z in 2D
+        double w[W] = {}, c[Dim] = {};
+        for (int k = 0; k < Moving; ++k) {
+            for (int j = 0; j < W; ++j) w[j] += v[k] * mk[k]->rotation[3 - W + j];
+            for (int d = 0; d < Dim; ++d) c[d] += v[k] * mk[k]->center[d];
+        }
+        for (int j = 0; j < W; ++j) w[j] *= sigma_r;
+        double e[Dim];  // x0 - c
+        for (int d = 0; d < Dim; ++d) e[d] = x[d] - c[d];
+        if constexpr (Dim == 2) {
+            const RotationFactors r = factors<Terms>(w[0] * w[0]);
+            const double fw = r.f * w[0], gw2 = r.g * w[0] * w[0];
+            y[0] = x[0] + (sigma_t * t[0] + (-fw * e[1] - gw2 * e[0]));
+            y[1] = x[1] + (sigma_t * t[1] + (fw * e[0] - gw2 * e[1]));
+        } else {
+            const RotationFactors r = factors<Terms>(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+            const double we[3] = {w[1] * e[2] - w[2] * e[1], w[2] * e[0] - w[0] * e[2], w[0] * e[1] - w[1] * e[0]};
+            const double wwe[3] = {w[1] * we[2] - w[2] * we[1], w[2] * we[0] - w[0] * we[2], w[0] * we[1] - w[1] * we[0]};
+            for (int d = 0; d < 3; ++d) y[d] = x[d] + (sigma_t * t[d] + (r.f * we[d] + r.g * wwe[d]));
+        }
+    }
+}
 
 // Moves nodes [begin, end): boundary nodes by their own motion, volume nodes
-// by the interpolated one. Rotate = false when no moving boundary node rotates.
-template <int Dim, bool Rotate>
+// by the interpolated one. Terms: 0 when no moving boundary node rotates,
+// else the Taylor terms of the rotation factors (10: any angle).
+template <int Dim, int Terms>
 void deform_range(const DgIdwPlan& plan, const double* x0, const NodeMotion* motion, double* out,
                   const StepConstants& sc, std::int64_t begin, std::int64_t end) {
     constexpr int Corners = Dim + 1;
@@ -33,73 +130,35 @@ void deform_range(const DgIdwPlan& plan, const double* x0, const NodeMotion* mot
     std::int64_t vol = begin - (std::lower_bound(plan.boundary_nodes.begin(), plan.boundary_nodes.end(), begin) -
                                 plan.boundary_nodes.begin());
     const std::int32_t* node_simplex = plan.node_simplex.data();
-    const std::int32_t* simplices = plan.simplices.data();
-    const std::int32_t* vertex_motion = plan.vertex_motion.data();
+    const std::int32_t* simplex_motion = plan.simplex_motion.data();
     const double* coefficients = plan.node_coefficients.data();
+    const std::uint8_t* boundary_moving = plan.boundary_moving.data();
+    const double k_t = sc.k_t, k_r = sc.k_r;  // locals: stores to out cannot change them
+    BoundaryMover<Dim> boundary_mover;
     for (std::int64_t i = begin; i < end; ++i) {
         const double* x = x0 + i * Dim;
         double* y = out + i * Dim;
         const std::int32_t s = node_simplex[i];
         if (s < 0) {
             const std::int32_t b = -1 - s;
-            if (plan.boundary_moving[b]) {
-                apply_motion(motion[b], std::span<const double>(x, Dim), std::span<double>(y, Dim));
+            if (boundary_moving[b]) {
+                boundary_mover.move(motion[b], x, y);
             } else {
                 for (int d = 0; d < Dim; ++d) y[d] = x[d];
             }
             continue;
         }
-        const double* q = coefficients + vol * Corners;
+        const double* v = coefficients + vol * Corners;
         ++vol;
-        const std::int32_t* corner = simplices + static_cast<std::int64_t>(s) * Corners;
-        std::int32_t m[Corners];
-        double den_t = 0, den_r = 0, q_moving = 0;
-        for (int k = 0; k < Corners; ++k) {
-            m[k] = vertex_motion[corner[k]];
-            const bool moving = m[k] >= 0;
-            den_t += (moving ? sc.a_t : sc.l) * q[k];
-            if constexpr (Rotate) den_r += (moving ? sc.a_r : sc.l) * q[k];
-            q_moving += moving ? q[k] : 0.0;
-        }
-        if (q_moving == 0) {  // no moving corner, or on a static vertex
-            for (int d = 0; d < Dim; ++d) y[d] = x[d];
-            continue;
-        }
-        const double scale_t = sc.a_t / den_t;
-        double t[Dim] = {};
-        for (int k = 0; k < Corners; ++k) {
-            if (m[k] < 0) continue;
-            const double w = scale_t * q[k];
-            for (int d = 0; d < Dim; ++d) t[d] += w * motion[m[k]].translation[d];
-        }
-        if constexpr (!Rotate) {
-            for (int d = 0; d < Dim; ++d) y[d] = x[d] + t[d];
-        } else {
-            const double scale_r = sc.a_r / den_r;
-            constexpr int W = Dim == 2 ? 1 : 3;  // rotation components: w_z in 2D
-            double w[W] = {}, c[Dim] = {};
-            for (int k = 0; k < Corners; ++k) {
-                if (m[k] < 0) continue;
-                const NodeMotion& mk = motion[m[k]];
-                const double wr = scale_r * q[k];
-                for (int j = 0; j < W; ++j) w[j] += wr * mk.rotation[3 - W + j];
-                for (int d = 0; d < Dim; ++d) c[d] += q[k] * mk.center[d];
-            }
-            const double inv_q = 1.0 / q_moving;
-            double e[Dim];  // x0 - c
-            for (int d = 0; d < Dim; ++d) e[d] = x[d] - c[d] * inv_q;
-            if constexpr (Dim == 2) {
-                const RotationFactors r = rotation_factors(w[0] * w[0]);
-                const double fw = r.f * w[0], gw2 = r.g * w[0] * w[0];
-                y[0] = x[0] + (t[0] + (-fw * e[1] - gw2 * e[0]));
-                y[1] = x[1] + (t[1] + (fw * e[0] - gw2 * e[1]));
-            } else {
-                const RotationFactors r = rotation_factors(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-                const double we[3] = {w[1] * e[2] - w[2] * e[1], w[2] * e[0] - w[0] * e[2], w[0] * e[1] - w[1] * e[0]};
-                const double wwe[3] = {w[1] * we[2] - w[2] * we[1], w[2] * we[0] - w[0] * we[2],
-                                       w[0] * we[1] - w[1] * we[0]};
-                for (int d = 0; d < 3; ++d) y[d] = x[d] + (t[d] + (r.f * we[d] + r.g * wwe[d]));
-            }
+        const std::int32_t* corner = simplex_motion + static_cast<std::int64_t>(s) * Corners;
+        int moving = 0;  // moving corners come first in the row
+        for (int k = 0; k < Corners; ++k) moving += corner[k] >= 0;
+        switch (moving) {
+            case 0: for (int d = 0; d < Dim; ++d) y[d] = x[d]; break;
+            case 1: interpolate<Dim, Terms, 1>(x, y, v, corner, motion, k_t, k_r); break;
+            case 2: interpolate<Dim, Terms, 2>(x, y, v, corner, motion, k_t, k_r); break;
+            case 3: interpolate<Dim, Terms, 3>(x, y, v, corner, motion, k_t, k_r); break;
+            default: interpolate<Dim, Terms, Dim + 1>(x, y, v, corner, motion, k_t, k_r); break;
         }
     }
 }
@@ -131,30 +190,47 @@ DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> poi
         throw MeshError("DG-IDW: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
                         std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
 
-    const double l = options.length_scale > 0 ? options.length_scale : plan.auto_length_scale;
-    const StepConstants sc{options.a_translation * l * l, options.a_rotation * l * l, l};
-    bool rotate = false;
-    for (std::size_t b = 0; b < motion.size() && !rotate; ++b)
-        rotate = plan.boundary_moving[b] && !is_zero(motion[b].rotation);
-    // In 2D only w_z rotates.
-    if (rotate && plan.dim == 2) {
-        rotate = false;
-        for (std::size_t b = 0; b < motion.size() && !rotate; ++b)
-            rotate = plan.boundary_moving[b] && motion[b].rotation[2] != 0;
+    for (std::size_t b = 0; b < motion.size(); ++b) {
+        const NodeMotion& m = motion[b];
+        for (int d = 0; d < 3; ++d)
+            if (!std::isfinite(m.translation[d]) || !std::isfinite(m.rotation[d]) || !std::isfinite(m.center[d]))
+                throw MeshError("DG-IDW: the motion of boundary node " + std::to_string(plan.boundary_nodes[b]) +
+                                    " (boundary index " + std::to_string(b) + ") is not finite",
+                                {}, plan.boundary_nodes[b]);
     }
+    const double l = options.length_scale > 0 ? options.length_scale : plan.auto_length_scale;
+    const StepConstants sc{1.0 / (options.a_translation * l), 1.0 / (options.a_rotation * l)};
+    // The interpolated rotation vector is a combination of the moving nodes'
+    // ones with non-negative weights summing to at most 1, so its angle is at
+    // most their largest: that bounds the Taylor terms the step needs.
+    double angle2_max = 0;
+    for (std::size_t b = 0; b < motion.size(); ++b) {
+        if (!plan.boundary_moving[b]) continue;
+        const Vec3& w = motion[b].rotation;
+        angle2_max = std::max(angle2_max, plan.dim == 2 ? w[2] * w[2] : w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    }
+    const int terms = angle2_max == 0                           ? 0
+                      : angle2_max <= taylor_angle2_limit(4) ? 4
+                      : angle2_max <= taylor_angle2_limit(6) ? 6
+                      : angle2_max <= taylor_angle2_limit(8) ? 8
+                                                               : 10;
 
-    auto run = [&](auto kernel) {
+    auto run = [&]<int Dim, int Terms>() {
         parallel_for_chunks(plan.num_points(), [&](std::int64_t begin, std::int64_t end) {
-            kernel(plan, points.data(), motion.data(), out.data(), sc, begin, end);
+            deform_range<Dim, Terms>(plan, points.data(), motion.data(), out.data(), sc, begin, end);
         });
     };
-    if (plan.dim == 2) {
-        if (rotate) run(deform_range<2, true>);
-        else run(deform_range<2, false>);
-    } else {
-        if (rotate) run(deform_range<3, true>);
-        else run(deform_range<3, false>);
-    }
+    auto run_dim = [&]<int Dim>() {
+        switch (terms) {
+            case 0: return run.template operator()<Dim, 0>();
+            case 4: return run.template operator()<Dim, 4>();
+            case 6: return run.template operator()<Dim, 6>();
+            case 8: return run.template operator()<Dim, 8>();
+            default: return run.template operator()<Dim, 10>();
+        }
+    };
+    if (plan.dim == 2) run_dim.template operator()<2>();
+    else run_dim.template operator()<3>();
     return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
 }
 

@@ -15,7 +15,7 @@ std::size_t bytes_of(const std::vector<T>& v) {
 
 std::size_t plan_bytes(const DgIdwPlan& plan) {
     return sizeof(DgIdwPlan) + bytes_of(plan.boundary_nodes) + bytes_of(plan.boundary_moving) +
-           bytes_of(plan.simplices) + bytes_of(plan.vertex_motion) + bytes_of(plan.shared_offsets) +
+           bytes_of(plan.simplex_motion) + bytes_of(plan.shared_offsets) +
            bytes_of(plan.shared_members) + bytes_of(plan.node_simplex) + bytes_of(plan.node_coefficients);
 }
 

@@ -86,14 +86,18 @@ bool corner_coefficients(int dim, const double* x0, const double* const* p, cons
         if (r[k] < r[nearest]) nearest = k;
     }
     if (r[nearest] < snap_distance) {
-        for (int k = 0; k < corners; ++k) q[k] = k == nearest ? 1.0 : 0.0;
+        for (int k = 0; k < corners; ++k) q[k] = k == nearest && moving[k] ? 1.0 : 0.0;
         return true;
     }
-    const double m = n_moving == dim ? double(dim) : n_moving == 1 ? 1.0 / dim : 1.0;
-    for (int k = 0; k < corners; ++k) {
-        const double u = 1.0 / r[k];
-        q[k] = moving[k] ? u * u : m * u;
+    if (n_moving == 0) {
+        for (int k = 0; k < corners; ++k) q[k] = 0.0;
+        return false;
     }
+    const double m = n_moving == dim ? double(dim) : n_moving == 1 ? 1.0 / dim : 1.0;
+    double p_sum = 0;
+    for (int k = 0; k < corners; ++k)
+        if (moving[k]) p_sum += 1.0 / (r[k] * r[k]);
+    for (int k = 0; k < corners; ++k) q[k] = moving[k] ? 1.0 / (r[k] * r[k]) / p_sum : -(m / r[k]) / p_sum;
     return false;
 }
 
@@ -121,29 +125,48 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
 
     const auto t0 = Clock::now();
     const DelaunayGraph& g = lg.graph;
-    plan.simplices = std::move(lg.graph.simplices);
     GraphVertexMotion vm = graph_vertex_motion(g, boundary.moving);
-    plan.vertex_motion = std::move(vm.vertex_motion);
+    const std::vector<std::int32_t>& vertex_motion = vm.vertex_motion;
     plan.shared_offsets = std::move(vm.shared_offsets);
     plan.shared_members = std::move(vm.shared_members);
     plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
+    plan.stats.graph_vertex_count = static_cast<std::int64_t>(g.num_vertices());
 
     // Auto length scale (dg_idw.hpp): the moving boundary's size, but small
     // enough that the zone following the moving boundary, a L, fits in the gap.
     const double size = moving_diagonal > 0 ? moving_diagonal : boundary_diagonal > 0 ? boundary_diagonal : 1.0;
-    const double gap = moving_static_gap(dim, points, plan.boundary_nodes, plan.simplices, plan.vertex_motion);
+    const double gap = moving_static_gap(dim, points, plan.boundary_nodes, g.simplices, vertex_motion);
     plan.auto_length_scale = std::min(size, gap / std::max(options.a_translation, options.a_rotation));
 
     const int corners = dim + 1;
+    // Keep only the simplices that hold a volume node, numbered in order of
+    // first use by the nodes: deform then reads the simplex table almost
+    // sequentially instead of at random (and the plan is smaller). Each row
+    // lists its moving corners first, so deform needs no per-corner branch.
+    std::vector<std::int32_t> renumbered(g.num_simplices(), -1);
+    std::int32_t used = 0;
+    for (std::int32_t& s : lg.location.simplex) {
+        if (renumbered[s] < 0) {
+            renumbered[s] = used++;
+            const std::size_t row = plan.simplex_motion.size();
+            for (int k = 0; k < corners; ++k)
+                plan.simplex_motion.push_back(vertex_motion[g.simplices[static_cast<std::size_t>(s) * corners + k]]);
+            std::stable_partition(plan.simplex_motion.begin() + row, plan.simplex_motion.end(),
+                                  [](std::int32_t b) { return b >= 0; });
+        }
+        s = renumbered[s];
+    }
+
     const double snap_distance = snap_fraction * boundary_diagonal;
     plan.node_coefficients.resize(volume.size() * static_cast<std::size_t>(corners));
     std::vector<std::uint8_t> snapped(volume.size(), 0);
     parallel_for(static_cast<std::int64_t>(volume.size()), [&](std::int64_t i) {
-        const std::int32_t* corner = plan.simplices.data() + static_cast<std::size_t>(lg.location.simplex[i]) * corners;
+        const std::int32_t* corner =
+            plan.simplex_motion.data() + static_cast<std::size_t>(lg.location.simplex[i]) * corners;
         const double* p[4];
         bool moving[4];
         for (int k = 0; k < corners; ++k) {
-            const std::int32_t b = plan.vertex_motion[corner[k]];
+            const std::int32_t b = corner[k];
             moving[k] = b >= 0;
             p[k] = points.data() + static_cast<std::size_t>(boundary.nodes[b >= 0 ? b : -1 - b]) * dim;
         }

@@ -72,7 +72,8 @@ namespace dgwarp {
 PlanSummary plan_summary(const Plan& plan) {
     PlanSummary s;
     std::visit(overloaded{[&](const DgIdwPlan& p) {
-                              s.graph_simplices = static_cast<std::int64_t>(p.simplices.size()) / (p.dim + 1);
+                              // The plan keeps only the simplices that hold a volume node.
+                              s.graph_simplices = static_cast<std::int64_t>(p.simplex_motion.size()) / (p.dim + 1);
                               s.outside_hull = p.stats.outside_count;
                               s.shared_vertices = p.stats.shared_vertex_count;
                               if (p.stats.graph_seconds > 0 || p.stats.locate_seconds > 0)

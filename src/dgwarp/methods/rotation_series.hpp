@@ -5,6 +5,7 @@
 // Used per node by interpolating methods, where std::sin and std::cos would
 // dominate the step time.
 #include <cmath>
+#include <cstring>
 
 namespace dgwarp {
 
@@ -14,39 +15,59 @@ struct RotationFactors {
 };
 
 namespace detail {
-// Taylor coefficients (-1)^k / (2k+1)! and (-1)^k / (2k+2)!, k = 0..9.
-struct TaylorTables {
-    double f[10];
-    double g[10];
+// Taylor coefficients, interleaved: taylor_pairs[2k] = (-1)^k / (2k+1)! (f),
+// taylor_pairs[2k+1] = (-1)^k / (2k+2)! (g), k = 0..9.
+struct TaylorPairs {
+    double c[20];
 };
-constexpr TaylorTables make_taylor_tables() {
-    TaylorTables t{};
-    double factorial = 1;  // n!
+constexpr TaylorPairs make_taylor_pairs() {
+    TaylorPairs t{};
+    double factorial = 1;  // n!, exact up to 18!, then within an ulp
     for (int n = 1; n <= 20; ++n) {
-        factorial *= n;  // exact up to 18!, then within an ulp
+        factorial *= n;
         const int k = (n - 1) / 2;
-        const double sign = k % 2 ? -1.0 : 1.0;
-        if (n % 2 == 1) t.f[k] = sign / factorial;
-        else t.g[(n - 2) / 2] = sign / factorial;
+        t.c[n - 1] = (k % 2 ? -1.0 : 1.0) / factorial;  // n odd: f's term k; n even: g's term k
     }
     return t;
 }
-inline constexpr TaylorTables taylor = make_taylor_tables();
+inline constexpr TaylorPairs taylor_pairs = make_taylor_pairs();
+// f and g evaluated side by side (two lanes of one SSE2 register).
+using DoublePair = double __attribute__((vector_size(16)));
 }  // namespace detail
 
-/// f and g for θ² = angle2 (>= 0). For θ <= 1 rad: Taylor series to degree 9
-/// in θ² (truncation below 2e-20, so within a few ulp of the exact values);
-/// beyond, std::sin and std::cos.
+/// The largest θ² for which `terms` Taylor terms (4, 6, 8 or 10) leave a
+/// truncation error below 2^-56 in f and g: the first omitted term,
+/// θ^(2 terms) / (2 terms + 1)!, is below 1.4e-17 there.
+constexpr double taylor_angle2_limit(int terms) {
+    return terms <= 4 ? 1.50e-3 : terms <= 6 ? 0.0664 : terms <= 8 ? 0.515 : 1.0;
+}
+
+/// f and g for θ² = angle2 <= taylor_angle2_limit(Terms), from Terms Taylor
+/// terms (within a few ulp of the exact values). Estrin's scheme: pairs of
+/// terms are combined independently, so the dependency chain is about half
+/// as long as Horner's, which matters in per-node loops bound by latency.
+template <int Terms>
+inline RotationFactors rotation_factors_series(double angle2) {
+    static_assert(Terms >= 2 && Terms <= 10 && Terms % 2 == 0);
+    using detail::DoublePair;
+    const double* c = detail::taylor_pairs.c;
+    auto coefficient = [c](int k) {
+        DoublePair v;
+        std::memcpy(&v, c + 2 * k, sizeof v);
+        return v;
+    };
+    const DoublePair x = {angle2, angle2};
+    const DoublePair x2 = x * x;
+    // Pair j: c_{2j} + c_{2j+1} x; then Horner in x² over the pairs.
+    DoublePair acc = coefficient(Terms - 2) + coefficient(Terms - 1) * x;
+    for (int j = Terms / 2 - 2; j >= 0; --j) acc = acc * x2 + (coefficient(2 * j) + coefficient(2 * j + 1) * x);
+    return {acc[0], acc[1]};
+}
+
+/// f and g for any θ² = angle2 >= 0: 10 Taylor terms up to θ = 1 rad, beyond
+/// that std::sin and std::cos.
 inline RotationFactors rotation_factors(double angle2) {
-    if (angle2 <= 1.0) {
-        const auto& c = detail::taylor;
-        double f = c.f[9], g = c.g[9];
-        for (int k = 8; k >= 0; --k) {
-            f = f * angle2 + c.f[k];
-            g = g * angle2 + c.g[k];
-        }
-        return {f, g};
-    }
+    if (angle2 <= 1.0) return rotation_factors_series<10>(angle2);
     const double theta = std::sqrt(angle2);
     return {std::sin(theta) / theta, (1.0 - std::cos(theta)) / angle2};
 }

@@ -1,0 +1,35 @@
+#pragma once
+// The paper's squeezed-sphere case (section 3, Tables 9-10): a unit sphere in
+// a 10 × 10 × 10 box, tetrahedra graded from the sphere outwards, generated
+// with Gmsh's library and cached as a raw binary dump so reruns are fast.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+
+namespace dgwarp::bench {
+
+/// Mesh sizes of one case: size h_sphere on the sphere, growing by `growth`
+/// per unit distance from it, capped at h_max; h_box on the box faces.
+struct SphereBoxCase {
+    std::string name;
+    double h_sphere;
+    double h_max;
+    double growth;
+    double h_box;
+};
+
+struct SphereBoxMesh {
+    std::vector<double> points;          // num_points × 3
+    std::vector<NodeId> sphere_nodes;    // sorted
+    std::vector<NodeId> box_nodes;       // sorted
+    double generate_seconds = 0;         // Gmsh time when it was generated
+    std::size_t num_points() const { return points.size() / 3; }
+};
+
+/// The cached mesh of `c` in `cache_dir`, generating it first (in a child
+/// process killed after `timeout_seconds`) when absent. Throws std::runtime_error.
+SphereBoxMesh sphere_box_mesh(const SphereBoxCase& c, const std::filesystem::path& cache_dir, int timeout_seconds);
+
+}  // namespace dgwarp::bench
