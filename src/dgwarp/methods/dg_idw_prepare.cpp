@@ -8,6 +8,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/methods/boundary_checks.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
 
@@ -19,49 +20,6 @@ namespace {
 // diagonal to a graph vertex takes that vertex's motion: u = 1/r would
 // overflow or dominate anyway, and this keeps q finite.
 constexpr double snap_fraction = 1e-12;
-
-void check_boundary_set(std::size_t num_points, const BoundarySet& boundary) {
-    if (boundary.moving.size() != boundary.nodes.size())
-        throw MeshError("the boundary set has " + std::to_string(boundary.nodes.size()) + " nodes but " +
-                        std::to_string(boundary.moving.size()) + " moving flags");
-    for (std::size_t b = 0; b < boundary.nodes.size(); ++b) {
-        const NodeId n = boundary.nodes[b];
-        if (n < 0 || static_cast<std::size_t>(n) >= num_points)
-            throw MeshError("boundary node id " + std::to_string(n) + " is out of range (the mesh has " +
-                                std::to_string(num_points) + " points)",
-                            {}, n);
-        if (b > 0 && n <= boundary.nodes[b - 1])
-            throw MeshError("boundary node ids must be sorted and unique; node " + std::to_string(n) +
-                                " follows node " + std::to_string(boundary.nodes[b - 1]),
-                            {}, n);
-        if (boundary.moving[b] > 1)
-            throw MeshError("boundary node " + std::to_string(n) + " has moving flag " +
-                                std::to_string(int(boundary.moving[b])) + " (expected 0 or 1)",
-                            {}, n);
-    }
-}
-
-// Bounding-box diagonal of the boundary nodes with moving flag `moving`
-// (any flag when `any`); 0 when there are none.
-double bounding_diagonal(int dim, std::span<const double> points, const BoundarySet& boundary, bool any) {
-    double lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity()};
-    double hi[3] = {-lo[0], -lo[1], -lo[2]};
-    bool found = false;
-    for (std::size_t b = 0; b < boundary.nodes.size(); ++b) {
-        if (!any && !boundary.moving[b]) continue;
-        found = true;
-        for (int d = 0; d < dim; ++d) {
-            const double x = points[static_cast<std::size_t>(boundary.nodes[b]) * dim + d];
-            lo[d] = std::min(lo[d], x);
-            hi[d] = std::max(hi[d], x);
-        }
-    }
-    if (!found) return 0;
-    double s = 0;
-    for (int d = 0; d < dim; ++d) s += (hi[d] - lo[d]) * (hi[d] - lo[d]);
-    return std::sqrt(s);
-}
 
 // Coefficients of one volume node at x0 in a simplex with corners p[k]
 // (moving[k]): see dg_idw.hpp. Returns true when the node was snapped.
@@ -94,13 +52,7 @@ bool corner_coefficients(int dim, const double* x0, const double* const* p, cons
 
 DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const BoundarySet& boundary,
                          const DgIdwOptions& options) {
-    if (dim != 2 && dim != 3) throw MeshError("DG-IDW needs dim 2 or 3, got " + std::to_string(dim));
-    if (points.size() % static_cast<std::size_t>(dim) != 0)
-        throw MeshError("the point array holds " + std::to_string(points.size()) +
-                        " values, not a whole number of " + std::to_string(dim) + "D points");
-    const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
-    if (num_points > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-        throw MeshError("the mesh has " + std::to_string(num_points) + " points, more than int32 node ids can hold");
+    const std::size_t num_points = checked_point_count("DG-IDW", dim, points);
     check_dg_idw_options(options);
     check_boundary_set(num_points, boundary);
 
@@ -108,9 +60,9 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.dim = dim;
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
-    const double moving_diagonal = bounding_diagonal(dim, points, boundary, false);
-    const double boundary_diagonal = bounding_diagonal(dim, points, boundary, true);
-    plan.auto_length_scale = moving_diagonal > 0 ? moving_diagonal : boundary_diagonal > 0 ? boundary_diagonal : 1.0;
+    const double moving_diagonal = boundary_diagonal(dim, points, boundary, true);
+    const double all_diagonal = boundary_diagonal(dim, points, boundary, false);
+    plan.auto_length_scale = moving_diagonal > 0 ? moving_diagonal : all_diagonal > 0 ? all_diagonal : 1.0;
 
     // Volume nodes: every node not in the (sorted) boundary list.
     std::vector<NodeId> volume;
@@ -146,7 +98,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
 
     const int corners = dim + 1;
-    const double snap_distance = snap_fraction * boundary_diagonal;
+    const double snap_distance = snap_fraction * all_diagonal;
     plan.node_coefficients.resize(volume.size() * static_cast<std::size_t>(corners));
     std::vector<std::uint8_t> snapped(volume.size(), 0);
     parallel_for(static_cast<std::int64_t>(volume.size()), [&](std::int64_t i) {
