@@ -8,7 +8,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
-#include "dgwarp/methods/boundary_checks.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
 

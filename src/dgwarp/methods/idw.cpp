@@ -5,7 +5,7 @@
 #include <string>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/methods/boundary_checks.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
 
 namespace dgwarp {
 

@@ -21,6 +21,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/simd_clones.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/idw.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
 
@@ -246,37 +247,16 @@ void finish_node(const Sums& s, int l, const double* x0, double* y) {
     }
 }
 
-// The node id of volume node v (the v-th node, in id order, that is not a
-// boundary node). boundary: sorted ids.
-NodeId volume_node_id(const std::vector<NodeId>& boundary, std::int64_t v) {
-    // g_i = boundary[i] - i volume nodes precede boundary node i; g is
-    // non-decreasing. The answer is v + (number of i with g_i <= v).
-    std::int64_t lo = 0, hi = static_cast<std::int64_t>(boundary.size());
-    while (lo < hi) {
-        const std::int64_t mid = (lo + hi) / 2;
-        if (boundary[mid] - mid <= v) lo = mid + 1;
-        else hi = mid;
-    }
-    return static_cast<NodeId>(v + lo);
-}
-
 // Moves volume nodes [v_begin, v_end).
 template <int Dim, bool Rotate>
 void deform_volume_range(const IdwPlan& plan, const StepArrays& a, MovingSums moving, StaticSums fixed,
                          double inv_l, const double* x0, double* out, std::int64_t v_begin, std::int64_t v_end) {
-    NodeId node = volume_node_id(plan.boundary_nodes, v_begin);
-    auto next_boundary = std::lower_bound(plan.boundary_nodes.begin(), plan.boundary_nodes.end(), node);
+    VolumeNodeCursor cursor(plan.boundary_nodes, v_begin);
     Sums s;
     for (std::int64_t v = v_begin; v < v_end; v += Lanes) {
         const int count = static_cast<int>(std::min<std::int64_t>(Lanes, v_end - v));
         NodeId ids[Lanes];
-        for (int l = 0; l < count; ++l) {
-            while (next_boundary != plan.boundary_nodes.end() && *next_boundary == node) {
-                ++next_boundary;
-                ++node;
-            }
-            ids[l] = node++;
-        }
+        for (int l = 0; l < count; ++l) ids[l] = cursor.next();
         for (int l = count; l < Lanes; ++l) ids[l] = ids[count - 1];  // padding: repeat the last node
         double x[3][Lanes] = {};
         double x_own[Lanes][Dim];

@@ -18,14 +18,16 @@
 #include <vector>
 
 #include "dgwarp/methods/dg_idw.hpp"
+#include "dgwarp/methods/idw.hpp"
+#include "dgwarp/methods/rbf.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
 
-enum class Method { dg_idw };
+enum class Method { dg_idw, idw, rbf };
 
 /// All methods, in the order tools list them.
-inline constexpr Method all_methods[] = {Method::dg_idw};
+inline constexpr Method all_methods[] = {Method::dg_idw, Method::idw, Method::rbf};
 
 /// "dg-idw", "dgm", "idw", "rbf".
 std::string_view method_name(Method m);
@@ -36,14 +38,18 @@ std::optional<Method> method_from_name(std::string_view name);
 /// Options of every method, each in its own plain struct with defaults.
 struct MethodOptions {
     DgIdwOptions dg_idw;
+    IdwOptions idw;
+    RbfOptions rbf;  // acts at prepare time (the plan keeps it)
 };
 
 /// A prepared plan of any method.
-using Plan = std::variant<DgIdwPlan>;
+using Plan = std::variant<DgIdwPlan, IdwPlan, RbfPlan>;
 
 /// What one step did, whatever the method (fields a method does not use stay 0).
 struct StepReport {
     std::int64_t conflicting_shared_vertices = 0;  // DG-IDW: shared graph vertices with differing motions
+    std::int64_t rbf_centres = 0;       // RBF: centres used (all boundary nodes without greedy reduction)
+    double rbf_boundary_error = 0;      // RBF: max |s(x_b) - d_b| over the boundary nodes (mesh units)
 };
 
 /// Builds the plan of `method` for the original `points` and `boundary`.

@@ -1,4 +1,4 @@
-#include "dgwarp/methods/boundary_checks.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -61,6 +61,18 @@ double boundary_diagonal(int dim, std::span<const double> points, const Boundary
     double s = 0;
     for (int d = 0; d < dim; ++d) s += (hi[d] - lo[d]) * (hi[d] - lo[d]);
     return std::sqrt(s);
+}
+
+NodeId volume_node_id(std::span<const NodeId> boundary, std::int64_t v) {
+    // g_i = boundary[i] - i volume nodes precede boundary node i, and g is
+    // non-decreasing: the answer is v + (number of i with g_i <= v).
+    std::int64_t lo = 0, hi = static_cast<std::int64_t>(boundary.size());
+    while (lo < hi) {
+        const std::int64_t mid = (lo + hi) / 2;
+        if (boundary[mid] - mid <= v) lo = mid + 1;
+        else hi = mid;
+    }
+    return static_cast<NodeId>(v + lo);
 }
 
 }  // namespace dgwarp
