@@ -9,8 +9,10 @@
 // Moving and static nodes are kept in separate structure-of-arrays lists,
 // built once per step, so the inner loops have no branches: static nodes only
 // add their weight to the denominator. The two loops are compiled for
-// AVX-512, AVX2 and SSE2 (DGWARP_SIMD_CLONES), the CPU picking. Integer exponents 1..8 are unrolled
-// into multiplications (a template parameter); other exponents call std::pow.
+// AVX-512, AVX2 and SSE2 (DGWARP_SIMD_CLONES), the CPU picking; this file is
+// built with -fno-rounding-math -fno-math-errno -ffp-contract=off (see
+// CMakeLists.txt). Integer exponents 1..8 are unrolled into multiplications
+// (a template parameter); other exponents call std::pow.
 // Each node's sums run over the boundary nodes in boundary order, whatever
 // lane, block or thread the node falls in, so results do not depend on the
 // thread count.
