@@ -8,6 +8,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
@@ -21,28 +22,6 @@ namespace {
 // diagonal to a graph vertex takes that vertex's motion: u = 1/r would
 // overflow or dominate anyway, and this keeps q finite.
 constexpr double snap_fraction = 1e-12;
-
-// Bounding-box diagonal of the boundary nodes with moving flag `moving`
-// (any flag when `any`); 0 when there are none.
-double bounding_diagonal(int dim, std::span<const double> points, const BoundarySet& boundary, bool any) {
-    double lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity()};
-    double hi[3] = {-lo[0], -lo[1], -lo[2]};
-    bool found = false;
-    for (std::size_t b = 0; b < boundary.nodes.size(); ++b) {
-        if (!any && !boundary.moving[b]) continue;
-        found = true;
-        for (int d = 0; d < dim; ++d) {
-            const double x = points[static_cast<std::size_t>(boundary.nodes[b]) * dim + d];
-            lo[d] = std::min(lo[d], x);
-            hi[d] = std::max(hi[d], x);
-        }
-    }
-    if (!found) return 0;
-    double s = 0;
-    for (int d = 0; d < dim; ++d) s += (hi[d] - lo[d]) * (hi[d] - lo[d]);
-    return std::sqrt(s);
-}
 
 // The gap between the moving and the static boundary: the shortest distance
 // from a moving to a static graph vertex (infinity when either set is empty).
@@ -112,8 +91,8 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.dim = dim;
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
-    const double moving_diagonal = bounding_diagonal(dim, points, boundary, false);
-    const double boundary_diagonal = bounding_diagonal(dim, points, boundary, true);
+    const double moving_diagonal = boundary_diagonal(dim, points, boundary, true);
+    const double all_diagonal = boundary_diagonal(dim, points, boundary, false);
 
     // Volume nodes: every node not in the (sorted) boundary list.
     const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
@@ -134,7 +113,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
 
     // Auto length scale (dg_idw.hpp): the moving boundary's size, but small
     // enough that the zone following the moving boundary, a L, fits in the gap.
-    const double size = moving_diagonal > 0 ? moving_diagonal : boundary_diagonal > 0 ? boundary_diagonal : 1.0;
+    const double size = moving_diagonal > 0 ? moving_diagonal : all_diagonal > 0 ? all_diagonal : 1.0;
     const double gap = moving_static_gap(dim, points, plan.boundary_nodes, g.simplices, vertex_motion);
     plan.auto_length_scale = std::min(size, gap / std::max(options.a_translation, options.a_rotation));
 
@@ -157,7 +136,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
         s = renumbered[s];
     }
 
-    const double snap_distance = snap_fraction * boundary_diagonal;
+    const double snap_distance = snap_fraction * all_diagonal;
     plan.node_coefficients.resize(volume.size() * static_cast<std::size_t>(corners));
     std::vector<std::uint8_t> snapped(volume.size(), 0);
     parallel_for(static_cast<std::int64_t>(volume.size()), [&](std::int64_t i) {

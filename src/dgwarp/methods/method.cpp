@@ -2,10 +2,21 @@
 
 namespace dgwarp {
 
+namespace {
+template <class... F>
+struct overloaded : F... {
+    using F::operator()...;
+};
+template <class... F>
+overloaded(F...) -> overloaded<F...>;
+}  // namespace
+
 std::string_view method_name(Method m) {
     switch (m) {
         case Method::dg_idw: return "dg-idw";
         case Method::dgm: return "dgm";
+        case Method::idw: return "idw";
+        case Method::rbf: return "rbf";
     }
     return "?";
 }
@@ -21,53 +32,54 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
     switch (method) {
         case Method::dg_idw: return prepare_dg_idw(dim, points, boundary, options.dg_idw);
         case Method::dgm: return prepare_dgm(dim, points, boundary, options.dgm);
+        case Method::idw: return prepare_idw(dim, points, boundary, options.idw);
+        case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf);
     }
     return {};
 }
 
-namespace {
-template <class... F>
-struct overloaded : F... {
-    using F::operator()...;
-};
-template <class... F>
-overloaded(F...) -> overloaded<F...>;
-}  // namespace
-
 StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
                   std::span<double> out, const MethodOptions& options) {
     return std::visit(overloaded{[&](const DgIdwPlan& p) {
-                          StepReport r;
-                          r.conflicting_shared_vertices =
-                              deform_dg_idw(p, points, motion, out, options.dg_idw).conflicting_shared_vertices;
-                          return r;
-                      },
-                                     [&](const DgmPlan& p) {
-                                         const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
-                                         StepReport r;
-                                         r.conflicting_shared_vertices = d.conflicting_shared_vertices;
-                                         r.substeps = d.substeps;
-                                         r.invalid_graph_simplices = d.invalid_simplices;
-                                         return r;
-                                     }},
+                                     StepReport r;
+                                     r.conflicting_shared_vertices =
+                                         deform_dg_idw(p, points, motion, out, options.dg_idw)
+                                             .conflicting_shared_vertices;
+                                     return r;
+                                 },
+                                 [&](const DgmPlan& p) {
+                                     const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
+                                     StepReport r;
+                                     r.conflicting_shared_vertices = d.conflicting_shared_vertices;
+                                     r.substeps = d.substeps;
+                                     r.invalid_graph_simplices = d.invalid_simplices;
+                                     return r;
+                                 },
+                                 [&](const IdwPlan& p) {
+                                     deform_idw(p, points, motion, out, options.idw);
+                                     return StepReport{};
+                                 },
+                                 [&](const RbfPlan& p) {
+                                     const RbfStepReport rbf = deform_rbf(p, points, motion, out);
+                                     StepReport r;
+                                     r.rbf_centres = rbf.centres;
+                                     r.rbf_boundary_error = rbf.boundary_error;
+                                     return r;
+                                 }},
                       plan);
 }
 
 Method plan_method(const Plan& plan) {
     return std::visit(overloaded{[](const DgIdwPlan&) { return Method::dg_idw; },
-                                 [](const DgmPlan&) { return Method::dgm; }},
+                                 [](const DgmPlan&) { return Method::dgm; },
+                                 [](const IdwPlan&) { return Method::idw; },
+                                 [](const RbfPlan&) { return Method::rbf; }},
                       plan);
 }
 
 std::size_t plan_memory_bytes(const Plan& plan) {
-    return std::visit(overloaded{[](const DgIdwPlan& p) { return plan_bytes(p); },
-                                 [](const DgmPlan& p) { return plan_bytes(p); }},
-                      plan);
+    return std::visit([](const auto& p) { return plan_bytes(p); }, plan);
 }
-
-}  // namespace dgwarp
-
-namespace dgwarp {
 
 PlanSummary plan_summary(const Plan& plan) {
     PlanSummary s;
@@ -88,6 +100,11 @@ PlanSummary plan_summary(const Plan& plan) {
                               s.phase_seconds = {{"graph", p.stats.graph_seconds},
                                                  {"locate", p.stats.locate_seconds},
                                                  {"barycentric", p.stats.barycentric_seconds}};
+                          },
+                          [&](const IdwPlan&) {},
+                          [&](const RbfPlan& p) {
+                              s.phase_seconds = {{"matrix", p.stats.matrix_seconds},
+                                                 {"factorise", p.stats.factor_seconds}};
                           }},
                plan);
     return s;

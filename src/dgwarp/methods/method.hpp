@@ -21,20 +21,16 @@
 
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dgm.hpp"
+#include "dgwarp/methods/idw.hpp"
+#include "dgwarp/methods/rbf.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
 
-enum class Method {
-    dg_idw,
-    dgm,
-};
+enum class Method { dg_idw, dgm, idw, rbf };
 
 /// All methods, in the order tools list them.
-inline constexpr Method all_methods[] = {
-    Method::dg_idw,
-    Method::dgm,
-};
+inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm, Method::idw, Method::rbf};
 
 /// "dg-idw", "dgm", "idw", "rbf".
 std::string_view method_name(Method m);
@@ -46,18 +42,20 @@ std::optional<Method> method_from_name(std::string_view name);
 struct MethodOptions {
     DgIdwOptions dg_idw;
     DgmOptions dgm;
+    IdwOptions idw;
+    RbfOptions rbf;  // acts at prepare time (the plan keeps it)
 };
 
 /// A prepared plan of any method.
-using Plan = std::variant<
-    DgIdwPlan,
-    DgmPlan>;
+using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan>;
 
 /// What one step did, whatever the method (fields a method does not use keep their defaults).
 struct StepReport {
     std::int64_t conflicting_shared_vertices = 0;  // DG-IDW, DGM: shared graph vertices with differing motions
     int substeps = 1;                               // DGM: increments used (1 = one step)
     std::int64_t invalid_graph_simplices = 0;       // DGM: invalid simplices of the graph moved in one step
+    std::int64_t rbf_centres = 0;                   // RBF: centres used (all boundary nodes without greedy reduction)
+    double rbf_boundary_error = 0;                  // RBF: max |s(x_b) - d_b| over the boundary nodes (mesh units)
 };
 
 /// Builds the plan of `method` for the original `points` and `boundary`.

@@ -1,0 +1,199 @@
+// prepare_rbf, solve_rbf, deform_rbf: the RBF method's steps (rbf.hpp).
+#include "dgwarp/methods/rbf.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
+#include "dgwarp/methods/rbf_centre_index.hpp"
+#include "dgwarp/methods/rbf_internal.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+std::string gib(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+// Half the physical memory (POSIX sysconf); 8 GiB when it cannot be read.
+std::size_t default_max_dense_bytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page <= 0) return std::size_t{8} << 30;
+    return static_cast<std::size_t>(pages) / 2 * static_cast<std::size_t>(page);
+}
+
+void check_options(const RbfOptions& options) {
+    if (!std::isfinite(options.support_radius) || options.support_radius < 0)
+        throw Error("RBF: support_radius must be finite and >= 0 (0 = global), got " +
+                    std::to_string(options.support_radius));
+    if (!std::isfinite(options.greedy_tolerance) || options.greedy_tolerance < 0)
+        throw Error("RBF: greedy_tolerance must be finite and >= 0 (0 = all centres), got " +
+                    std::to_string(options.greedy_tolerance));
+}
+
+// Centre of the bounding box of the boundary nodes.
+std::array<double, 3> box_centre(int dim, std::span<const double> boundary_points) {
+    std::array<double, 3> lo{}, hi{};
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < boundary_points.size(); ++i) {
+        const auto k = i % static_cast<std::size_t>(dim);
+        lo[k] = std::min(lo[k], boundary_points[i]);
+        hi[k] = std::max(hi[k], boundary_points[i]);
+    }
+    std::array<double, 3> c{};
+    for (int k = 0; k < dim; ++k) c[k] = 0.5 * (lo[k] + hi[k]);
+    return c;
+}
+
+void check_sizes(const RbfPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                 std::span<double> out) {
+    const auto expected = static_cast<std::size_t>(plan.num_points) * static_cast<std::size_t>(plan.dim);
+    if (points.size() != expected)
+        throw MeshError("RBF: the plan is for " + std::to_string(plan.num_points) + " points (" +
+                        std::to_string(expected) + " coordinates), got " + std::to_string(points.size()) +
+                        " coordinates");
+    if (out.size() != expected)
+        throw MeshError("RBF: the output array holds " + std::to_string(out.size()) + " values, expected " +
+                        std::to_string(expected) + " (" + std::to_string(plan.num_points) + " points)");
+    if (motion.size() != plan.boundary_nodes.size())
+        throw MeshError("RBF: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
+                        std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
+}
+
+// max_b |s(x_b) - d_b| for the coefficients c.
+double boundary_error(const RbfPlan& plan, const RbfCoefficients& c, std::span<const double> d) {
+    std::vector<double> s(d.size());
+    evaluate_rbf(plan, c, plan.boundary_points, s);
+    double worst = 0;
+    for (std::size_t b = 0; b < plan.boundary_nodes.size(); ++b) {
+        double e2 = 0;
+        for (int k = 0; k < plan.dim; ++k) e2 += (s[b * plan.dim + k] - d[b * plan.dim + k]) * (s[b * plan.dim + k] - d[b * plan.dim + k]);
+        worst = std::max(worst, std::sqrt(e2));
+    }
+    return worst;
+}
+
+}  // namespace
+
+void check_dense_bytes(std::size_t needed, std::size_t max_dense_bytes, const std::string& what) {
+    if (needed <= max_dense_bytes) return;
+    throw Error("RBF: " + what + " would need " + std::to_string(needed) + " bytes (" + gib(needed) +
+                "), more than max_dense_bytes = " + std::to_string(max_dense_bytes) + " (" + gib(max_dense_bytes) +
+                "); use greedy reduction (greedy_tolerance > 0) or a compact support (support_radius below the "
+                "boundary's bounding-box diagonal, with the sparse solver)");
+}
+
+RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& boundary, const RbfOptions& options) {
+    const std::size_t num_points = checked_point_count("RBF", dim, points);
+    check_options(options);
+    check_boundary_set(num_points, boundary);
+    if (boundary.nodes.size() < static_cast<std::size_t>(dim + 1))
+        throw MeshError("RBF needs at least " + std::to_string(dim + 1) + " boundary nodes in " + std::to_string(dim) +
+                        "D, got " + std::to_string(boundary.nodes.size()));
+
+    RbfPlan plan;
+    plan.dim = dim;
+    plan.num_points = static_cast<std::int64_t>(num_points);
+    plan.boundary_nodes = boundary.nodes;
+    plan.boundary_moving = boundary.moving;
+    plan.boundary_points.reserve(boundary.nodes.size() * static_cast<std::size_t>(dim));
+    for (NodeId n : boundary.nodes)
+        for (int d = 0; d < dim; ++d) plan.boundary_points.push_back(points[static_cast<std::size_t>(n) * dim + d]);
+    plan.diagonal = boundary_diagonal(dim, points, boundary, false);
+    if (!(plan.diagonal > 0)) throw MeshError("RBF: all boundary nodes are at the same point");
+    plan.shift = box_centre(dim, plan.boundary_points);
+    plan.radius = options.support_radius > 0 ? options.support_radius : plan.diagonal;
+    plan.compact = plan.radius < plan.diagonal;
+    plan.greedy_tolerance = options.greedy_tolerance;
+    plan.max_dense_bytes = options.max_dense_bytes > 0 ? options.max_dense_bytes : default_max_dense_bytes();
+    plan.dense = options.greedy_tolerance == 0 &&
+                 (options.solver == RbfSolver::dense || (options.solver == RbfSolver::automatic && !plan.compact));
+
+    const auto t0 = Clock::now();
+    if (plan.compact || (options.greedy_tolerance == 0 && !plan.dense))
+        plan.index = build_centre_index(dim, plan.boundary_points);
+    const double index_seconds = seconds_since(t0);
+    if (options.greedy_tolerance == 0) {
+        if (plan.dense) {
+            const std::size_t nb = boundary.nodes.size();
+            check_dense_bytes(nb * nb * sizeof(double) + nb * (2 * dim + 2) * sizeof(double), plan.max_dense_bytes,
+                              "the dense " + std::to_string(nb) + " x " + std::to_string(nb) +
+                                  " RBF system (factorised in place, plus P and M^-1 P)");
+        }
+        plan.factorization = factorize_rbf(plan, plan.stats);
+    }
+    plan.stats.matrix_seconds += index_seconds;
+    return plan;
+}
+
+std::vector<double> rbf_boundary_displacements(const RbfPlan& plan, const BoundaryMotion& motion) {
+    if (motion.size() != plan.boundary_nodes.size())
+        throw MeshError("RBF: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
+                        std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
+    const int dim = plan.dim;
+    std::vector<double> d(plan.boundary_points.size(), 0.0);
+    for (std::size_t b = 0; b < plan.boundary_nodes.size(); ++b) {
+        if (!plan.boundary_moving[b]) continue;
+        const std::span<const double> x(plan.boundary_points.data() + b * dim, dim);
+        double y[3];
+        apply_motion(motion[b], x, std::span<double>(y, dim));
+        for (int k = 0; k < dim; ++k) d[b * dim + k] = y[k] - x[k];
+    }
+    return d;
+}
+
+RbfCoefficients solve_rbf(const RbfPlan& plan, const BoundaryMotion& motion) {
+    const auto t0 = Clock::now();
+    const std::vector<double> d = rbf_boundary_displacements(plan, motion);
+    RbfCoefficients c;
+    c.dim = plan.dim;
+    if (plan.factorization) {
+        solve_full(plan, d, c);
+        c.report.centres = static_cast<std::int64_t>(c.centres.size());
+        c.report.boundary_error = boundary_error(plan, c, d);
+    } else {
+        solve_greedy(plan, d, c);
+    }
+    c.report.solve_seconds = seconds_since(t0);
+    return c;
+}
+
+RbfStepReport deform_rbf(const RbfPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                         std::span<double> out) {
+    check_sizes(plan, points, motion, out);
+    const RbfCoefficients c = solve_rbf(plan, motion);
+    const auto t0 = Clock::now();
+    move_volume_nodes(plan, c, points, out);  // reads only volume nodes: `out` may alias `points`
+    const int dim = plan.dim;
+    parallel_for(static_cast<std::int64_t>(plan.boundary_nodes.size()), [&](std::int64_t b) {
+        const auto n = static_cast<std::size_t>(plan.boundary_nodes[b]);
+        const std::span<const double> x = points.subspan(n * dim, dim);
+        const std::span<double> y = out.subspan(n * dim, dim);
+        if (plan.boundary_moving[b]) apply_motion(motion[b], x, y);
+        else std::copy(x.begin(), x.end(), y.begin());
+    });
+    RbfStepReport report = c.report;
+    report.evaluate_seconds = seconds_since(t0);
+    return report;
+}
+
+std::size_t plan_bytes(const RbfPlan& plan) {
+    return plan.boundary_nodes.capacity() * sizeof(NodeId) + plan.boundary_moving.capacity() +
+           plan.boundary_points.capacity() * sizeof(double) +
+           (plan.factorization ? factorization_bytes(*plan.factorization) : 0) +
+           (plan.index ? index_bytes(*plan.index) : 0);
+}
+
+}  // namespace dgwarp
