@@ -5,8 +5,17 @@
 
 namespace dgwarp {
 
+/// Loops shorter than this run on the calling thread: starting a parallel
+/// region costs microseconds, and far more when other processes hold the
+/// cores (OpenMP threads then wait for a core), which dwarfs a short loop.
+inline constexpr std::int64_t parallel_grain = 4096;
+
+namespace detail {
+
+// body(i) for i in [0, n) in one OpenMP region, iterations split statically;
+// the first exception is rethrown after the region.
 template <class Body>
-void parallel_for(std::int64_t n, Body&& body) {
+void parallel_region_for(std::int64_t n, Body&& body) {
     std::exception_ptr error;
     std::mutex error_mutex;
 #pragma omp parallel for schedule(static)
@@ -21,12 +30,23 @@ void parallel_for(std::int64_t n, Body&& body) {
     if (error) std::rethrow_exception(error);
 }
 
+}  // namespace detail
+
+template <class Body>
+void parallel_for(std::int64_t n, Body&& body) {
+    if (n < parallel_grain || num_threads() == 1) {
+        for (std::int64_t i = 0; i < n; ++i) body(i);
+        return;
+    }
+    detail::parallel_region_for(n, body);
+}
+
 template <class Body>
 void parallel_for_chunks(std::int64_t n, Body&& body) {
-    const std::int64_t chunks = n <= 0 ? 0 : std::min<std::int64_t>(num_threads(), n);
-    parallel_for(chunks, [&](std::int64_t c) {
-        body(n * c / chunks, n * (c + 1) / chunks);
-    });
+    if (n <= 0) return;
+    const std::int64_t chunks = n < parallel_grain ? 1 : std::min<std::int64_t>(num_threads(), n);
+    if (chunks == 1) return body(std::int64_t{0}, n);
+    detail::parallel_region_for(chunks, [&](std::int64_t c) { body(n * c / chunks, n * (c + 1) / chunks); });
 }
 
 }  // namespace dgwarp
