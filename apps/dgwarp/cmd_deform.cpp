@@ -61,6 +61,8 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"worst_inverted_cells", f.worst_inverted},
             {"substeps", f.step.substeps},
             {"invalid_graph_simplices", f.step.invalid_graph_simplices},
+            {"rbf_centres", f.step.rbf_centres},
+            {"rbf_boundary_error", f.step.rbf_boundary_error},
             {"seconds", {{"deform", f.deform_seconds}, {"quality", f.quality_seconds}, {"write", f.write_seconds}}},
             {"warnings", f.warnings}};
 }

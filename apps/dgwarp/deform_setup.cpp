@@ -74,6 +74,19 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str();
     cmd->add_flag("--dgm-substep", a.dgm_substep,
                   "DGM: when the moved graph is invalid, split the motion into increments (default: fail)");
+    cmd->add_option("--idw-moving-exponent", a.idw_exponent_moving, "IDW: exponent c_d of the moving nodes' distances")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 16.0));
+    cmd->add_option("--idw-static-exponent", a.idw_exponent_static, "IDW: exponent c_s of the static nodes' distances")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 16.0));
+    cmd->add_option("--rbf-radius", a.rbf_radius, "RBF: Wendland C2 support radius (0 = global: dense solve)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--rbf-greedy", a.rbf_greedy,
+                    "RBF: greedy data reduction to this boundary error (mesh units; 0 = all centres)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
 }
 
 std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
@@ -89,6 +102,10 @@ MethodOptions method_options(const SetupArgs& args) {
     o.dg_idw.a_rotation = args.a_rotation;
     o.dg_idw.length_scale = parse_length_scale(args.length_scale);
     o.dgm.on_invalid = args.dgm_substep ? DgmOptions::OnInvalidGraph::substep : DgmOptions::OnInvalidGraph::fail;
+    o.idw.exponent_moving = args.idw_exponent_moving;
+    o.idw.exponent_static = args.idw_exponent_static;
+    o.rbf.support_radius = args.rbf_radius;
+    o.rbf.greedy_tolerance = args.rbf_greedy;
     return o;
 }
 
@@ -179,7 +196,11 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
               {"a_rotation", o.dg_idw.a_rotation},
               {"length_scale", in.args.length_scale == "auto" ? nlohmann::json("auto")
                                                                : nlohmann::json(o.dg_idw.length_scale)},
-              {"dgm_substep", in.args.dgm_substep}}},
+              {"dgm_substep", in.args.dgm_substep},
+              {"idw_exponent_moving", o.idw.exponent_moving},
+              {"idw_exponent_static", o.idw.exponent_static},
+              {"rbf_radius", o.rbf.support_radius},
+              {"rbf_greedy_tolerance", o.rbf.greedy_tolerance}}},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
             {"original_quality", quality_json(in.original_quality)},
             {"warnings", in.boundary.warnings}};

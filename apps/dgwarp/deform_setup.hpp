@@ -26,6 +26,10 @@ struct SetupArgs {
     double a_rotation = 1.4;
     std::string length_scale = "1";
     bool dgm_substep = false;
+    double idw_exponent_moving = 3.0;
+    double idw_exponent_static = 2.0;
+    double rbf_radius = 0;   // 0 = global support
+    double rbf_greedy = 0;   // 0 = all boundary nodes are centres
 };
 
 /// Adds the mesh, --motion, --method, --zone, --threads and method options to `cmd`.
