@@ -48,12 +48,6 @@ std::int64_t moving_count(const BoundarySet& b) {
 
 }  // namespace
 
-std::string milliseconds(double seconds) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(seconds < 0.01 ? 2 : 1) << seconds * 1e3 << " ms";
-    return s.str();
-}
-
 void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();

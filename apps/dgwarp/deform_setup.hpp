@@ -76,7 +76,4 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
 nlohmann::json inputs_json(const Inputs& in, const std::string& command);
 nlohmann::json plan_json(const Inputs& in, const PlannedMethod& p);
 
-/// "12.3 ms".
-std::string milliseconds(double seconds);
-
 }  // namespace dgwarp::cli

@@ -74,4 +74,10 @@ void print_ratio(std::ostream& out, const RatioSummary& r) {
     out.unsetf(std::ios::floatfield);
 }
 
+std::string milliseconds(double seconds) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(seconds < 0.01 ? 2 : 1) << seconds * 1e3 << " ms";
+    return s.str();
+}
+
 }  // namespace dgwarp::cli

@@ -27,4 +27,7 @@ nlohmann::json ratio_json(const RatioSummary& r);
 void print_quality(std::ostream& out, const QualitySummary& q, bool histogram);
 void print_ratio(std::ostream& out, const RatioSummary& r);
 
+/// A duration for people: "12.3 ms" (two decimals below 10 ms).
+std::string milliseconds(double seconds);
+
 }  // namespace dgwarp::cli

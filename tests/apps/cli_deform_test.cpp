@@ -35,7 +35,7 @@ std::filesystem::path rect_box(const std::filesystem::path& dir) {
 }
 
 const char* small_rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
-const char* huge_translation = R"({"markers": {"rectangle": {"translate": [4.5, 0]}}})";
+const char* huge_translation = R"({"markers": {"rectangle": {"translate": [18.8, 0]}}})";  // to 0.2 from the box
 
 }  // namespace
 

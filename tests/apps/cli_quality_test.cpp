@@ -70,10 +70,10 @@ TEST(CliInfo, JsonHasCountsMarkersBoxAndQuality) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j.at("mesh").at("nodes").get<long>(), 2340);
-    EXPECT_EQ(j.at("mesh").at("cell_types").at("quadrilateral").get<long>(), 2212);
+    EXPECT_EQ(j.at("mesh").at("cell_types").at("quadrilateral").get<long>(), 2262);
     EXPECT_EQ(j.at("mesh").at("markers").at(0).at("name"), "rectangle");
-    EXPECT_EQ(j.at("mesh").at("markers").at(0).at("nodes").get<long>(), 60);
-    EXPECT_DOUBLE_EQ(j.at("bounding_box").at("min").at(0).get<double>(), -10.0);
-    EXPECT_DOUBLE_EQ(j.at("bounding_box").at("max").at(1).get<double>(), 10.0);
+    EXPECT_EQ(j.at("mesh").at("markers").at(0).at("nodes").get<long>(), 78);
+    EXPECT_DOUBLE_EQ(j.at("bounding_box").at("min").at(0).get<double>(), -20.0);
+    EXPECT_DOUBLE_EQ(j.at("bounding_box").at("max").at(1).get<double>(), 20.0);
     EXPECT_EQ(j.at("quality").at("inverted").get<long>(), 0);
 }

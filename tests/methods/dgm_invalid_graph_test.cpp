@@ -19,12 +19,13 @@ using namespace dgwarp;
 
 namespace {
 
-// A small rect-in-box grid (15 × 15 cells, the rectangle 5 × 3).
+// A small rect-in-box O-grid (36 × 12 nodes).
 Mesh small_rect_box() {
     RectBoxOptions o;
-    o.cells = 15;
-    o.rect_cells_x = 5;
-    o.rect_cells_y = 3;
+    o.box_half_size = 6.0;
+    o.around = 36;
+    o.layers = 12;
+    o.growth = 1.12;
     return make_rect_box(o);
 }
 
@@ -121,14 +122,12 @@ TEST(DgmInvalidGraph, SubstepsMapNinetyDegreesWithEveryVolumeNodeOutsideTheRecta
     expect_boundary_exact(mesh, boundary, motion, out);
     // Every increment maps through a valid graph, a piecewise-linear bijection
     // of the region between the bodies: no volume node enters the turned
-    // rectangle (5 × 3 cells of 20/15, turned: [-2, 2] × [-10/3, 10/3]) or
-    // leaves the box [-10, 10]².
-    const double hx = 1.5 * 20.0 / 15, hy = 2.5 * 20.0 / 15;
+    // rectangle (now [-0.5, 0.5] × [-1, 1]) or leaves the box.
     for (std::size_t n = 0; n < mesh.num_points(); ++n) {
         if (plan.node_simplex[n] < 0) continue;
         const double x = out[2 * n], y = out[2 * n + 1];
-        EXPECT_FALSE(std::abs(x) < hx - 1e-9 && std::abs(y) < hy - 1e-9) << "node " << n << " at " << x << ", " << y;
-        EXPECT_LT(std::max(std::abs(x), std::abs(y)), 10.0) << "node " << n;
+        EXPECT_FALSE(std::abs(x) < 0.5 - 1e-9 && std::abs(y) < 1 - 1e-9) << "node " << n << " at " << x << ", " << y;
+        EXPECT_LT(std::max(std::abs(x), std::abs(y)), 6.0) << "node " << n;
     }
     // Cells can still invert: DGM does not turn the near-wall cells with the
     // wall (the paper's Fig. 9), and at the rectangle's corners the first-layer

@@ -29,14 +29,8 @@ using namespace dgwarp;
 
 namespace {
 // The rect-box these tests were written for: the rectangle [-1, 1] × [-0.5, 0.5]
-// in the box [-6, 6]², cells 0.25 wide.
-const RectBoxOptions picture_test_box{6.0, 48, 8, 4};
-[[maybe_unused]] NodeId rectangle_corner(const Mesh& mesh) {
-    for (std::size_t n = 0; n < mesh.num_points(); ++n)
-        if (mesh.points[2 * n] == -1.0 && mesh.points[2 * n + 1] == -0.5) return static_cast<NodeId>(n);
-    ADD_FAILURE() << "no node at the rectangle's corner";
-    return 0;
-}
+// in the box [-6, 6]².
+const RectBoxOptions picture_test_box{2.0, 1.0, 6.0, 78, 30, 1.12};
 }  // namespace
 
 namespace {
@@ -117,17 +111,9 @@ double clearance_px(const PictureLayout& layout, const Mesh& mesh, std::size_t c
 
 constexpr double clear_px = 3.0;
 
-std::vector<double> spread_values(std::size_t n) {
-    std::vector<double> v(n);
-    for (std::size_t i = 0; i < n; ++i) v[i] = 0.05 + 0.9 * static_cast<double>((i * 7) % 13) / 12.0;
-    return v;
-}
-
 struct Picture {
     Mesh mesh = make_rect_box(picture_test_box);
-    // The grid's cells are all ideal squares: give them spread-out values so
-    // that the colour checks are not vacuous.
-    std::vector<double> quality = spread_values(mesh.cells.size());
+    std::vector<double> quality = cell_qualities(mesh, cell_orientations(mesh));
     PictureOptions options;
     Picture() {
         options.width = 800;
@@ -246,13 +232,13 @@ TEST(Picture, WithoutValuesCellsArePlainAndThereIsNoColourBar) {
 
 TEST(Picture, ACloseUpShowsTheWindowsCells) {
     Picture p;
-    const auto rect = marker_nodes(find_marker(p.mesh, "rectangle"));
-    p.options.window = window_around(p.mesh, rect, 1.2);
+    const NodeId corner[] = {0};  // the rectangle's corner (-1, -0.5)
+    p.options.window = window_around(p.mesh, corner, 1.0);
     const auto png = test::scratch_dir() / "corner.png";
     write_mesh_picture(png, p.mesh, p.quality, p.options);
     const Image img = read_png(png);
     const PictureLayout layout = picture_layout(p.mesh, p.quality, p.options);
-    EXPECT_GT(layout.scale, 200);  // a close-up indeed: about 2.4 units across 700 pixels, not 12
+    EXPECT_GT(layout.scale, 500);  // a close-up indeed: 0.17 units across 700 pixels
     int checked = 0;
     for (std::size_t i = 0; i < p.mesh.cells.size(); ++i) {
         const auto c = centroid(p.mesh, i);
@@ -329,28 +315,27 @@ TEST(Picture, ADeepCloseUpStillDrawsTheCellsAroundANode) {
     // A window a millionth of the cells' size: the cells reach far beyond
     // what Cairo's fixed-point coordinates hold, so they must be clipped first.
     Picture p;
-    const NodeId node = rectangle_corner(p.mesh);  // the rectangle's corner (-1, -0.5)
-    const NodeId corner[] = {node};
+    const NodeId corner[] = {0};  // the rectangle's corner (-1, -0.5)
     p.options.window = window_around(p.mesh, corner, 1e-5);
     const auto png = test::scratch_dir() / "deep.png";
     write_mesh_picture(png, p.mesh, p.quality, p.options);
     const Image img = read_png(png);
     const PictureLayout layout = picture_layout(p.mesh, p.quality, p.options);
     ASSERT_GT(layout.scale, 1e8);
-    const auto at_node = to_pixel(layout, p.mesh.points[2 * node], p.mesh.points[2 * node + 1]);
+    const auto at_node = to_pixel(layout, p.mesh.points[0], p.mesh.points[1]);
     int checked = 0;
     for (std::size_t i = 0; i < p.mesh.cells.size(); ++i) {
         const auto nodes = p.mesh.cells.nodes_of(i);
-        if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) continue;
+        if (std::find(nodes.begin(), nodes.end(), NodeId{0}) == nodes.end()) continue;
         // Near its corner a cell is a wedge; its centroid's direction lies inside it.
         const auto c = centroid(p.mesh, i);
-        const double dx = c[0] - p.mesh.points[2 * node], dy = c[1] - p.mesh.points[2 * node + 1];
+        const double dx = c[0] - p.mesh.points[0], dy = c[1] - p.mesh.points[1];
         const double r = 150.0 / std::hypot(dx, dy);
         const std::array<double, 2> probe = {at_node[0] + r * dx, at_node[1] - r * dy};
         EXPECT_TRUE(same_color(img.at(probe), expected_pixel(value_color(p.quality[i])))) << "cell " << i;
         ++checked;
     }
-    EXPECT_EQ(checked, 3);  // the hole's corner node has three cells
+    EXPECT_EQ(checked, 2);  // the O-grid's corner node has two cells
     // Towards the hole (up and right of the corner): background.
     EXPECT_TRUE(same_color(img.at({at_node[0] + 150, at_node[1] - 150}), expected_pixel(background_color), 0));
 }

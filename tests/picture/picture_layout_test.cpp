@@ -17,14 +17,8 @@ using namespace dgwarp;
 
 namespace {
 // The rect-box these tests were written for: the rectangle [-1, 1] × [-0.5, 0.5]
-// in the box [-6, 6]², cells 0.25 wide.
-const RectBoxOptions picture_test_box{6.0, 48, 8, 4};
-[[maybe_unused]] NodeId rectangle_corner(const Mesh& mesh) {
-    for (std::size_t n = 0; n < mesh.num_points(); ++n)
-        if (mesh.points[2 * n] == -1.0 && mesh.points[2 * n + 1] == -0.5) return static_cast<NodeId>(n);
-    ADD_FAILURE() << "no node at the rectangle's corner";
-    return 0;
-}
+// in the box [-6, 6]².
+const RectBoxOptions picture_test_box{2.0, 1.0, 6.0, 78, 30, 1.12};
 }  // namespace
 
 namespace {

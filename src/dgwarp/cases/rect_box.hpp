@@ -1,23 +1,31 @@
 #pragma once
 // The paper's first test case (section 3.1, Fig. 8): a rectangle in a square
-// box, meshed with structured quadrilaterals, 2,340 nodes by default.
+// box, meshed with structured quadrilaterals (an O-grid, 2,340 nodes by default).
+//
+// The paper gives the node count and a figure, not the dimensions. The sizes
+// matter because the paper's DG-IDW weights are not scale invariant (a r^-2
+// against r^-1, a = 7): the motion is followed within about a·L = 7 length
+// units of the moving body. A 2 × 1 rectangle in a 40 × 40 box reproduces the
+// paper's pattern (DG-IDW valid up to 90°, DGM's graph invalid at 90°); in a
+// box whose gap to the rectangle is smaller than a·L, DG-IDW drags the cells
+// near the far field along and inverts them (measured: docs/DG-IDW.md).
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
 
 struct RectBoxOptions {
-    double box_half_size = 10.0;  // the box is [-h, h]²
-    int cells = 49;               // cells along each side of the box (uniform squares)
-    int rect_cells_x = 21;        // the rectangle (centred at the origin) spans this many
-    int rect_cells_y = 9;         //   cells in x and in y; cells - rect_cells_* must be even
+    double rect_width = 2.0;    // rectangle, centred at the origin
+    double rect_height = 1.0;
+    double box_half_size = 20.0;  // box [-h, h]²
+    int around = 78;             // nodes around each loop; a multiple of 2(w+h)/gcd so corners are nodes
+    int layers = 30;             // node layers from the rectangle (1) to the box (layers)
+    double growth = 1.2;         // ratio of successive layer thicknesses (clusters layers at the wall)
 };
 
-/// A uniform Cartesian grid of the box with the rectangle cut out: 2D,
-/// counter-clockwise quadrilaterals, markers "rectangle" and "farfield". The
-/// defaults give 50² - 20·8 = 2,340 nodes and 49² - 21·9 = 2,212 cells, the
-/// rectangle 8.57 × 3.67 in a 20 × 20 box (the paper gives the node count and
-/// a figure, not the dimensions). Throws MeshError when the rectangle does not
-/// fit in the box or is not centred on grid lines.
+/// The structured O-grid between the rectangle and the box: 2D, quadrilaterals
+/// oriented counter-clockwise, markers "rectangle" and "farfield". The default
+/// options give 78 × 30 = 2,340 nodes and 2,262 cells. Throws MeshError when
+/// the options cannot place the rectangle's corners on nodes.
 Mesh make_rect_box(const RectBoxOptions& options = {});
 
 }  // namespace dgwarp
