@@ -11,6 +11,7 @@
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/picture/mesh_picture.hpp"
+#include "dgwarp/picture/picture_window.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "frame_output.hpp"
 #include "report.hpp"
@@ -86,12 +87,18 @@ void run_demo(const DemoArgs& a) {
     picture.title = "DG-IDW: rectangle turned by " + std::to_string(static_cast<int>(a.angle_deg)) +
                     " degrees, coloured by Knupp shape quality";
     write_mesh_picture(dir / "rect_box_dg-idw.png", deformed, dg_idw_quality, picture);
+    const auto rect_nodes = marker_nodes(find_marker(mesh, "rectangle"));
+    picture.window = window_around(deformed, rect_nodes, 6.0);
+    picture.title = "DG-IDW, close to the rectangle";
+    write_mesh_picture(dir / "rect_box_dg-idw_closeup.png", deformed, dg_idw_quality, picture);
+    picture.window.reset();
     picture.title = "original mesh";
     write_mesh_picture(dir / "rect_box.png", mesh, original_quality, picture);
     std::cout << "\nwrote\n  " << (dir / "rect_box.su2").string() << "  (original mesh, SU2)\n  "
               << (dir / "rect_box_dg-idw.vtu").string()
               << "  (DG-IDW result: open in ParaView; displacement, quality, quality_ratio)\n  "
               << (dir / "rect_box_dg-idw.png").string() << "  (DG-IDW result, coloured by quality)\n  "
+              << (dir / "rect_box_dg-idw_closeup.png").string() << "  (the same, close to the rectangle)\n  "
               << (dir / "rect_box.png").string() << "  (original mesh)\n"
               << "next: dgwarp deform --help, and README.md for your own meshes and motions\n";
 }
