@@ -35,7 +35,8 @@ done
 scripts/install-deps.sh fuzz
 mkdir -p "$build"
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  # Optimised, with debug info and assertions (no NDEBUG): a failed assert is a finding too.
+  cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g" \
     -DDGWARP_FUZZ=ON -DDGWARP_BUILD_TESTS=OFF -DDGWARP_BUILD_BENCH=OFF >"$build/configure.log" 2>&1 \
     || { cat "$build/configure.log"; exit 1; }
 fi
