@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages dgwarp needs to build, test and run.
 # Idempotent: prints nothing and touches nothing when everything is present.
+# `install-deps.sh fuzz` also installs what scripts/fuzz.sh needs (clang,
+# libFuzzer and the sanitizer runtimes, LLVM's OpenMP).
 set -euo pipefail
 
 packages=(
@@ -10,6 +12,9 @@ packages=(
   libgmsh-dev libcairo2-dev
   libgtest-dev libbenchmark-dev
 )
+if [ "${1:-}" = fuzz ]; then
+  packages+=(clang libclang-rt-14-dev libomp-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -29,3 +29,12 @@ TEST(PlanFileHash, SeedAndEveryByteMatter) {
         EXPECT_NE(xxh64(t), xxh64(s)) << i;
     }
 }
+
+TEST(PlanFileHash, EmptySpanWithoutData) {
+    // An empty std::vector's data() is null; hashing it must not form null + 8
+    // (undefined behaviour, found by fuzzing a plan with an empty array).
+    const std::span<const std::byte> empty;
+    ASSERT_EQ(empty.data(), nullptr);
+    EXPECT_EQ(hash64(empty), 0xEF46DB3751D8E999ULL);
+    EXPECT_EQ(hash64(empty, 7), xxh64("", 7));
+}

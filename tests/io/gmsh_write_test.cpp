@@ -21,7 +21,11 @@ using namespace dgwarp;
 // that outlive gmsh::finalize; with DGWARP_SANITIZE LeakSanitizer would fail
 // every test that uses the library. Suppress leaks allocated inside libgmsh
 // only (one definition for the whole test binary; ignored without LSan).
-extern "C" const char* __lsan_default_suppressions() { return "leak:libgmsh.so\n"; }
+// Default visibility: the sanitizer build hides everything else, and the
+// sanitizer runtime must find this function.
+extern "C" __attribute__((visibility("default"))) const char* __lsan_default_suppressions() {
+    return "leak:libgmsh.so\n";
+}
 
 namespace {
 

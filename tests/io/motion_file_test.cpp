@@ -245,3 +245,17 @@ TEST(MotionFile, KeyGivenTwiceIsAnError) {
     const ParseError top = parse_error(R"({"markers": {}, "markers": {}})");
     EXPECT_TRUE(contains(top.what(), "key markers twice at markers")) << top.what();
 }
+
+TEST(MotionFile, DeeplyNestedJsonIsAParseError) {
+    // A million '[' once overflowed the stack (the error message printed the
+    // value recursively). Nesting is limited to 100 levels, the top object included.
+    const std::size_t n = 1000000;
+    const ParseError deep = parse_error("{\"markers\": " + std::string(n, '[') + std::string(n, ']') + "}");
+    EXPECT_TRUE(contains(deep.expected(), "arrays and objects nested at most 100 deep")) << deep.what();
+    EXPECT_EQ(deep.found().rfind("deeper nesting at markers[0][0]", 0), 0u) << deep.what();
+    const auto with_comment = [](std::size_t levels) {
+        return R"({"markers": {"a": "fixed"}, "comment": )" + std::string(levels, '[') + std::string(levels, ']') + "}";
+    };
+    EXPECT_EQ(parse(with_comment(99)).frames.size(), 1u);
+    EXPECT_TRUE(contains(parse_error(with_comment(100)).expected(), "nested at most 100 deep"));
+}

@@ -65,12 +65,16 @@ std::uint64_t hash64(std::span<const std::byte> bytes, std::uint64_t seed) {
         h = seed + prime5;
     }
     h += static_cast<std::uint64_t>(bytes.size());
-    for (; p + 8 <= end; p += 8) h = std::rotl(h ^ round(0, read64(p)), 27) * prime1 + prime4;
-    if (p + 4 <= end) {
+    // Counted, not `p + 8 <= end`: for an empty span p is null, and forming
+    // null + 8 is undefined behaviour even if never dereferenced.
+    std::size_t left = static_cast<std::size_t>(end - p);
+    for (; left >= 8; p += 8, left -= 8) h = std::rotl(h ^ round(0, read64(p)), 27) * prime1 + prime4;
+    if (left >= 4) {
         h = std::rotl(h ^ (static_cast<std::uint64_t>(read32(p)) * prime1), 23) * prime2 + prime3;
         p += 4;
+        left -= 4;
     }
-    for (; p < end; ++p) h = std::rotl(h ^ (static_cast<std::uint64_t>(*p) * prime5), 11) * prime1;
+    for (; left > 0; ++p, --left) h = std::rotl(h ^ (static_cast<std::uint64_t>(*p) * prime5), 11) * prime1;
     h ^= h >> 33;
     h *= prime2;
     h ^= h >> 29;

@@ -21,7 +21,13 @@ std::size_t line_of_byte(const std::string& text, std::size_t byte) {
     return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
 }
 
-/// Tracks where the parser is, to name the path of a repeated key.
+/// Deepest nesting of arrays and objects accepted. Input files need a handful
+/// of levels; the limit keeps a hostile file (a million '[') from exhausting
+/// the stack in code that walks the tree recursively (dump, comparisons).
+constexpr std::size_t max_json_depth = 100;
+
+/// Tracks where the parser is, to name the path of a repeated key, and
+/// refuses nesting deeper than max_json_depth.
 struct KeyTracker {
     struct Level {
         bool array = false;
@@ -43,11 +49,22 @@ struct KeyTracker {
     void element_done() {
         if (!stack.empty() && stack.back().array) ++stack.back().index;
     }
+    void check_depth() const {
+        if (stack.size() > max_json_depth)
+            throw ParseError(file, 0, "arrays and objects nested at most " + std::to_string(max_json_depth) + " deep",
+                             "deeper nesting at " + shorten(path()));
+    }
     bool operator()(int, nlohmann::detail::parse_event_t event, Json& parsed) {
         using E = nlohmann::detail::parse_event_t;
         switch (event) {
-            case E::object_start: stack.push_back({}); break;
-            case E::array_start: stack.push_back(Level{true, 0, {}, {}}); break;
+            case E::object_start:
+                stack.push_back({});
+                check_depth();
+                break;
+            case E::array_start:
+                stack.push_back(Level{true, 0, {}, {}});
+                check_depth();
+                break;
             case E::key: {
                 Level& top = stack.back();
                 top.key = parsed.get<std::string>();

@@ -201,7 +201,8 @@ TimeSteps MotionParser::parse_time(const Json& value, const JsonPlace& at) {
     time.time_step = finite_number(require_field(value, at, "time_step", "in seconds, > 0"), at.key("time_step"));
     if (time.time_step <= 0) json_fail(at.key("time_step"), "a time step > 0", value["time_step"]);
     time.steps = integer(require_field(value, at, "steps", "the number of frames, >= 1"), at.key("steps"));
-    if (time.steps < 1) json_fail(at.key("steps"), "a number of steps >= 1", value["steps"]);
+    if (time.steps < 1 || time.steps > max_time_steps)
+        json_fail(at.key("steps"), "a number of steps from 1 to " + std::to_string(max_time_steps), value["steps"]);
     return time;
 }
 

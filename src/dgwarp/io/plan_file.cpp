@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include "dgwarp/core/error.hpp"
@@ -129,16 +130,20 @@ void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) 
     });
 }
 
-DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path) {
-    std::error_code ec;
-    const std::uint64_t file_size = std::filesystem::file_size(path, ec);
-    if (ec) throw IoError(path.string(), "cannot read plan file: " + ec.message());
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), "cannot open plan file for reading");
-    auto read = [&](void* to, std::size_t n, std::uint64_t offset) {
-        if (!in.read(static_cast<char*>(to), static_cast<std::streamsize>(n)))
-            throw IoError(path.string(), "read failed at byte offset " + std::to_string(offset));
-    };
+namespace {
+
+/// Where a plan is read from: a file or bytes in memory. `read` copies n bytes
+/// at `offset` (always the next unread byte) or throws IoError.
+struct PlanSource {
+    std::string name;
+    std::uint64_t size = 0;
+    std::function<void(void* to, std::size_t n, std::uint64_t offset)> read;
+};
+
+DgIdwPlan load_plan(const PlanSource& source) {
+    const std::filesystem::path path = source.name;  // names the plan in errors
+    const std::uint64_t file_size = source.size;
+    const auto& read = source.read;
 
     // Header.
     if (file_size < header_bytes)
@@ -249,6 +254,32 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path) {
     plan.stats.shared_vertex_count = h.shared_vertex_count;
     plan.stats.graph_vertex_count = h.graph_vertex_count;
     return plan;
+}
+
+}  // namespace
+
+DgIdwPlan load_dg_idw_plan_bytes(std::span<const std::byte> bytes, const std::string& name) {
+    const PlanSource source{name, bytes.size(), [&](void* to, std::size_t n, std::uint64_t offset) {
+                                // load_plan checks sizes against `size` first; a short read is a bug.
+                                if (offset > bytes.size() || n > bytes.size() - offset)
+                                    throw IoError(name, "read past the end at byte offset " + std::to_string(offset));
+                                if (n > 0) std::memcpy(to, bytes.data() + offset, n);  // `to` may be null when n == 0
+                            }};
+    return load_plan(source);
+}
+
+DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path) {
+    std::error_code ec;
+    const std::uint64_t file_size = std::filesystem::file_size(path, ec);
+    if (ec) throw IoError(path.string(), "cannot read plan file: " + ec.message());
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path.string(), "cannot open plan file for reading");
+    // Arrays are read straight into the plan's vectors: no copy of the whole file.
+    const PlanSource source{path.string(), file_size, [&](void* to, std::size_t n, std::uint64_t offset) {
+                                if (!in.read(static_cast<char*>(to), static_cast<std::streamsize>(n)))
+                                    throw IoError(path.string(), "read failed at byte offset " + std::to_string(offset));
+                            }};
+    return load_plan(source);
 }
 
 DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path, std::span<const double> points,

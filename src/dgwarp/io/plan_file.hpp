@@ -12,8 +12,10 @@
 //            node_coefficients f64 (DgIdwPlan's fields);
 //   trailer: u64 checksum: hash64 (XXH64) chained over the header and then
 //            each array (each part hashed with the previous part's hash as seed).
+#include <cstddef>
 #include <filesystem>
 #include <span>
+#include <string>
 
 #include "dgwarp/methods/dg_idw.hpp"
 
@@ -29,6 +31,10 @@ void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan);
 /// checked against the file size before anything is allocated. Timings in
 /// the loaded plan's stats are 0.
 DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path);
+
+/// The same, from the bytes of a plan file in memory (a whole file: header,
+/// arrays, checksum); `name` names it in error messages.
+DgIdwPlan load_dg_idw_plan_bytes(std::span<const std::byte> bytes, const std::string& name);
 
 /// load_dg_idw_plan, then check_plan_fits: also throws MeshError when the plan
 /// was made for another mesh (points: num_points × dim original coordinates)

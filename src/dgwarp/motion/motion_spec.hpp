@@ -100,8 +100,14 @@ struct MotionFrame {
 /// k = 0 … steps-1.
 struct TimeSteps {
     double time_step = 0;    // > 0
-    std::int64_t steps = 1;  // >= 1
+    std::int64_t steps = 1;  // 1 ... max_time_steps
 };
+
+/// The most time steps a motion file may ask for. Each step is a deformation
+/// and an output file, so more is a mistake (a time_step given as steps, a
+/// damaged file), not a run to start: 10^12 steps would loop for ever and
+/// grow the per-frame report without bound.
+inline constexpr std::int64_t max_time_steps = 1'000'000;
 
 /// What a boundary node on markers with different motions does (docs/MOTION.md).
 enum class SharedNodeRule {

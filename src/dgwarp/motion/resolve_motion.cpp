@@ -44,7 +44,9 @@ std::string point_text(std::span<const double> p) {
 
 void check_marker_names(const Mesh& mesh, const MotionSpec& spec) {
     for (std::size_t f = 0; f < spec.frames.size(); ++f)
-        for (const auto& [name, motion] : spec.frames[f].markers) {
+        for (const auto& entry : spec.frames[f].markers) {
+            // Not a structured binding: clang before 16 cannot capture one in a lambda.
+            const std::string& name = entry.first;
             const bool known = std::any_of(mesh.markers.begin(), mesh.markers.end(),
                                            [&](const Marker& m) { return m.name == name; });
             if (known) continue;

@@ -1,0 +1,151 @@
+#include "fuzz_checks.hpp"
+
+#include <stdlib.h>
+
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/hash.hpp"
+#include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/motion_file.hpp"
+#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/io/su2.hpp"
+
+namespace dgwarp::fuzz {
+
+namespace {
+
+std::string as_text(std::span<const std::uint8_t> data) {
+    return {reinterpret_cast<const char*>(data.data()), data.size()};
+}
+
+void require(bool ok, const char* what) {
+    if (!ok) throw PropertyViolation(what);
+}
+
+/// An empty folder for the lifetime of the process.
+class EmptyFolder {
+public:
+    EmptyFolder() {
+        std::string pattern = (std::filesystem::temp_directory_path() / "dgwarp-fuzz-XXXXXX").string();
+        if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+        path_ = pattern;
+    }
+    ~EmptyFolder() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
+bool has_string_with_slash(const nlohmann::json& j) {
+    if (j.is_string()) return j.get_ref<const std::string&>().find('/') != std::string::npos;
+    if (j.is_object())
+        for (const auto& [key, value] : j.items())
+            if (key.find('/') != std::string::npos || has_string_with_slash(value)) return true;
+    if (j.is_array())
+        for (const auto& value : j)
+            if (has_string_with_slash(value)) return true;
+    return false;
+}
+
+// Plan file layout (plan_file.hpp): 136-byte header whose last 64 bytes are
+// the 8 array counts, the arrays, an 8-byte checksum.
+constexpr std::size_t plan_header_bytes = 136;
+constexpr std::size_t plan_counts_at = plan_header_bytes - 8 * 8;
+constexpr std::array<std::size_t, 8> plan_element_bytes = {4, 1, 4, 4, 4, 4, 4, 8};
+
+}  // namespace
+
+void check_su2(std::span<const std::uint8_t> data) {
+    const std::string text = as_text(data);
+    const Mesh mesh = read_su2_text("fuzz.su2", text);
+    std::ostringstream out;
+    try {
+        write_su2(out, mesh);
+    } catch (const Error&) {
+        return;  // a mesh the writer cannot store (e.g. a marker name)
+    }
+    require(read_su2_text("fuzz-written.su2", out.str()) == mesh, "SU2 write then read changed the mesh");
+    if (text.find("NZONE") != std::string::npos) read_su2_text("fuzz.su2", text, 2);
+}
+
+void check_gmsh(std::span<const std::uint8_t> data) {
+    const Mesh mesh = read_gmsh_text("fuzz.msh", as_text(data));
+    for (int version : {41, 22}) {
+        std::ostringstream out;
+        try {
+            write_gmsh(out, mesh, version);
+        } catch (const Error&) {
+            return;  // a mesh the writer cannot store (e.g. a marker name with a quote)
+        }
+        require(read_gmsh_text("fuzz-written.msh", out.str()) == mesh, "Gmsh write then read changed the mesh");
+    }
+}
+
+void check_motion(std::span<const std::uint8_t> data) {
+    static const EmptyFolder base;
+    const std::string text = as_text(data);
+    const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
+    if (!parsed.is_discarded() && has_string_with_slash(parsed)) return;
+    const MotionSpec spec = parse_motion_file(text, "fuzz.json", base.path());
+    const std::size_t frames = frame_count(spec);
+    require(frames >= 1 && frames <= static_cast<std::size_t>(max_time_steps), "frame count out of range");
+    for (const std::size_t k : {std::size_t{0}, frames - 1}) {
+        const MotionFrame& frame = frame_spec(spec, k);
+        for (const auto& [name, motion] : frame.markers)
+            if (const auto* periodic = std::get_if<PeriodicMotion>(&motion))
+                periodic_motion_at(*periodic, frame_time(spec, k));
+    }
+}
+
+std::vector<std::byte> with_valid_plan_checksum(std::span<const std::byte> bytes) {
+    std::vector<std::byte> fixed(bytes.begin(), bytes.end());
+    if (bytes.size() < plan_header_bytes + 8) return fixed;
+    std::uint64_t total = plan_header_bytes + 8;
+    std::array<std::uint64_t, 8> sizes{};
+    for (std::size_t a = 0; a < 8; ++a) {
+        std::uint64_t count;
+        std::memcpy(&count, bytes.data() + plan_counts_at + 8 * a, 8);
+        if (count > bytes.size()) return fixed;  // cannot fit: the loader refuses it anyway
+        sizes[a] = count * plan_element_bytes[a];
+        total += sizes[a];
+    }
+    if (total != bytes.size()) return fixed;
+    std::uint64_t checksum = hash64(bytes.first(plan_header_bytes));
+    std::size_t at = plan_header_bytes;
+    for (const std::uint64_t size : sizes) {
+        checksum = hash64(bytes.subspan(at, size), checksum);
+        at += size;
+    }
+    std::memcpy(fixed.data() + at, &checksum, 8);
+    return fixed;
+}
+
+void check_plan(std::span<const std::uint8_t> data) {
+    const auto bytes = std::as_bytes(data);
+    DgIdwPlan plan;
+    try {
+        plan = load_dg_idw_plan_bytes(bytes, "fuzz.plan");
+    } catch (const Error&) {
+        plan = load_dg_idw_plan_bytes(with_valid_plan_checksum(bytes), "fuzz-checksum-fixed.plan");
+    }
+    // One step over the whole plan: every index it holds is followed.
+    const std::vector<double> points(static_cast<std::size_t>(plan.num_points() * plan.dim), 0.5);
+    BoundaryMotion motion(plan.boundary_nodes.size());
+    for (std::size_t b = 0; b < motion.size(); ++b)
+        if (plan.boundary_moving[b]) motion[b] = {{0.1, 0.2, 0.3}, {0.0, 0.0, 0.1}, {0.5, 0.5, 0.5}};
+    std::vector<double> out(points.size());
+    deform_dg_idw(plan, points, motion, out);
+}
+
+}  // namespace dgwarp::fuzz
