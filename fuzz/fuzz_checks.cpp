@@ -58,11 +58,6 @@ bool has_string_with_slash(const nlohmann::json& j) {
     return false;
 }
 
-// Plan file layout (plan_file.hpp): 136-byte header whose last 64 bytes are
-// the 8 array counts, the arrays, an 8-byte checksum.
-constexpr std::size_t plan_header_bytes = 136;
-constexpr std::size_t plan_counts_at = plan_header_bytes - 8 * 8;
-constexpr std::array<std::size_t, 8> plan_element_bytes = {4, 1, 4, 4, 4, 4, 4, 8};
 
 }  // namespace
 
@@ -109,26 +104,7 @@ void check_motion(std::span<const std::uint8_t> data) {
 }
 
 std::vector<std::byte> with_valid_plan_checksum(std::span<const std::byte> bytes) {
-    std::vector<std::byte> fixed(bytes.begin(), bytes.end());
-    if (bytes.size() < plan_header_bytes + 8) return fixed;
-    std::uint64_t total = plan_header_bytes + 8;
-    std::array<std::uint64_t, 8> sizes{};
-    for (std::size_t a = 0; a < 8; ++a) {
-        std::uint64_t count;
-        std::memcpy(&count, bytes.data() + plan_counts_at + 8 * a, 8);
-        if (count > bytes.size()) return fixed;  // cannot fit: the loader refuses it anyway
-        sizes[a] = count * plan_element_bytes[a];
-        total += sizes[a];
-    }
-    if (total != bytes.size()) return fixed;
-    std::uint64_t checksum = hash64(bytes.first(plan_header_bytes));
-    std::size_t at = plan_header_bytes;
-    for (const std::uint64_t size : sizes) {
-        checksum = hash64(bytes.subspan(at, size), checksum);
-        at += size;
-    }
-    std::memcpy(fixed.data() + at, &checksum, 8);
-    return fixed;
+    return with_recomputed_plan_checksum(bytes);
 }
 
 void check_plan(std::span<const std::uint8_t> data) {

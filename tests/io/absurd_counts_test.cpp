@@ -119,8 +119,8 @@ std::vector<std::byte> with_field(std::vector<std::byte> bytes, std::size_t offs
     return bytes;
 }
 
-// Plan header offsets (plan_file.hpp): num_points at 16, the 8 array counts from 72.
-constexpr std::size_t num_points_at = 16, counts_at = 72;
+// Plan header offsets (plan_file.cpp): num_points at 16, the 7 array counts from 80.
+constexpr std::size_t num_points_at = 16, counts_at = 80;
 
 }  // namespace
 
@@ -144,7 +144,7 @@ TEST(AbsurdCounts, HeaderClaimingTenToTheTwelveNodesFailsInLittleMemory) {
     expect_parse_error_in_little_memory(
         [&] { load_dg_idw_plan_bytes(with_field<std::int64_t>(plan, num_points_at, 1'000'000'000'000), "huge.plan"); },
         "plan num_points 10^12");
-    for (int array = 0; array < 8; ++array)
+    for (int array = 0; array < 7; ++array)
         expect_parse_error_in_little_memory(
             [&] {
                 load_dg_idw_plan_bytes(with_field<std::uint64_t>(plan, counts_at + 8 * array, 1'000'000'000'000),

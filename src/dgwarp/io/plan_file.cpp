@@ -289,4 +289,31 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path, std::span<const do
     return plan;
 }
 
+std::vector<std::byte> with_recomputed_plan_checksum(std::span<const std::byte> bytes) {
+    std::vector<std::byte> fixed(bytes.begin(), bytes.end());
+    if (bytes.size() < header_bytes + 8) return fixed;
+    std::array<std::uint64_t, num_arrays> sizes{};
+    std::uint64_t total = header_bytes + 8;
+    bool fits = true;
+    DgIdwPlan element_types;
+    int a = 0;
+    visit_arrays(element_types, [&](const auto& v) {
+        std::uint64_t count;
+        std::memcpy(&count, bytes.data() + header_bytes - 8 * (num_arrays - a), 8);
+        fits = fits && count <= bytes.size();
+        sizes[a] = count * sizeof(v[0]);
+        total += sizes[a];
+        ++a;
+    });
+    if (!fits || total != bytes.size()) return fixed;
+    std::uint64_t checksum = hash64(bytes.first(header_bytes));
+    std::size_t at = header_bytes;
+    for (const std::uint64_t size : sizes) {
+        checksum = hash64(bytes.subspan(at, size), checksum);
+        at += size;
+    }
+    std::memcpy(fixed.data() + at, &checksum, 8);
+    return fixed;
+}
+
 }  // namespace dgwarp

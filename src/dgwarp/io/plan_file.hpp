@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "dgwarp/methods/dg_idw.hpp"
 
@@ -35,6 +36,12 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path);
 /// The same, from the bytes of a plan file in memory (a whole file: header,
 /// arrays, checksum); `name` names it in error messages.
 DgIdwPlan load_dg_idw_plan_bytes(std::span<const std::byte> bytes, const std::string& name);
+
+/// `bytes` (a plan file image) with its trailing checksum recomputed from its
+/// content, so that tests and fuzzers can reach the checks behind the
+/// checksum. Returned unchanged when the sizes in its header do not add up to
+/// its length.
+std::vector<std::byte> with_recomputed_plan_checksum(std::span<const std::byte> bytes);
 
 /// load_dg_idw_plan, then check_plan_fits: also throws MeshError when the plan
 /// was made for another mesh (points: num_points × dim original coordinates)
