@@ -49,7 +49,7 @@ demo: build
 # The sanitizer suite alone.
 test-sanitize: build-sanitize
 	@echo "Sanitizer suite (ASan + UBSan, $(ASAN_DIR)/):"
-	@cd $(ASAN_DIR) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS) -LE no_sanitizer
+	@cd $(ASAN_DIR) && $(SANITIZER_ENV) ctest --output-on-failure -j $(JOBS)
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -75,11 +75,12 @@ run_one() {
 
 summary() {
   local t=$1 status=$2 log="$build/fuzz-$t.log"
-  local execs corpus
+  local execs done_line
   execs=$(grep -E '^stat::number_of_executed_units:' "$log" | awk '{print $2}' | tail -1)
-  corpus=$(find "$build/corpus/$t" -type f | wc -l)
+  # libFuzzer's last status line: "#N DONE cov: C ft: F corp: units/size ..."
+  done_line=$(grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -1 | sed -E 's/.*(cov: [0-9]+).*(corp: [0-9]+\/[0-9]+[a-zA-Z]*).*/\1, \2/')
   if [ "$status" -eq 0 ]; then
-    echo "fuzz.sh: $t: ok, ${seconds} s, ${execs:-?} executions, corpus $corpus inputs"
+    echo "fuzz.sh: $t: ok, ${seconds} s, ${execs:-?} executions, ${done_line:-no summary}"
     return 0
   fi
   echo "fuzz.sh: $t: FAILED (status $status) after ${execs:-?} executions; log: $log"

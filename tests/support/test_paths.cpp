@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace dgwarp::test {
@@ -29,7 +30,11 @@ std::filesystem::path scratch_dir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "dgwarp";
     std::replace(name.begin(), name.end(), '/', '_');
-    auto dir = std::filesystem::temp_directory_path() / ("dgwarp-test-" + name);
+    // Tagged with the build folder (from the CLI's path), so suites of two
+    // builds or two clones running at once never share (and remove) a folder.
+    char tag[17];
+    std::snprintf(tag, sizeof tag, "%016zx", std::hash<std::string>{}(cli_path().string()));
+    auto dir = std::filesystem::temp_directory_path() / ("dgwarp-test-" + std::string(tag) + "-" + name);
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -14,7 +14,8 @@ std::filesystem::path su2_meshes_dir();
 std::vector<std::filesystem::path> su2_meshes();
 /// The dgwarp executable built with the tests.
 std::filesystem::path cli_path();
-/// A fresh empty folder under the system temp dir, unique to the current test.
+/// A fresh empty folder under the system temp dir, unique to the current test
+/// and build folder.
 std::filesystem::path scratch_dir();
 
 /// Result of running a command: exit code and what it printed.
