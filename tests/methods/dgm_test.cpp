@@ -15,6 +15,8 @@
 using namespace dgwarp;
 using dgwarp::test::box_in_box;
 using dgwarp::test::BoxInBox;
+using dgwarp::test::moved;
+using dgwarp::test::random_motion;
 
 namespace {
 
@@ -26,27 +28,7 @@ std::vector<double> deform(const DgmPlan& plan, const std::vector<double>& point
     return out;
 }
 
-std::vector<double> moved(int dim, const std::vector<double>& points, std::size_t node, const NodeMotion& m) {
-    std::vector<double> y(static_cast<std::size_t>(dim));
-    apply_motion(m, std::span<const double>(points.data() + node * dim, dim), y);
-    return y;
-}
 
-// A small per-node motion of the moving nodes (every component varying), zero for static ones.
-BoundaryMotion random_motion(const BoxInBox& m, std::uint32_t seed, double amount = 0.01) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-amount, amount);
-    BoundaryMotion motion(m.boundary.nodes.size());
-    for (std::size_t b = 0; b < motion.size(); ++b) {
-        if (!m.boundary.moving[b]) continue;
-        for (int d = 0; d < 3; ++d) {
-            motion[b].translation[d] = u(rng);
-            motion[b].rotation[d] = m.dim == 3 || d == 2 ? 4 * u(rng) : 0;
-            motion[b].center[d] = m.dim == 3 || d < 2 ? m.inner_center[d] + u(rng) : 0;
-        }
-    }
-    return motion;
-}
 
 BoxInBox all_moving(BoxInBox m) {
     std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), std::uint8_t{1});
@@ -158,7 +140,7 @@ TEST(DgmDeform, BoundaryNodesMoveExactlyAsApplyMotionSays) {
     for (int dim : {2, 3}) {
         const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9);
         const DgmPlan plan = prepare_dgm(dim, m.points, m.boundary);
-        const BoundaryMotion motion = random_motion(m, 11);
+        const BoundaryMotion motion = random_motion(m, 11, 0.01);
         const auto out = deform(plan, m.points, motion);
         for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
             const auto n = static_cast<std::size_t>(m.boundary.nodes[b]);
@@ -256,7 +238,7 @@ TEST(DgmDeform, OneAndTwoThreadsGiveTheSameBits) {
 TEST(DgmDeform, DeformingInPlaceEqualsDeformingIntoAnotherArray) {
     const BoxInBox m = box_in_box(3, 9);
     const DgmPlan plan = prepare_dgm(3, m.points, m.boundary);
-    const BoundaryMotion motion = random_motion(m, 13);
+    const BoundaryMotion motion = random_motion(m, 13, 0.01);
     const auto out = deform(plan, m.points, motion);
     std::vector<double> in_place = m.points;
     deform_dgm(plan, in_place, motion, in_place);

@@ -13,6 +13,8 @@
 using namespace dgwarp;
 using dgwarp::test::box_in_box;
 using dgwarp::test::BoxInBox;
+using dgwarp::test::moved;
+using dgwarp::test::random_motion;
 
 namespace {
 
@@ -23,27 +25,7 @@ std::vector<double> deform(const IdwPlan& plan, const std::vector<double>& point
     return out;
 }
 
-std::vector<double> moved(int dim, const std::vector<double>& points, std::size_t node, const NodeMotion& m) {
-    std::vector<double> y(static_cast<std::size_t>(dim));
-    apply_motion(m, std::span<const double>(points.data() + node * dim, dim), y);
-    return y;
-}
 
-// Per-node motion of the moving nodes (translation, rotation, centre all varying), zero for static ones.
-BoundaryMotion random_motion(const BoxInBox& m, std::uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-0.05, 0.05);
-    BoundaryMotion motion(m.boundary.nodes.size());
-    for (std::size_t b = 0; b < motion.size(); ++b) {
-        if (!m.boundary.moving[b]) continue;
-        for (int d = 0; d < 3; ++d) {
-            motion[b].translation[d] = m.dim == 3 || d < 2 ? u(rng) : 0;
-            motion[b].rotation[d] = m.dim == 3 || d == 2 ? 4 * u(rng) : 0;
-            motion[b].center[d] = m.dim == 3 || d < 2 ? m.inner_center[d] + u(rng) : 0;
-        }
-    }
-    return motion;
-}
 
 // Eq. 2.1 with plain loops and std::pow, the centre as the moving nodes'
 // weighted average, and the node moved by apply_motion (Rodrigues with sin/cos).

@@ -13,6 +13,8 @@
 using namespace dgwarp;
 using dgwarp::test::box_in_box;
 using dgwarp::test::BoxInBox;
+using dgwarp::test::moved;
+using dgwarp::test::random_motion;
 
 namespace {
 
@@ -24,11 +26,6 @@ std::vector<double> deform(const RbfPlan& plan, const std::vector<double>& point
     return out;
 }
 
-std::vector<double> moved(int dim, const std::vector<double>& points, std::size_t node, const NodeMotion& m) {
-    std::vector<double> y(static_cast<std::size_t>(dim));
-    apply_motion(m, std::span<const double>(points.data() + node * dim, dim), y);
-    return y;
-}
 
 // Per-node motion of the moving nodes: a smooth non-rigid field plus a rotation about the inner centre.
 BoundaryMotion wavy_motion(const BoxInBox& m, double amount = 0.05) {

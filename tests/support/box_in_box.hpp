@@ -4,6 +4,7 @@
 // box are static boundary nodes, nodes on the inner box moving ones. No cells:
 // the methods under test only need points and a boundary set.
 #include <random>
+#include <span>
 #include <vector>
 
 #include "dgwarp/motion/node_motion.hpp"
@@ -60,6 +61,31 @@ inline BoxInBox jittered(BoxInBox m, double amount, unsigned seed) {
     std::uniform_real_distribution<double> u(-amount, amount);
     for (double& x : m.points) x += u(rng);
     return m;
+}
+
+/// Where node `node` of `points` (num_points × dim) goes under `m` (apply_motion).
+inline std::vector<double> moved(int dim, const std::vector<double>& points, std::size_t node, const NodeMotion& m) {
+    std::vector<double> y(static_cast<std::size_t>(dim));
+    apply_motion(m, std::span<const double>(points.data() + node * dim, dim), y);
+    return y;
+}
+
+/// A per-node motion of the moving nodes of `m` (translation, rotation and
+/// centre all varying by up to ±amount, rotations by ±4·amount), zero for the
+/// static ones; deterministic for a seed.
+inline BoundaryMotion random_motion(const BoxInBox& m, std::uint32_t seed, double amount = 0.05) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-amount, amount);
+    BoundaryMotion motion(m.boundary.nodes.size());
+    for (std::size_t b = 0; b < motion.size(); ++b) {
+        if (!m.boundary.moving[b]) continue;
+        for (int d = 0; d < 3; ++d) {
+            motion[b].translation[d] = u(rng);
+            motion[b].rotation[d] = m.dim == 3 || d == 2 ? 4 * u(rng) : 0;
+            motion[b].center[d] = m.dim == 3 || d < 2 ? m.inner_center[d] + u(rng) : 0;
+        }
+    }
+    return motion;
 }
 
 }  // namespace dgwarp::test
