@@ -33,6 +33,7 @@ std::optional<PaperEntry> paper_entry(const std::string& case_name, int size, co
 /// What one method did on one case and motion.
 struct MethodResult {
     Method method = Method::dg_idw;
+    std::string label;          // the method's name, or a variant ("dg-idw L=auto"): no paper figures
     std::string status = "ok";  // "ok", "skipped: why", "failed: why"
     bool ran = false;           // quality and times are set
     double prepare_seconds = 0, step_seconds = 0;

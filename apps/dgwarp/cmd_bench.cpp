@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -146,18 +147,28 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
     row.original = summarize_quality(original);
     const std::string stem = name + "-" + std::to_string(size) + "-" + cm.name;
     Mesh deformed = mesh;
-    for (Method method : all_methods) {
+    struct Variant {
+        Method method;
+        std::string label;
+        MethodOptions options;
+    };
+    std::vector<Variant> variants;
+    for (Method m : all_methods) variants.push_back({m, std::string(method_name(m)), {}});
+    variants.push_back({Method::dg_idw, "dg-idw L=auto", {}});
+    variants.back().options.dg_idw.length_scale = 0;
+    for (const Variant& v : variants) {
+        const Method method = v.method;
         MethodResult r;
         r.method = method;
+        r.label = v.label;
         const std::string skip = skip_reason(method, a, mesh.num_points(), row.boundary_nodes, mesh.dim);
         if (!skip.empty()) {
             r.status = skip;
             row.methods.push_back(r);
             continue;
         }
-        std::cerr << "bench: " << name << " " << size << " " << cm.name << " " << method_name(method) << " ..."
-                  << std::endl;
-        const MethodOptions options;
+        std::cerr << "bench: " << name << " " << size << " " << cm.name << " " << v.label << " ..." << std::endl;
+        const MethodOptions& options = v.options;
         try {
             Stopwatch sw;
             const Plan plan = prepare(method, mesh.dim, mesh.points, b.boundary, options);
@@ -169,8 +180,10 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             r.ran = true;
             if (step.substeps > 1) r.status = "ok (" + std::to_string(step.substeps) + " DGM sub-steps)";
             if (r.quality.inverted > 0) r.status = "invalid: " + std::to_string(r.quality.inverted) + " inverted";
-            write_pictures(a, row, deformed, q, stem + "-" + std::string(method_name(method)),
-                           name + ", " + cm.name + ", " + std::string(method_name(method)));
+            std::string file = v.label;
+            std::replace(file.begin(), file.end(), ' ', '-');
+            std::replace(file.begin(), file.end(), '=', '-');
+            write_pictures(a, row, deformed, q, stem + "-" + file, name + ", " + cm.name + ", " + v.label);
         } catch (const Error& e) {
             r.status = std::string("failed: ") + e.what();
         }
