@@ -99,7 +99,8 @@ std::string skip_reason(Method method, const BenchArgs& a, std::size_t nodes, st
     return "";
 }
 
-void write_pictures(const BenchArgs& a, BenchRow& row, const Mesh& mesh, std::span<const double> quality,
+void write_pictures(const BenchArgs& a, BenchRow& row, const Mesh& original, const Mesh& mesh,
+                    std::span<const double> quality,
                     const std::string& stem, const std::string& caption) {
     if (a.pictures.empty() || mesh.dim != 2) return;
     std::filesystem::create_directories(a.pictures);
@@ -114,15 +115,20 @@ void write_pictures(const BenchArgs& a, BenchRow& row, const Mesh& mesh, std::sp
     const auto whole = std::filesystem::absolute(a.pictures) / (stem + ".png");
     write_mesh_picture(whole, mesh, quality, o);
     row.pictures.push_back(rel(whole));
-    // Close-up of the moving body (the NACA trailing edge: its last 5% of chord).
+    // Close-up: of the moving body; for the NACA0012, of its trailing edge and
+    // the sliver behind it (the trailing edge is the original mesh's airfoil
+    // node of largest x: node ids do not change).
     const Marker& body = mesh.markers.front();
     std::vector<NodeId> nodes = marker_nodes(body);
     if (row.case_name == "naca0012") {
-        double x_max = -1e300;
-        for (NodeId n : nodes) x_max = std::max(x_max, mesh.points[2 * n]);
-        std::erase_if(nodes, [&](NodeId n) { return mesh.points[2 * n] < x_max - 0.05; });
+        NodeId te = nodes.front();
+        for (NodeId n : nodes)
+            if (original.points[2 * n] > original.points[2 * te]) te = n;
+        const double x = mesh.points[2 * te], y = mesh.points[2 * te + 1];
+        o.window = std::array<double, 4>{x - 0.06, x + 0.06, y - 0.045, y + 0.045};
+    } else {
+        o.window = window_around(mesh, nodes, 1.6, 4.0 / 3.0);
     }
-    o.window = window_around(mesh, nodes, row.case_name == "naca0012" ? 1.5 : 1.6, 4.0 / 3.0);
     o.title = caption + " (close-up)";
     const auto close = std::filesystem::absolute(a.pictures) / (stem + "-close.png");
     write_mesh_picture(close, mesh, quality, o);
@@ -183,7 +189,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             std::string file = v.label;
             std::replace(file.begin(), file.end(), ' ', '-');
             std::replace(file.begin(), file.end(), '=', '-');
-            write_pictures(a, row, deformed, q, stem + "-" + file, name + ", " + cm.name + ", " + v.label);
+            write_pictures(a, row, mesh, deformed, q, stem + "-" + file, name + ", " + cm.name + ", " + v.label);
         } catch (const Error& e) {
             r.status = std::string("failed: ") + e.what();
         }
@@ -228,7 +234,7 @@ void run_bench(const BenchArgs& a) {
             BenchRow original;
             original.case_name = j.name;
             const auto q = cell_qualities(*j.mesh, cell_orientations(*j.mesh));
-            write_pictures(a, original, *j.mesh, q, j.name + "-original", j.name + ", original");
+            write_pictures(a, original, *j.mesh, *j.mesh, q, j.name + "-original", j.name + ", original");
             original_pictures = original.pictures;
         }
         for (const CaseMotion& cm : case_motions(j.name, *j.mesh)) {
