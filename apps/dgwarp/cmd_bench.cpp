@@ -3,7 +3,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -105,16 +104,20 @@ void write_pictures(const BenchArgs& a, BenchRow& row, const Mesh& original, con
     if (a.pictures.empty() || mesh.dim != 2) return;
     std::filesystem::create_directories(a.pictures);
     PictureOptions o;
-    o.width = 1200;
-    o.height = 900;
+    o.width = 800;
+    o.height = 600;
     o.title = caption;
     const auto rel = [&](const std::filesystem::path& p) {
         return a.markdown.empty() ? p.string()
                                   : std::filesystem::relative(p, std::filesystem::absolute(a.markdown).parent_path()).string();
     };
-    const auto whole = std::filesystem::absolute(a.pictures) / (stem + ".png");
-    write_mesh_picture(whole, mesh, quality, o);
-    row.pictures.push_back(rel(whole));
+    // The whole mesh for the original only; deformed meshes as close-ups (as
+    // the paper's figures), which keeps the pictures few enough to commit.
+    if (&original == &mesh) {
+        const auto whole = std::filesystem::absolute(a.pictures) / (stem + ".png");
+        write_mesh_picture(whole, mesh, quality, o);
+        row.pictures.push_back(rel(whole));
+    }
     // Close-up: of the moving body; for the NACA0012, of its trailing edge and
     // the sliver behind it (the trailing edge is the original mesh's airfoil
     // node of largest x: node ids do not change).
@@ -186,10 +189,8 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             r.ran = true;
             if (step.substeps > 1) r.status = "ok (" + std::to_string(step.substeps) + " DGM sub-steps)";
             if (r.quality.inverted > 0) r.status = "invalid: " + std::to_string(r.quality.inverted) + " inverted";
-            std::string file = v.label;
-            std::replace(file.begin(), file.end(), ' ', '-');
-            std::replace(file.begin(), file.end(), '=', '-');
-            write_pictures(a, row, mesh, deformed, q, stem + "-" + file, name + ", " + cm.name + ", " + v.label);
+            if (v.label == method_name(method))  // the paper's methods only
+                write_pictures(a, row, mesh, deformed, q, stem + "-" + v.label, name + ", " + cm.name + ", " + v.label);
         } catch (const Error& e) {
             r.status = std::string("failed: ") + e.what();
         }
