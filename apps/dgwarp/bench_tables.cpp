@@ -1,5 +1,6 @@
 #include "bench_tables.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -58,7 +59,7 @@ std::string num(std::optional<double> v, const char* format = "%.3f") {
 
 std::string seconds_text(double s) {
     char b[64];
-    std::snprintf(b, sizeof b, s < 0.01 ? "%.4f" : s < 100 ? "%.3f" : "%.0f", s);
+    std::snprintf(b, sizeof b, s < 0.001 ? "%.1e" : s < 100 ? "%.3f" : "%.0f", s);
     return b;
 }
 
@@ -108,7 +109,9 @@ std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& r
          "as the paper maps in one step). *dg-idw L=auto* is DG-IDW with our automatic length scale (docs/DG-IDW.md), "
          "not the paper's formula: it has no paper column.\n\n";
     for (const BenchRow& r : rows) {
-        s += "## " + title(r) + "\n\n" + r.motion_description + ". Mesh: " + std::to_string(r.nodes) + " nodes, " +
+        std::string description = r.motion_description;
+        if (!description.empty()) description[0] = static_cast<char>(std::toupper(description[0]));
+        s += "## " + title(r) + "\n\n" + description + ". Mesh: " + std::to_string(r.nodes) + " nodes, " +
              std::to_string(r.cells) + " cells, " + std::to_string(r.boundary_nodes) + " boundary nodes (" +
              std::to_string(r.moving_nodes) + " moving).\n\n";
         s += "| method | mean | paper mean | min | paper min | inverted | prepare s | step s | total s | paper CPU s | status |\n";
