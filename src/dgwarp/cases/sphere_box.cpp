@@ -14,8 +14,8 @@ namespace dgwarp {
 
 SphereBoxOptions sphere_box_paper_size(int size) {
     switch (size) {
-        case 0: return {0.0444, 0.55, 0.038, 0.55, 1};
-        case 1: return {0.0444, 0.55, 0.023, 0.55, 1};
+        case 0: return {0.0444, 0.55, 0.0413, 0.55, 1};
+        case 1: return {0.0444, 0.55, 0.025, 0.55, 1};
         case 2: return {0.025, 0.3, 0.028, 0.204, 1};
         default: throw MeshError("squeezed-sphere: size must be 0, 1 or 2, not " + std::to_string(size));
     }
