@@ -1,7 +1,7 @@
 #pragma once
 // The paper's squeezed-sphere case (section 5, Tables 9-10): a unit sphere in
 // a 10 × 10 × 10 box, tetrahedra graded from the sphere outwards, generated
-// with Gmsh's library (HXT).
+// with Gmsh's library (Delaunay 3D, one thread: deterministic, unlike HXT).
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
@@ -16,8 +16,9 @@ struct SphereBoxOptions {
     int threads = 1;  // Gmsh threads; HXT with 2 threads gives a different mesh each run (we checked), with 1 the same
 };
 
-/// The paper's three sizes: 0 ≈ 201,920 nodes / 10,096 boundary nodes,
-/// 1 ≈ 403,840 / 10,096, 2 ≈ 826,080 / 41,304 (our counts are within a few %).
+/// The paper's three sizes (paper → ours, nodes / boundary nodes):
+/// 0: 201,920 / 10,096 → 202,356 / 10,081; 1: 403,840 / 10,096 → 408,435 / 10,118;
+/// 2: 826,080 / 41,304 → 865,529 / 40,845. Throws MeshError for another size.
 SphereBoxOptions sphere_box_paper_size(int size);
 
 /// The sphere-in-box mesh: tetrahedra (positive volume), markers "sphere" and
