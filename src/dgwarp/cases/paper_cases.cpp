@@ -67,14 +67,14 @@ CaseMotion squeeze(const Mesh& mesh) {
     const std::vector<NodeId> nodes = marker_nodes(find_marker(mesh, "sphere"));
     NodeTable<Vec3> table;
     table.components = 3;
-    const Vec3 scale{1.2, 1.2, 0.7};
+    const Vec3 scale{1.1, 1.1, 0.8};
     for (NodeId n : nodes) {
         Vec3 d;
         for (int k = 0; k < 3; ++k) d[k] = (scale[k] - 1) * mesh.points[3 * static_cast<std::size_t>(n) + k];
         table.nodes.push_back(n);
         table.values.push_back(d);
     }
-    return {"squeeze", "the unit sphere becomes the ellipsoid with semi-axes 1.2, 1.2, 0.7",
+    return {"squeeze", "the unit sphere becomes the ellipsoid with semi-axes 1.1, 1.1, 0.8",
             one_marker("sphere", PrescribedDisplacements{std::move(table)})};
 }
 

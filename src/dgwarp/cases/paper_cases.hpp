@@ -45,7 +45,7 @@ struct CaseMotion {
 ///   twisted-bar:     twist: the bar's node at (x, y) turns about (x, 0), its section's centre,
 ///                    by 45°·x / (L/2), L the bar's length (the ends turn ±45°); twist-rotate-45:
 ///                    the twist followed by a 45° rotation about the bar's centre
-///   squeezed-sphere: squeeze: the sphere's node (x, y, z) moves to (1.2x, 1.2y, 0.7z), an ellipsoid
+///   squeezed-sphere: squeeze: the sphere's node (x, y, z) moves to (1.1x, 1.1y, 0.8z), an ellipsoid
 /// Throws Error for an unknown name, MeshError when the mesh lacks the case's markers.
 std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh);
 
