@@ -5,6 +5,7 @@
 // Usage: dgwarp_bench_dg_idw [--generate-only] [case ...]
 //   cases: 200k 400k 826k (default: all); --generate-only: make the cached meshes and stop.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "dgwarp/cases/sphere_box.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/io/plan_file.hpp"
@@ -187,13 +189,14 @@ void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int 
 }  // namespace
 
 int main(int argc, char** argv) {
-    // h_sphere, h_max, growth: chosen to approach the paper's node counts
-    // (201,920 / 403,840 / 826,080 nodes; 10,096 / 10,096 / 41,304 boundary).
-    const std::vector<bench::SphereBoxCase> cases = {
-        {"200k", 0.048, 0.55, 0.033, 0.55},
-        {"400k", 0.048, 0.55, 0.020, 0.55},
-        {"826k", 0.025, 0.3, 0.026, 0.204},
-    };
+    // The library's squeezed-sphere sizes (cases/sphere_box.hpp), chosen to
+    // approach the paper's node counts (201,920 / 403,840 / 826,080 nodes;
+    // 10,096 / 10,096 / 41,304 boundary).
+    std::vector<bench::SphereBoxCase> cases;
+    for (int size = 0; size < 3; ++size) {
+        const SphereBoxOptions o = sphere_box_paper_size(size);
+        cases.push_back({std::array{"200k", "400k", "826k"}[size], o.h_sphere, o.h_max, o.growth, o.h_box});
+    }
     std::vector<std::string> wanted(argv + 1, argv + argc);
     const bool generate_only = std::erase(wanted, "--generate-only") > 0;
     if (wanted.empty())

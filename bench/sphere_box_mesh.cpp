@@ -1,6 +1,7 @@
 #include "sphere_box_mesh.hpp"
 
-#include <gmsh.h>
+#include "dgwarp/cases/sphere_box.hpp"
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,7 +12,6 @@
 #include <fstream>
 #include <stdexcept>
 #include <thread>
-#include <unordered_map>
 
 namespace dgwarp::bench {
 
@@ -19,86 +19,14 @@ namespace {
 
 constexpr char magic[8] = {'D', 'G', 'W', 'S', 'P', 'H', 'M', '1'};
 
-// Runs Gmsh; returns the mesh. Called in a child process.
+// Runs Gmsh (the library's make_sphere_box); returns the mesh. Called in a child process.
 SphereBoxMesh generate(const SphereBoxCase& c) {
     const auto t0 = std::chrono::steady_clock::now();
-    gmsh::initialize();
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.NumThreads", 2);
-    gmsh::option::setNumber("Mesh.Algorithm", 6);     // Frontal-Delaunay surfaces
-    gmsh::option::setNumber("Mesh.Algorithm3D", 10);  // HXT, parallel
-    gmsh::option::setNumber("Mesh.Optimize", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::model::add("sphere_box");
-    const int box = gmsh::model::occ::addBox(-5, -5, -5, 10, 10, 10);
-    const int sphere = gmsh::model::occ::addSphere(0, 0, 0, 1);
-    gmsh::vectorpair out;
-    std::vector<gmsh::vectorpair> map;
-    gmsh::model::occ::cut({{3, box}}, {{3, sphere}}, out, map);
-    gmsh::model::occ::synchronize();
-
-    // Which surfaces are the sphere (its bounding box is within radius 1.01).
-    gmsh::vectorpair surfaces;
-    gmsh::model::getEntities(surfaces, 2);
-    std::vector<double> sphere_surfaces;
-    std::vector<int> sphere_tags, box_tags;
-    for (const auto& [dim, tag] : surfaces) {
-        double x0, y0, z0, x1, y1, z1;
-        gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
-        const bool on_sphere = std::max({std::abs(x0), std::abs(y0), std::abs(z0), x1, y1, z1}) < 1.01;
-        (on_sphere ? sphere_tags : box_tags).push_back(tag);
-        if (on_sphere) sphere_surfaces.push_back(tag);
-    }
-    // Size: h_sphere on the sphere, growing linearly with the distance from it
-    // up to h_max; near the box faces (within 1) it blends up to h_box, so the
-    // box's node count is set by h_box alone.
-    auto distance_to = [](const std::vector<double>& faces) {
-        const int f = gmsh::model::mesh::field::add("Distance");
-        gmsh::model::mesh::field::setNumbers(f, "FacesList", faces);
-        gmsh::model::mesh::field::setNumber(f, "NNodesByEdge", 200);
-        return f;
-    };
-    std::vector<double> box_surfaces(box_tags.begin(), box_tags.end());
-    const int from_sphere = distance_to(sphere_surfaces), from_box = distance_to(box_surfaces);
-    const int graded = gmsh::model::mesh::field::add("MathEval");
-    gmsh::model::mesh::field::setString(graded, "F", "Min(" + std::to_string(c.h_max) + ", " +
-                                                         std::to_string(c.h_sphere) + " + " + std::to_string(c.growth) +
-                                                         " * F" + std::to_string(from_sphere) + ")");
-    const int near_box = gmsh::model::mesh::field::add("Threshold");
-    gmsh::model::mesh::field::setNumber(near_box, "IField", from_box);
-    gmsh::model::mesh::field::setNumber(near_box, "LcMin", c.h_box);
-    gmsh::model::mesh::field::setNumber(near_box, "LcMax", 1e-3);
-    gmsh::model::mesh::field::setNumber(near_box, "DistMin", 0);
-    gmsh::model::mesh::field::setNumber(near_box, "DistMax", 1);
-    const int size = gmsh::model::mesh::field::add("Max");
-    gmsh::model::mesh::field::setNumbers(size, "FieldsList", {double(graded), double(near_box)});
-    gmsh::model::mesh::field::setAsBackgroundMesh(size);
-    gmsh::model::mesh::generate(3);
-
-    // All nodes, renumbered 0.. in Gmsh's order.
-    std::vector<std::size_t> tags;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
+    const Mesh mesh = make_sphere_box({c.h_sphere, c.h_max, c.growth, c.h_box, 2});
     SphereBoxMesh m;
-    m.points = coords;
-    std::unordered_map<std::size_t, NodeId> index;
-    index.reserve(tags.size());
-    for (std::size_t i = 0; i < tags.size(); ++i) index[tags[i]] = static_cast<NodeId>(i);
-    auto collect = [&](const std::vector<int>& entity_tags, std::vector<NodeId>& ids) {
-        for (int tag : entity_tags) {
-            std::vector<std::size_t> t;
-            std::vector<double> x, p;
-            gmsh::model::mesh::getNodes(t, x, p, 2, tag, true, false);
-            for (std::size_t n : t) ids.push_back(index.at(n));
-        }
-        std::sort(ids.begin(), ids.end());
-        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    };
-    collect(sphere_tags, m.sphere_nodes);
-    collect(box_tags, m.box_nodes);
-    gmsh::finalize();
+    m.points = mesh.points;
+    m.sphere_nodes = marker_nodes(find_marker(mesh, "sphere"));
+    m.box_nodes = marker_nodes(find_marker(mesh, "box"));
     m.generate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return m;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The paper's squeezed-sphere case (section 3, Tables 9-10): a unit sphere in
 // a 10 × 10 × 10 box, tetrahedra graded from the sphere outwards, generated
-// with Gmsh's library and cached as a raw binary dump so reruns are fast.
+// by the library's make_sphere_box (cases/sphere_box.hpp) and cached as a raw
+// binary dump so reruns are fast.
 #include <filesystem>
 #include <string>
 #include <vector>

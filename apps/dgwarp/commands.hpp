@@ -21,5 +21,7 @@ void add_info_command(CLI::App& app);
 void add_picture_command(CLI::App& app);
 void add_deform_command(CLI::App& app);
 void add_prepare_command(CLI::App& app);
+void add_case_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 
 }  // namespace dgwarp::cli

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
         "  dgwarp quality mesh.su2                  quality summary of a mesh\n"
         "  dgwarp convert mesh.su2 mesh.vtu         convert between formats\n"
         "  dgwarp picture mesh.su2 -o mesh.png      a 2D mesh coloured by quality\n"
+        "  dgwarp case naca0012 -o naca0012.su2     write one of the paper's test meshes\n"
+        "  dgwarp bench --quick                     the paper's tables, ours beside them\n"
         "Run 'dgwarp COMMAND --help' for a command's options and examples.\n"
         "Exit codes: 0 success, 1 usage error, 2 bad input, 3 invalid result, 4 internal error.");
     add_deform_command(app);
@@ -30,6 +32,8 @@ int main(int argc, char** argv) {
     add_convert_command(app);
     add_picture_command(app);
     add_demo_command(app);
+    add_case_command(app);
+    add_bench_command(app);
 
     try {
         app.parse(argc, argv);

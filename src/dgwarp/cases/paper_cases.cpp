@@ -1,0 +1,120 @@
+#include "dgwarp/cases/paper_cases.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "dgwarp/cases/naca0012.hpp"
+#include "dgwarp/cases/rect_box.hpp"
+#include "dgwarp/cases/sphere_box.hpp"
+#include "dgwarp/cases/twisted_bar.hpp"
+#include "dgwarp/core/error.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+constexpr double degree = std::numbers::pi / 180;
+
+std::string known_cases() {
+    std::string s;
+    for (const auto& n : case_names()) s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+/// One frame in which marker `marker` moves by `motion`.
+MotionSpec one_marker(const std::string& marker, MarkerMotion motion) {
+    MotionSpec spec;
+    spec.frames.push_back(MotionFrame{{{marker, std::move(motion)}}});
+    return spec;
+}
+
+CaseMotion rigid(const std::string& marker, std::string name, std::string description, double angle_degrees,
+                 const Vec3& center, const Vec3& translation) {
+    NodeMotion m;
+    m.rotation = {0, 0, angle_degrees * degree};
+    m.center = center;
+    m.translation = translation;
+    return {std::move(name), std::move(description), one_marker(marker, RigidMotion{m})};
+}
+
+/// The twisted bar's per-node motion, optionally followed by a rotation by
+/// `then_degrees` about the origin: R(φ)(c + R(θ)(x - c)) = c + R(θ+φ)(x - c) + (R(φ)c - c).
+CaseMotion twist(const Mesh& mesh, double then_degrees) {
+    const std::vector<NodeId> nodes = marker_nodes(find_marker(mesh, "bar"));
+    double x_max = 0;
+    for (NodeId n : nodes) x_max = std::max(x_max, std::abs(mesh.points[2 * static_cast<std::size_t>(n)]));
+    const double phi = then_degrees * degree;
+    NodeTable<NodeMotion> table;
+    table.components = 2;
+    for (NodeId n : nodes) {
+        const double x = mesh.points[2 * static_cast<std::size_t>(n)];
+        const double theta = 45 * degree * x / x_max;
+        NodeMotion m;
+        m.center = {x, 0, 0};
+        m.rotation = {0, 0, theta + phi};
+        m.translation = {x * std::cos(phi) - x, x * std::sin(phi), 0};
+        table.nodes.push_back(n);
+        table.values.push_back(m);
+    }
+    if (then_degrees == 0)
+        return {"twist", "sections turn about their centres by up to ±45° at the ends",
+                one_marker("bar", PrescribedNodeMotions{std::move(table)})};
+    return {"twist-rotate-45", "the twist, then a 45° rotation about the bar's centre",
+            one_marker("bar", PrescribedNodeMotions{std::move(table)})};
+}
+
+CaseMotion squeeze(const Mesh& mesh) {
+    const std::vector<NodeId> nodes = marker_nodes(find_marker(mesh, "sphere"));
+    NodeTable<Vec3> table;
+    table.components = 3;
+    const Vec3 scale{1.1, 1.1, 0.8};
+    for (NodeId n : nodes) {
+        Vec3 d;
+        for (int k = 0; k < 3; ++k) d[k] = (scale[k] - 1) * mesh.points[3 * static_cast<std::size_t>(n) + k];
+        table.nodes.push_back(n);
+        table.values.push_back(d);
+    }
+    return {"squeeze", "the unit sphere becomes the ellipsoid with semi-axes 1.1, 1.1, 0.8",
+            one_marker("sphere", PrescribedDisplacements{std::move(table)})};
+}
+
+}  // namespace
+
+std::vector<std::string> case_names() { return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere"}; }
+
+int case_size_count(std::string_view name) {
+    if (name == "squeezed-sphere") return 3;
+    for (const auto& n : case_names())
+        if (n == name) return 1;
+    throw Error("unknown case '" + std::string(name) + "'; the cases are " + known_cases());
+}
+
+Mesh make_case(std::string_view name, int size) {
+    if (size < 0 || size >= case_size_count(name))
+        throw Error("case '" + std::string(name) + "' has sizes 0 to " + std::to_string(case_size_count(name) - 1) +
+                    ", not " + std::to_string(size));
+    if (name == "rect-box") return make_rect_box();
+    if (name == "naca0012") return make_naca0012();
+    if (name == "twisted-bar") return make_twisted_bar();
+    return make_sphere_box(sphere_box_paper_size(size));
+}
+
+std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh) {
+    case_size_count(name);  // throws for an unknown name
+    if (name == "rect-box") {
+        std::vector<CaseMotion> m;
+        for (int a : {30, 45, 60, 90})
+            m.push_back(rigid("rectangle", "rotate-" + std::to_string(a),
+                              "the rectangle turns " + std::to_string(a) + "° about its centre", a, {0, 0, 0}, {0, 0, 0}));
+        m.push_back(rigid("rectangle", "translate", "the rectangle moves by (2, 2)", 0, {0, 0, 0}, {2, 2, 0}));
+        return m;
+    }
+    if (name == "naca0012")
+        return {rigid("airfoil", "translate", "the airfoil moves by (2, 2)", 0, {0, 0, 0}, {2, 2, 0}),
+                rigid("airfoil", "rotate-45", "the airfoil turns 45° counter-clockwise about (0.25, 0)", 45,
+                      {0.25, 0, 0}, {0, 0, 0})};
+    if (name == "twisted-bar") return {twist(mesh, 0), twist(mesh, 45)};
+    return {squeeze(mesh)};
+}
+
+}  // namespace dgwarp
