@@ -106,7 +106,7 @@ std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& r
          "deformation), *total* = prepare + step, beside the paper's single \"CPU time\". Every motion is applied "
          "in one step, as in the paper. Method options are the library's defaults (DG-IDW with the paper's formula, "
          "L = 1; IDW c_d = 3, c_s = 2, L auto; RBF Wendland C2, global support, no reduction; DGM without sub-steps, "
-         "as the paper maps in one step). *dg-idw L=auto* is DG-IDW with our automatic length scale (docs/DG-IDW.md), "
+         "as the paper maps in one step). *dg-idw L=auto* is DG-IDW with our automatic length scale (docs/dg-idw-length-scale.md), "
          "not the paper's formula: it has no paper column.\n\n";
     for (const BenchRow& r : rows) {
         std::string description = r.motion_description;

@@ -64,7 +64,7 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("--length-scale", a.length_scale,
                     "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or "
                     "'auto' (the moving boundary's diagonal, reduced so that max(a) L fits in the gap between the "
-                    "moving and the static boundary; docs/DG-IDW.md)")
+                    "moving and the static boundary; docs/dg-idw-length-scale.md)")
         ->capture_default_str();
     cmd->add_flag("--dgm-substep", a.dgm_substep,
                   "DGM: when the moved graph is invalid, split the motion into increments (default: fail)");

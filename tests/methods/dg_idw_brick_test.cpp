@@ -8,7 +8,7 @@
 //    shared-node rules: valid on every mesh;
 //  - z_p turned 10° about its normal through its centre under moving_wins (the
 //    edges of z_p turn with it): valid on the hex and prism meshes; on the pyra
-//    and tets meshes cells next to the edges of z_p invert (docs/DG-IDW.md),
+//    and tets meshes cells next to the edges of z_p invert (docs/dg-idw-length-scale.md),
 //    and the test checks that the inverted cells stay next to those edges.
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 // units of the moving body. A 2 × 1 rectangle in a 40 × 40 box reproduces the
 // paper's pattern (DG-IDW valid up to 90°, DGM's graph invalid at 90°); in a
 // box whose gap to the rectangle is smaller than a·L, DG-IDW drags the cells
-// near the far field along and inverts them (measured: docs/DG-IDW.md).
+// near the far field along and inverts them (measured: docs/dg-idw-length-scale.md).
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {

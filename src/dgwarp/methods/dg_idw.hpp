@@ -70,7 +70,7 @@ struct DgIdwPlan {
     /// in the gap. Where moving and static boundaries touch (a moving face
     /// bounded by fixed walls) G is one cell, and with L = 1 the first cells
     /// next to the fixed walls would follow the moving face and cross the
-    /// walls' nodes (docs/DG-IDW.md has the measurements).
+    /// walls' nodes (docs/dg-idw-length-scale.md has the measurements).
     double auto_length_scale = 1;
     std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
