@@ -98,6 +98,8 @@ std::string skip_reason(Method method, const BenchArgs& a, std::size_t nodes, st
     return "";
 }
 
+/// PNGs of a 2D `mesh` coloured by `quality` (one value per cell) in a.pictures: the whole mesh when
+/// `mesh` is `original` itself, and a close-up; adds their paths (relative to the Markdown file) to row.
 void write_pictures(const BenchArgs& a, BenchRow& row, const Mesh& original, const Mesh& mesh,
                     std::span<const double> quality,
                     const std::string& stem, const std::string& caption) {
@@ -268,7 +270,8 @@ void add_bench_command(CLI::App& app) {
     cmd->add_option("--json", args->json, "Write the results as JSON");
     cmd->add_option("--pictures", args->pictures, "Write PNG pictures of the 2D meshes here");
     cmd->add_option("--commit", args->commit, "The git commit to print in the report (the program runs no git)");
-    cmd->add_option("--cache", args->cache, "Keep generated 3D meshes (.msh) here and reuse them");
+    cmd->add_option("--cache", args->cache, "Keep generated 3D meshes (NAME-SIZE.msh) here and reuse them (keyed by name and size only: "
+                                    "empty it when the generators change)");
     cmd->add_option("--mesh-timeout", args->mesh_timeout, "Seconds allowed to Gmsh per 3D mesh (default 1200)");
     cmd->footer("Examples:\n  dgwarp bench --quick\n"
                 "  dgwarp bench --markdown docs/RESULTS.md --json results.json --pictures docs/results "
