@@ -93,6 +93,18 @@ private:
     int signal_fd_;
 };
 
+/// Kills (SIGKILL) and reaps a child process when the test leaves early, so a
+/// failed assertion never leaves a paused writer behind.
+struct ChildGuard {
+    pid_t pid = -1;
+    ~ChildGuard() {
+        if (pid > 0) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, nullptr, 0);
+        }
+    }
+};
+
 }  // namespace
 
 TEST(AtomicWrite, KilledMidWriteLeavesTheOldFileIntact) {
@@ -126,6 +138,7 @@ TEST(AtomicWrite, KilledMidWriteLeavesTheOldFileIntact) {
         }
         ::_exit(12);  // never reached: the writer pauses until killed
     }
+    ChildGuard guard{child};
     ::close(pipe_fds[1]);
     char byte = 0;
     const ssize_t got = ::read(pipe_fds[0], &byte, 1);
@@ -133,6 +146,7 @@ TEST(AtomicWrite, KilledMidWriteLeavesTheOldFileIntact) {
     if (got != 1) {
         int status = 0;
         ::waitpid(child, &status, 0);
+        guard.pid = -1;
         FAIL() << "the writer ended before writing half the file (status " << status << ")";
     }
 
@@ -147,6 +161,7 @@ TEST(AtomicWrite, KilledMidWriteLeavesTheOldFileIntact) {
     ASSERT_EQ(::kill(child, SIGKILL), 0);
     int status = 0;
     ASSERT_EQ(::waitpid(child, &status, 0), child);
+    guard.pid = -1;
     ASSERT_TRUE(WIFSIGNALED(status));
     EXPECT_EQ(WTERMSIG(status), SIGKILL);
 
