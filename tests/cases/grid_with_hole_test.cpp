@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/cell_area.hpp"
+
 #include <cmath>
 
 #include "dgwarp/core/error.hpp"
@@ -9,17 +11,7 @@
 
 using namespace dgwarp;
 
-namespace {
-double signed_area(const Mesh& m, std::size_t cell) {
-    const auto n = m.cells.nodes_of(cell);
-    double a = 0;
-    for (std::size_t k = 0; k < n.size(); ++k) {
-        const NodeId p = n[k], q = n[(k + 1) % n.size()];
-        a += m.points[2 * p] * m.points[2 * q + 1] - m.points[2 * q] * m.points[2 * p + 1];
-    }
-    return a / 2;
-}
-}  // namespace
+using dgwarp::test::signed_area;
 
 TEST(CasesGridWithHole, HasThePapersNodeCountAndIdealCells) {
     const Mesh m = make_grid_with_hole();
