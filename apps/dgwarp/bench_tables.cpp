@@ -107,7 +107,8 @@ std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& r
          "in one step, as in the paper. Method options are the library's defaults (DG-IDW with the paper's formula, "
          "L = 1; IDW c_d = 3, c_s = 2, L auto; RBF Wendland C2, global support, no reduction; DGM without sub-steps, "
          "as the paper maps in one step). *dg-idw L=auto* is DG-IDW with our automatic length scale (docs/dg-idw-length-scale.md), "
-         "not the paper's formula: it has no paper column.\n\n";
+         "not the paper's formula: it has no paper column; *dg-idw continuous* is DG-IDW with our continuous weights "
+         "(each corner's weight times the node's barycentric coordinate, no multipliers; docs/dg-idw.md), L = 1.\n\n";
     for (const BenchRow& r : rows) {
         std::string description = r.motion_description;
         if (!description.empty()) description[0] = static_cast<char>(std::toupper(description[0]));
@@ -166,12 +167,12 @@ std::string bench_text(const BenchRow& r) {
     std::string s = "\n" + title(r) + "  (" + std::to_string(r.nodes) + " nodes, " + std::to_string(r.boundary_nodes) +
                     " boundary)\n";
     char line[400];
-    std::snprintf(line, sizeof line, "  %-14s %7s %7s  %7s %7s  %6s  %9s %9s  %9s  %s\n", "method", "mean", "paper",
+    std::snprintf(line, sizeof line, "  %-17s %7s %7s  %7s %7s  %6s  %9s %9s  %9s  %s\n", "method", "mean", "paper",
                   "min", "paper", "inv", "prepare", "step", "paper s", "status");
     s += line;
     for (const MethodResult& m : r.methods) {
         const PaperFigures p = r.paper && m.label == method_name(m.method) ? r.paper->methods[static_cast<int>(m.method)] : PaperFigures{};
-        std::snprintf(line, sizeof line, "  %-14s %7s %7s  %7s %7s  %6s  %9s %9s  %9s  %s\n",
+        std::snprintf(line, sizeof line, "  %-17s %7s %7s  %7s %7s  %6s  %9s %9s  %9s  %s\n",
                       m.label.c_str(), m.ran ? num(m.quality.mean).c_str() : "",
                       paper_quality(p, true).c_str(), m.ran ? num(m.quality.min).c_str() : "",
                       paper_quality(p, false).c_str(), m.ran ? std::to_string(m.quality.inverted).c_str() : "",

@@ -167,6 +167,8 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
     for (Method m : all_methods) variants.push_back({m, std::string(method_name(m)), {}});
     variants.push_back({Method::dg_idw, "dg-idw L=auto", {}});
     variants.back().options.dg_idw.length_scale = 0;
+    variants.push_back({Method::dg_idw, "dg-idw continuous", {}});
+    variants.back().options.dg_idw.weighting = DgIdwWeighting::continuous;
     for (const Variant& v : variants) {
         const Method method = v.method;
         MethodResult r;

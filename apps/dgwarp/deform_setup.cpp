@@ -66,6 +66,10 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
                     "'auto' (the moving boundary's diagonal, reduced so that max(a) L fits in the gap between the "
                     "moving and the static boundary; docs/dg-idw-length-scale.md)")
         ->capture_default_str();
+    cmd->add_option("--dg-idw-weights", a.weights,
+                    "DG-IDW corner weights: 'paper' (default; the paper's formula) or 'continuous' (each weight "
+                    "times the node's barycentric coordinate: no jump across graph faces; docs/dg-idw.md)")
+        ->check(CLI::IsMember({"paper", "continuous"}));
     cmd->add_flag("--dgm-substep", a.dgm_substep,
                   "DGM: when the moved graph is invalid, split the motion into increments (default: fail)");
     cmd->add_option("--idw-moving-exponent", a.idw_exponent_moving, "IDW: exponent c_d of the moving nodes' distances")
@@ -95,6 +99,7 @@ MethodOptions method_options(const SetupArgs& args) {
     o.dg_idw.a_translation = args.a_translation;
     o.dg_idw.a_rotation = args.a_rotation;
     o.dg_idw.length_scale = parse_length_scale(args.length_scale);
+    o.dg_idw.weighting = args.weights == "continuous" ? DgIdwWeighting::continuous : DgIdwWeighting::paper;
     o.dgm.on_invalid = args.dgm_substep ? DgmOptions::OnInvalidGraph::substep : DgmOptions::OnInvalidGraph::fail;
     o.idw.exponent_moving = args.idw_exponent_moving;
     o.idw.exponent_static = args.idw_exponent_static;
@@ -135,7 +140,14 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
             throw CLI::ValidationError("--plan", "saved plans are DG-IDW plans; they cannot be used with --method " +
                                                      std::string(method_name(method)));
         progress.phase("loading " + plan_file);
-        p.plan = load_dg_idw_plan(plan_file, in.mesh.points, in.boundary.boundary);
+        DgIdwPlan loaded = load_dg_idw_plan(plan_file, in.mesh.points, in.boundary.boundary);
+        if (!in.args.weights.empty() && loaded.weighting != p.options.dg_idw.weighting)
+            throw CLI::ValidationError("--dg-idw-weights", plan_file + " was prepared with " +
+                                                               weighting_name(loaded.weighting) +
+                                                               " weights; prepare it again with --dg-idw-weights " +
+                                                               in.args.weights + ", or drop the option");
+        p.options.dg_idw.weighting = loaded.weighting;
+        p.plan = std::move(loaded);
     } else {
         progress.phase("preparing " + std::string(method_name(method)));
         p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.boundary.boundary, p.options);
@@ -190,6 +202,7 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
               {"a_rotation", o.dg_idw.a_rotation},
               {"length_scale", in.args.length_scale == "auto" ? nlohmann::json("auto")
                                                                : nlohmann::json(o.dg_idw.length_scale)},
+              {"dg_idw_weights", in.args.weights.empty() ? nlohmann::json(nullptr) : nlohmann::json(in.args.weights)},
               {"dgm_substep", in.args.dgm_substep},
               {"idw_exponent_moving", o.idw.exponent_moving},
               {"idw_exponent_static", o.idw.exponent_static},
@@ -204,8 +217,10 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
     const PlanSummary s = plan_summary(p.plan);
     nlohmann::json phases = nlohmann::json::object();
     for (const auto& [name, seconds] : s.phase_seconds) phases[name] = seconds;
+    const auto* dg_idw = std::get_if<DgIdwPlan>(&p.plan);
     return {{"method", method_name(p.method)},
             {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
+            {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->weighting)) : nlohmann::json(nullptr)},
             {"graph_simplices", s.graph_simplices},
             {"outside_hull", s.outside_hull},
             {"shared_graph_vertices", s.shared_vertices},

@@ -25,6 +25,7 @@ struct SetupArgs {
     double a_translation = 7.0;
     double a_rotation = 1.4;
     std::string length_scale = "1";
+    std::string weights;  // DG-IDW weighting: "paper" or "continuous"; empty = paper, or a loaded plan's
     bool dgm_substep = false;
     double idw_exponent_moving = 3.0;
     double idw_exponent_static = 2.0;

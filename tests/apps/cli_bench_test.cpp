@@ -35,7 +35,8 @@ TEST(CasesCli, BenchWritesEveryMotionWithThePapersValues) {
     EXPECT_EQ(j.at("threads"), 1);
     for (const auto& row : j.at("rows")) {
         ASSERT_FALSE(row.at("paper_tables").is_null()) << row.at("motion");
-        ASSERT_EQ(row.at("methods").size(), 5u);  // four methods and DG-IDW with L auto
+        ASSERT_EQ(row.at("methods").size(), 6u);  // four methods, DG-IDW with L auto and with continuous weights
+        EXPECT_EQ(row.at("methods").at(5).at("label"), "dg-idw continuous");
         for (const auto& m : row.at("methods")) {
             if (!m.at("ran")) continue;
             const double mean = m.at("quality").at("mean"), min = m.at("quality").at("min");

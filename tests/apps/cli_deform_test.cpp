@@ -141,6 +141,32 @@ TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
     EXPECT_EQ(slurp(dir / "a.su2"), slurp(dir / "b.su2"));
 }
 
+TEST(CliPrepare, APlanKeepsItsWeightsAndRefusesOthers) {
+    const auto dir = scratch_dir();
+    const auto mesh = rect_box(dir);
+    const auto motion = write_text(dir / "m.json", small_rotation);
+    const std::string base = quoted(mesh) + " -m " + quoted(motion);
+    ASSERT_EQ(run_cli("prepare " + base + " --dg-idw-weights continuous -o " + quoted(dir / "c.plan") + " -q").exit_code,
+              0);
+    ASSERT_EQ(run_cli("deform " + base + " --dg-idw-weights continuous -o " + quoted(dir / "a.su2") + " -q").exit_code,
+              0);
+    ASSERT_EQ(run_cli("deform " + base + " -o " + quoted(dir / "paper.su2") + " -q").exit_code, 0);
+    // Without the option, the plan's weights are used (and reported).
+    const CommandResult r =
+        run_cli("deform " + base + " --plan " + quoted(dir / "c.plan") + " -o " + quoted(dir / "b.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out).at("plan").at("dg_idw_weights"), "continuous");
+    EXPECT_EQ(slurp(dir / "a.su2"), slurp(dir / "b.su2"));
+    EXPECT_NE(slurp(dir / "a.su2"), slurp(dir / "paper.su2"));  // the option changes the result
+    // Asking for other weights than the plan holds is a usage error, and nothing is written.
+    const CommandResult bad = run_cli("deform " + base + " --plan " + quoted(dir / "c.plan") +
+                                      " --dg-idw-weights paper -o " + quoted(dir / "x.su2"));
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("prepared with continuous weights"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.su2"));
+    EXPECT_EQ(run_cli("deform " + base + " --dg-idw-weights smooth -o " + quoted(dir / "y.su2")).exit_code, 1);
+}
+
 TEST(CliPrepare, PlanOfAnotherMeshIsRefused) {
     const auto dir = scratch_dir();
     const auto mesh = rect_box(dir);

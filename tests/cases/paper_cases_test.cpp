@@ -80,6 +80,17 @@ TEST(CasesPaper, TwistTurnsEachSectionAboutItsCentreAndThenTheWholeBar) {
         ++checked;
     }
     EXPECT_EQ(checked, 2 * (29 + 9));
+    // The twist is a displacement (no rotation vector: a shape deformation, as
+    // the paper's dx, dy); the rotation that follows is rigid, 45° about the origin.
+    for (int k : {0, 1}) {
+        const ResolvedFrame f = resolve_frame(mesh, motions[k].spec, b.boundary, 0);
+        for (std::size_t i = 0; i < f.motion.size(); ++i) {
+            if (!b.boundary.moving[i]) continue;
+            EXPECT_EQ(f.motion[i].rotation[2], k == 0 ? 0.0 : std::numbers::pi / 4) << i;
+            EXPECT_EQ(f.motion[i].center[0], 0.0) << i;
+            EXPECT_EQ(f.motion[i].center[1], 0.0) << i;
+        }
+    }
 }
 
 TEST(CasesPaper, SqueezeMovesTheSphereOntoTheEllipsoid) {

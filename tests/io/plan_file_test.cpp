@@ -59,7 +59,10 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         for (int d = 0; d < dim; ++d) m.points.push_back(m.points[m.boundary.nodes.back() * dim + d]);  // duplicate
         m.boundary.nodes.push_back(static_cast<NodeId>(first_extra + 1));
         m.boundary.moving.push_back(1);
-        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary);
+        for (DgIdwWeighting weighting : {DgIdwWeighting::paper, DgIdwWeighting::continuous}) {
+        SCOPED_TRACE(weighting_name(weighting));
+        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary, {.weighting = weighting});
+        ASSERT_EQ(plan.weighting, weighting);
         ASSERT_EQ(plan.stats.shared_vertex_count, 1);
         ASSERT_EQ(plan.stats.outside_count, 1);
         const auto file = dir / ("plan" + std::to_string(dim) + ".dgwplan");
@@ -67,6 +70,7 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         const DgIdwPlan loaded = load_dg_idw_plan(file, m.points, m.boundary);
 
         EXPECT_EQ(loaded.dim, plan.dim);
+        EXPECT_EQ(loaded.weighting, weighting);
         EXPECT_EQ(loaded.mesh, plan.mesh);
         EXPECT_EQ(loaded.auto_length_scale, plan.auto_length_scale);
         EXPECT_EQ(loaded.simplex_motion, plan.simplex_motion);
@@ -81,7 +85,20 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         deform_dg_idw(plan, m.points, motion, a, {.length_scale = 0});
         deform_dg_idw(loaded, m.points, motion, b, {.length_scale = 0});
         EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+        }
     }
+}
+
+TEST(PlanFile, AnUnknownWeightingIsRefused) {
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10);
+    DgIdwPlan plan = prepare_dg_idw(2, m.points, m.boundary);
+    plan.weighting = static_cast<DgIdwWeighting>(7);  // saved with a valid checksum
+    const auto file = dir / "weighting.dgwplan";
+    save_dg_idw_plan(file, plan);
+    const std::string message = expect_refused(file, "weighting 7");
+    EXPECT_NE(message.find("weighting 0 (paper) or 1 (continuous)"), std::string::npos) << message;
+    EXPECT_NE(message.find("byte offset 16"), std::string::npos) << message;
 }
 
 TEST(PlanFile, EveryFlippedByteIsRefused) {
@@ -110,7 +127,7 @@ TEST(PlanFile, TruncatedOrExtendedFilesAreRefused) {
     for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{100}, good.size() / 2, good.size() - 1}) {
         write_bytes(bad, std::vector<char>(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(size)));
         const std::string message = expect_refused(bad, "truncated to " + std::to_string(size));
-        if (size >= 136) {
+        if (size >= 140) {
             EXPECT_NE(message.find("truncated"), std::string::npos) << message;
         }
     }
@@ -121,12 +138,12 @@ TEST(PlanFile, TruncatedOrExtendedFilesAreRefused) {
     // A header claiming a huge array is refused before anything is allocated.
     std::vector<char> huge = good;
     const std::uint64_t count = std::uint64_t{1} << 60;
-    // Header: magic 8, version 4, dim 4, eight 8-byte fields, then the 7 array counts.
-    std::memcpy(huge.data() + 80 + 6 * 8, &count, 8);  // node_coefficients count
+    // Header: magic 8, version 4, dim 4, weighting 4, eight 8-byte fields, then the 7 array counts.
+    std::memcpy(huge.data() + 84 + 6 * 8, &count, 8);  // node_coefficients count
     write_bytes(bad, huge);
     const std::string message = expect_refused(bad, "huge count");
     EXPECT_NE(message.find("array length that fits in the file"), std::string::npos) << message;
-    EXPECT_NE(message.find("byte offset 128"), std::string::npos) << message;
+    EXPECT_NE(message.find("byte offset 132"), std::string::npos) << message;
 }
 
 TEST(PlanFile, APlanForAnotherMeshIsRefused) {

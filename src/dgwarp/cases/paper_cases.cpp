@@ -37,27 +37,36 @@ CaseMotion rigid(const std::string& marker, std::string name, std::string descri
     return {std::move(name), std::move(description), one_marker(marker, RigidMotion{m})};
 }
 
-/// The twisted bar's per-node motion, optionally followed by a rotation by
-/// `then_degrees` about the origin: R(φ)(c + R(θ)(x - c)) = c + R(θ+φ)(x - c) + (R(φ)c - c).
+/// The twisted bar's motion, optionally followed by a rotation by
+/// `then_degrees` about the origin. The twist is a shape deformation, so it
+/// enters as a displacement d per node, as the paper's dx, dy "due to
+/// translation and shape deformation" (its Euler angles are the rigid
+/// rotation's): node x of the section at abscissa x turns by θ(x) about (x, 0),
+/// d = R(θ)(x - c) + c - x. The rotation that follows is rigid: rotation
+/// vector φ about the origin and translation R(φ)d, so the node lands at
+/// R(φ)(x + d).
 CaseMotion twist(const Mesh& mesh, double then_degrees) {
     const std::vector<NodeId> nodes = marker_nodes(find_marker(mesh, "bar"));
     double x_max = 0;
     for (NodeId n : nodes) x_max = std::max(x_max, std::abs(mesh.points[2 * static_cast<std::size_t>(n)]));
     const double phi = then_degrees * degree;
+    const double cos_phi = std::cos(phi), sin_phi = std::sin(phi);
     NodeTable<NodeMotion> table;
     table.components = 2;
     for (NodeId n : nodes) {
         const double x = mesh.points[2 * static_cast<std::size_t>(n)];
+        const double y = mesh.points[2 * static_cast<std::size_t>(n) + 1];
         const double theta = 45 * degree * x / x_max;
+        const double dx = -std::sin(theta) * y, dy = std::cos(theta) * y - y;  // R(θ)(0, y) - (0, y)
         NodeMotion m;
-        m.center = {x, 0, 0};
-        m.rotation = {0, 0, theta + phi};
-        m.translation = {x * std::cos(phi) - x, x * std::sin(phi), 0};
+        m.center = {0, 0, 0};
+        m.rotation = {0, 0, phi};
+        m.translation = {cos_phi * dx - sin_phi * dy, sin_phi * dx + cos_phi * dy, 0};
         table.nodes.push_back(n);
         table.values.push_back(m);
     }
     if (then_degrees == 0)
-        return {"twist", "sections turn about their centres by up to ±45° at the ends",
+        return {"twist", "sections turn about their centres by up to ±45° at the ends (a displacement per node)",
                 one_marker("bar", PrescribedNodeMotions{std::move(table)})};
     return {"twist-rotate-45", "the twist, then a 45° rotation about the bar's centre",
             one_marker("bar", PrescribedNodeMotions{std::move(table)})};

@@ -43,8 +43,9 @@ struct CaseMotion {
 ///   rect-box:        rotate-30, rotate-45, rotate-60, rotate-90 about the centre (0, 0); translate (2, 2)
 ///   naca0012:        translate (2, 2); rotate-45 (counter-clockwise) about the quarter chord (0.25, 0)
 ///   twisted-bar:     twist: the bar's node at (x, y) turns about (x, 0), its section's centre,
-///                    by 45°·x / (L/2), L the bar's length (the ends turn ±45°); twist-rotate-45:
-///                    the twist followed by a 45° rotation about the bar's centre
+///                    by 45°·x / (L/2), L the bar's length (the ends turn ±45°), given as a
+///                    displacement per node (a shape deformation, the paper's dx, dy); twist-rotate-45:
+///                    the twist followed by a rigid 45° rotation about the bar's centre
 ///   squeezed-sphere: squeeze: the sphere's node (x, y, z) moves to (1.1x, 1.1y, 0.8z), an ellipsoid
 /// Throws Error for an unknown name, MeshError when the mesh lacks the case's markers.
 std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh);

@@ -19,7 +19,8 @@ namespace {
 static_assert(std::endian::native == std::endian::little, "plan files are little-endian");
 
 constexpr std::array<char, 8> magic = {'D', 'G', 'W', 'P', 'L', 'A', 'N', '\0'};
-constexpr std::uint32_t format_version = 1;
+// 2: the DG-IDW weighting (paper / continuous) in the header.
+constexpr std::uint32_t format_version = 2;
 constexpr int num_arrays = 7;
 // Positions of the arrays in the file (and in Header::counts).
 enum ArrayIndex { boundary_nodes_at, boundary_moving_at, simplex_motion_at, shared_offsets_at, shared_members_at,
@@ -29,6 +30,7 @@ enum ArrayIndex { boundary_nodes_at, boundary_moving_at, simplex_motion_at, shar
 struct Header {
     std::uint32_t version = format_version;
     std::uint32_t dim = 0;
+    std::uint32_t weighting = 0;  // DgIdwWeighting
     std::int64_t num_points = 0;
     std::uint64_t points_hash = 0;
     std::uint64_t boundary_hash = 0;
@@ -45,6 +47,7 @@ template <class F>
 constexpr void visit_header(Header& h, F&& field) {
     field(h.version);
     field(h.dim);
+    field(h.weighting);
     field(h.num_points);
     field(h.points_hash);
     field(h.boundary_hash);
@@ -63,7 +66,7 @@ constexpr std::size_t header_size() {
     return n;
 }
 constexpr std::size_t header_bytes = header_size();
-static_assert(header_bytes == 8 + 2 * 4 + 8 * 8 + num_arrays * 8);
+static_assert(header_bytes == 8 + 3 * 4 + 8 * 8 + num_arrays * 8);
 
 // The plan's arrays in file order, as (bytes, element size) views.
 template <class Plan, class F>
@@ -107,6 +110,7 @@ void check_range(const std::filesystem::path& path, std::uint64_t offset, const 
 void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) {
     Header h;
     h.dim = static_cast<std::uint32_t>(plan.dim);
+    h.weighting = static_cast<std::uint32_t>(plan.weighting);
     h.num_points = plan.mesh.num_points;
     h.points_hash = plan.mesh.points_hash;
     h.boundary_hash = plan.mesh.boundary_hash;
@@ -162,11 +166,14 @@ DgIdwPlan load_plan(const PlanSource& source) {
     if (h.version != format_version)
         fail(path, 8, "plan format version " + std::to_string(format_version), std::to_string(h.version));
     if (h.dim != 2 && h.dim != 3) fail(path, 12, "dim 2 or 3", std::to_string(h.dim));
+    if (h.weighting > static_cast<std::uint32_t>(DgIdwWeighting::continuous))
+        fail(path, 16, "weighting 0 (paper) or 1 (continuous)", std::to_string(h.weighting));
 
     // Sizes: each count is checked against the file size first, so the sums
     // below cannot overflow and nothing huge is allocated for a corrupt header.
     DgIdwPlan plan;
     plan.dim = static_cast<int>(h.dim);
+    plan.weighting = static_cast<DgIdwWeighting>(h.weighting);
     std::uint64_t expected = header_bytes + 8;  // header + checksum
     std::uint64_t offset = header_bytes;
     int a = 0;

@@ -34,6 +34,25 @@
 
 namespace dgwarp {
 
+/// How the corners of a volume node's graph simplex are weighted. Chosen at
+/// prepare time; the plan keeps it.
+enum class DgIdwWeighting : std::uint8_t {
+    /// The paper's eq. 2.3-2.4 (METHODS.md), with the dim multipliers of the
+    /// one-static and one-moving simplices. The motion jumps across a graph
+    /// face where the two simplices' third (fourth) corners differ, which
+    /// can fold fine cells that straddle a long graph edge.
+    paper = 0,
+    /// Our departure (docs/dg-idw.md, "Continuous weights"): every corner's
+    /// weight (a r^-2 moving, r^-1 static) is multiplied by the node's
+    /// barycentric coordinate of that corner, and there are no multipliers.
+    /// On a face the opposite corner's coordinate is 0, so both simplices
+    /// give the same motion: continuous across the whole graph.
+    continuous = 1,
+};
+
+/// "paper" or "continuous".
+const char* weighting_name(DgIdwWeighting w);
+
 struct DgIdwOptions {
     double a_translation = 7.0;  // a for the translation components (paper: 7)
     double a_rotation = 1.4;     // a for the rotation-vector components (paper: 1.4)
@@ -41,6 +60,8 @@ struct DgIdwOptions {
     /// formula (which is not scale invariant); 0 = auto (DgIdwPlan::auto_length_scale),
     /// computed at prepare time and kept in the plan.
     double length_scale = 1.0;
+    /// Corner weights (prepare time only; deform uses the plan's).
+    DgIdwWeighting weighting = DgIdwWeighting::paper;
 };
 
 /// What prepare_dg_idw found, and how long its stages took.
@@ -72,6 +93,7 @@ struct DgIdwPlan {
     /// next to the fixed walls would follow the moving face and cross the
     /// walls' nodes (docs/dg-idw-length-scale.md has the measurements).
     double auto_length_scale = 1;
+    DgIdwWeighting weighting = DgIdwWeighting::paper;  // how node_coefficients were made
     std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
     /// num_simplices × (dim + 1): for each corner of each graph simplex that
@@ -93,7 +115,8 @@ struct DgIdwPlan {
     std::vector<std::int32_t> node_simplex;
     /// num_volume_nodes × (dim + 1), in ascending node-id order of the volume
     /// nodes: per simplex corner, qhat_k (moving) or -m u_k / P (static), see
-    /// above. All zero when no corner moves; a node on a graph vertex has 1
+    /// above; with continuous weighting u_k^2 and m u_k are multiplied by the
+    /// node's barycentric coordinate e_k (clamped at 0), and m = 1. All zero when no corner moves; a node on a graph vertex has 1
     /// for that corner if it moves, and 0 everywhere else.
     std::vector<double> node_coefficients;
     DgIdwPrepareStats stats;
@@ -107,7 +130,7 @@ struct DgIdwPlan {
 /// of every volume node, and the per-corner coefficients. a and L are applied
 /// at deform time; the options given here only set the auto length scale
 /// (always stored: it uses max(a_translation, a_rotation), see
-/// DgIdwPlan::auto_length_scale).
+/// DgIdwPlan::auto_length_scale); options.weighting chooses the coefficients.
 /// Throws MeshError for an inconsistent boundary set (unsorted, duplicate or
 /// out-of-range ids, size mismatch) or a degenerate boundary (fewer than
 /// dim + 1 distinct points, all collinear / coplanar), Error for bad options.

@@ -173,6 +173,8 @@ void check_dg_idw_options(const DgIdwOptions& options) {
     if (!std::isfinite(options.length_scale) || options.length_scale < 0)
         throw Error("DG-IDW: length_scale must be finite and >= 0 (0 = auto), got " +
                     std::to_string(options.length_scale));
+    if (options.weighting != DgIdwWeighting::paper && options.weighting != DgIdwWeighting::continuous)
+        throw Error("DG-IDW: unknown weighting " + std::to_string(static_cast<int>(options.weighting)));
 }
 
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,

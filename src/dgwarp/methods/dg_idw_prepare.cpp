@@ -7,6 +7,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/graph/barycentric.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
@@ -52,7 +53,7 @@ double moving_static_gap(int dim, std::span<const double> points, std::span<cons
 // Coefficients of one volume node at x0 in a simplex with corners p[k]
 // (moving[k]): see dg_idw.hpp. Returns true when the node was snapped.
 bool corner_coefficients(int dim, const double* x0, const double* const* p, const bool* moving,
-                         double snap_distance, double* q) {
+                         DgIdwWeighting weighting, double snap_distance, double* q) {
     const int corners = dim + 1;
     int n_moving = 0;
     for (int k = 0; k < corners; ++k) n_moving += moving[k];
@@ -72,15 +73,33 @@ bool corner_coefficients(int dim, const double* x0, const double* const* p, cons
         for (int k = 0; k < corners; ++k) q[k] = 0.0;
         return false;
     }
-    const double m = n_moving == dim ? double(dim) : n_moving == 1 ? 1.0 / dim : 1.0;
+    // e: the barycentric damping of the continuous weighting (1 for the
+    // paper's). Clamped at 0: a node outside the hull is in the nearest
+    // simplex, where a coordinate can be negative.
+    double e[4] = {1, 1, 1, 1};
+    double m = n_moving == dim ? double(dim) : n_moving == 1 ? 1.0 / dim : 1.0;
+    if (weighting == DgIdwWeighting::continuous) {
+        barycentric(dim, x0, p, e);
+        for (int k = 0; k < corners; ++k) e[k] = std::max(0.0, e[k]);
+        m = 1.0;
+    }
     double p_sum = 0;
     for (int k = 0; k < corners; ++k)
-        if (moving[k]) p_sum += 1.0 / (r[k] * r[k]);
-    for (int k = 0; k < corners; ++k) q[k] = moving[k] ? 1.0 / (r[k] * r[k]) / p_sum : -(m / r[k]) / p_sum;
+        if (moving[k]) p_sum += e[k] / (r[k] * r[k]);
+    if (p_sum == 0) {  // on a face of static corners only: the node stays
+        for (int k = 0; k < corners; ++k) q[k] = 0.0;
+        return false;
+    }
+    for (int k = 0; k < corners; ++k)
+        q[k] = moving[k] ? e[k] / (r[k] * r[k]) / p_sum : -(e[k] * m / r[k]) / p_sum;
     return false;
 }
 
 }  // namespace
+
+const char* weighting_name(DgIdwWeighting w) {
+    return w == DgIdwWeighting::continuous ? "continuous" : "paper";
+}
 
 DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const BoundarySet& boundary,
                          const DgIdwOptions& options) {
@@ -89,6 +108,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
 
     DgIdwPlan plan;
     plan.dim = dim;
+    plan.weighting = options.weighting;
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
     const double moving_diagonal = boundary_diagonal(dim, points, boundary, true);
@@ -151,7 +171,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
         }
         plan.node_simplex[volume[i]] = lg.location.simplex[i];
         snapped[i] = corner_coefficients(dim, points.data() + static_cast<std::size_t>(volume[i]) * dim, p, moving,
-                                         snap_distance, plan.node_coefficients.data() + i * corners);
+                                         options.weighting, snap_distance, plan.node_coefficients.data() + i * corners);
     });
     plan.stats.snapped_count = std::count(snapped.begin(), snapped.end(), std::uint8_t{1});
     plan.mesh = mesh_fingerprint(dim, points, boundary);

@@ -4,6 +4,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/graph/barycentric.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/dgm_detail.hpp"
@@ -19,47 +20,6 @@ void check_dgm_options(const DgmOptions& options) {
         throw Error("DGM: max_substeps must be at least 1, got " + std::to_string(options.max_substeps));
 }
 
-namespace {
-
-// Signed area (2D) / six times the signed volume (3D) of the simplex q[0..dim].
-template <int Dim>
-double signed_measure(const double (&q)[Dim + 1][Dim]) {
-    if constexpr (Dim == 2) {
-        return (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
-    } else {
-        double a[3], b[3], c[3];
-        for (int d = 0; d < 3; ++d) {
-            a[d] = q[1][d] - q[0][d];
-            b[d] = q[2][d] - q[0][d];
-            c[d] = q[3][d] - q[0][d];
-        }
-        return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-               a[2] * (b[0] * c[1] - b[1] * c[0]);
-    }
-}
-
-// e_k = measure of the simplex with corner k replaced by x, over their sum
-// (the paper's area / volume ratios). Corners are taken relative to x, which
-// keeps the sub-measures accurate for a small simplex far from the origin.
-template <int Dim>
-void barycentric(const double* x, const double* const* corner, double* e) {
-    double rel[Dim + 1][Dim];
-    for (int k = 0; k <= Dim; ++k)
-        for (int d = 0; d < Dim; ++d) rel[k][d] = corner[k][d] - x[d];
-    double sum = 0;
-    for (int k = 0; k <= Dim; ++k) {
-        double q[Dim + 1][Dim];
-        for (int j = 0; j <= Dim; ++j)
-            for (int d = 0; d < Dim; ++d) q[j][d] = j == k ? 0.0 : rel[j][d];
-        e[k] = signed_measure<Dim>(q);
-        sum += e[k];
-    }
-    const double inv = 1.0 / sum;
-    for (int k = 0; k <= Dim; ++k) e[k] *= inv;
-}
-
-}  // namespace
-
 std::vector<double> barycentric_coordinates(int dim, std::span<const double> points,
                                             std::span<const NodeId> vertex_node,
                                             std::span<const std::int32_t> simplices,
@@ -73,8 +33,7 @@ std::vector<double> barycentric_coordinates(int dim, std::span<const double> poi
         for (int k = 0; k < corners; ++k) p[k] = points.data() + static_cast<std::size_t>(vertex_node[c[k]]) * dim;
         const double* x = points.data() + static_cast<std::size_t>(query_nodes[i]) * dim;
         double* out = e.data() + static_cast<std::size_t>(i) * corners;
-        if (dim == 2) barycentric<2>(x, p, out);
-        else barycentric<3>(x, p, out);
+        barycentric(dim, x, p, out);
     });
     return e;
 }

@@ -1,0 +1,193 @@
+// DG-IDW with continuous weights (DgIdwWeighting::continuous, docs/dg-idw.md):
+// each corner's weight times the node's barycentric coordinate, no multipliers.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <vector>
+
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/methods/dg_idw.hpp"
+#include "support/box_in_box.hpp"
+
+using namespace dgwarp;
+using dgwarp::test::box_in_box;
+using dgwarp::test::BoxInBox;
+using dgwarp::test::jittered;
+using dgwarp::test::random_motion;
+
+namespace {
+
+constexpr DgIdwOptions continuous{.weighting = DgIdwWeighting::continuous};
+
+std::vector<double> deform(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion,
+                           const DgIdwOptions& options = continuous) {
+    std::vector<double> out(points.size(), std::nan(""));
+    deform_dg_idw(plan, points, motion, out, options);
+    return out;
+}
+
+// Barycentric coordinates of x in the triangle p0 p1 p2 by Cramer's rule
+// (independent of the library's sub-area form).
+void cramer_barycentric(const double* p, const double* x, double* e) {
+    const double ax = p[2] - p[0], ay = p[3] - p[1], bx = p[4] - p[0], by = p[5] - p[1];
+    const double det = ax * by - ay * bx;
+    const double rx = x[0] - p[0], ry = x[1] - p[1];
+    e[1] = (rx * by - ry * bx) / det;
+    e[2] = (ax * ry - ay * rx) / det;
+    e[0] = 1 - e[1] - e[2];
+}
+
+}  // namespace
+
+TEST(DgIdwContinuous, OneTriangleTranslationMatchesTheHandFormulaForEveryMovingSet) {
+    // s = a sum_D e_k r_k^-2 s_k / (a sum_D e_k r_k^-2 + sum_S e_j r_j^-1), r divided by L.
+    const std::vector<double> corners{0, 0, 2, 0.2, 0.5, 1.7};
+    const double x[2] = {0.8, 0.6};
+    double e[3];
+    cramer_barycentric(corners.data(), x, e);
+    for (double v : e) ASSERT_GT(v, 0.05);
+    for (const double length : {1.0, 2.5}) {
+        for (unsigned mask = 0; mask < 8; ++mask) {
+            std::vector<double> points = corners;
+            points.insert(points.end(), x, x + 2);
+            BoundarySet boundary{{0, 1, 2}, {}};
+            for (int k = 0; k < 3; ++k) boundary.moving.push_back(mask >> k & 1);
+            const DgIdwPlan plan = prepare_dg_idw(2, points, boundary, continuous);
+            EXPECT_EQ(plan.weighting, DgIdwWeighting::continuous);
+            BoundaryMotion motion(3);
+            double numerator[2] = {}, moving_sum = 0, static_sum = 0;
+            for (int k = 0; k < 3; ++k) {
+                const double r = std::hypot(x[0] - corners[2 * k], x[1] - corners[2 * k + 1]) / length;
+                if (mask >> k & 1) {
+                    motion[k].translation = {0.1 * (k + 1), -0.05 * (k + 2), 0};
+                    moving_sum += 7.0 * e[k] / (r * r);
+                    for (int d = 0; d < 2; ++d) numerator[d] += 7.0 * e[k] / (r * r) * motion[k].translation[d];
+                } else {
+                    static_sum += e[k] / r;
+                }
+            }
+            DgIdwOptions options = continuous;
+            options.length_scale = length;
+            const auto out = deform(plan, points, motion, options);
+            for (int d = 0; d < 2; ++d) {
+                const double expected = mask == 0 ? 0.0 : numerator[d] / (moving_sum + static_sum);
+                EXPECT_NEAR(out[6 + d] - x[d], expected, 1e-14) << "mask " << mask << " L " << length;
+            }
+        }
+    }
+}
+
+// For every face shared by two graph simplices, a volume node just inside
+// each of them (the face's centroid moved 1e-7 of the way towards each
+// opposite corner). The paper's weights jump across such a face (its two
+// simplices have different other corners and multipliers); the continuous
+// ones do not. Returns the largest |difference of the two nodes' displacements|
+// over their distance.
+double largest_slope_across_faces(int dim, DgIdwWeighting weighting) {
+    const BoxInBox m = jittered(box_in_box(dim, dim == 2 ? 12 : 6), 0.01, 7);
+    const LocatedGraph lg = build_located_graph(dim, m.points, m.boundary.nodes, {});
+    const DelaunayGraph& g = lg.graph;
+    const int corners = dim + 1;
+    // Faces as sorted vertex lists, with their simplex and opposite corner.
+    std::map<std::vector<std::int32_t>, std::vector<std::pair<std::size_t, int>>> faces;
+    for (std::size_t s = 0; s < g.num_simplices(); ++s)
+        for (int k = 0; k < corners; ++k) {
+            std::vector<std::int32_t> face;
+            for (int j = 0; j < corners; ++j)
+                if (j != k) face.push_back(g.simplices[s * corners + j]);
+            std::sort(face.begin(), face.end());
+            faces[face].push_back({s, k});
+        }
+    auto vertex = [&](std::int32_t v) {
+        const auto node = static_cast<std::size_t>(m.boundary.nodes[g.vertex_nodes[g.vertex_offsets[v]]]);
+        return m.points.data() + node * dim;
+    };
+    std::vector<double> points(m.points);
+    std::vector<NodeId> pairs;  // first node of each pair
+    for (const auto& [face, sides] : faces) {
+        if (sides.size() != 2) continue;  // a hull face
+        double centroid[3] = {};
+        for (std::int32_t v : face)
+            for (int d = 0; d < dim; ++d) centroid[d] += vertex(v)[d] / dim;
+        pairs.push_back(static_cast<NodeId>(points.size() / dim));
+        for (const auto& [s, k] : sides) {
+            const double* opposite = vertex(g.simplices[s * corners + k]);
+            for (int d = 0; d < dim; ++d) points.push_back(centroid[d] + 1e-7 * (opposite[d] - centroid[d]));
+        }
+    }
+    // The volume nodes of m are dropped from the boundary set's point of view:
+    // they stay volume nodes, which is all the plan needs.
+    const DgIdwPlan plan = prepare_dg_idw(dim, points, m.boundary, {.weighting = weighting});
+    BoxInBox with_pairs = m;
+    with_pairs.points = points;
+    const BoundaryMotion motion = random_motion(with_pairs, 3, 0.05);
+    const auto out = deform(plan, points, motion, {.weighting = weighting});
+    double worst = 0;
+    for (NodeId p : pairs) {
+        const auto a = static_cast<std::size_t>(p), b = a + 1;
+        double jump = 0, distance = 0;
+        for (int d = 0; d < dim; ++d) {
+            jump = std::max(jump, std::abs((out[b * dim + d] - points[b * dim + d]) - (out[a * dim + d] - points[a * dim + d])));
+            distance += (points[b * dim + d] - points[a * dim + d]) * (points[b * dim + d] - points[a * dim + d]);
+        }
+        worst = std::max(worst, jump / std::sqrt(distance));
+    }
+    EXPECT_GT(pairs.size(), 20u);
+    return worst;
+}
+
+TEST(DgIdwContinuous, NoJumpAcrossGraphFacesWhereThePaperWeightsJump) {
+    for (int dim : {2, 3}) {
+        const double paper = largest_slope_across_faces(dim, DgIdwWeighting::paper);
+        const double smooth = largest_slope_across_faces(dim, DgIdwWeighting::continuous);
+        // A jump J between nodes ~1e-8 apart shows as a slope of J * 1e8;
+        // a continuous field has the slope of its gradient, O(motion / distance).
+        EXPECT_GT(paper, 1e3) << dim << "D";
+        EXPECT_LT(smooth, 50.0) << dim << "D";
+    }
+}
+
+TEST(DgIdwContinuous, KeepsTheMethodsProperties) {
+    for (int dim : {2, 3}) {
+        const BoxInBox m = box_in_box(dim, dim == 2 ? 15 : 7);
+        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary, continuous);
+        EXPECT_EQ(plan.weighting, DgIdwWeighting::continuous);
+        // Zero motion is the identity, bit for bit.
+        const BoundaryMotion zero(m.boundary.nodes.size());
+        EXPECT_EQ(deform(plan, m.points, zero), m.points);
+        // Boundary nodes move exactly; the same rigid motion everywhere moves every node rigidly.
+        NodeMotion rigid{{0.1, -0.2, 0.05}, {0.0, dim == 3 ? 0.2 : 0.0, 0.4}, m.inner_center};
+        BoundaryMotion all(m.boundary.nodes.size(), rigid);
+        BoxInBox moving = m;
+        std::fill(moving.boundary.moving.begin(), moving.boundary.moving.end(), std::uint8_t{1});
+        const DgIdwPlan all_moving = prepare_dg_idw(dim, moving.points, moving.boundary, continuous);
+        const auto out = deform(all_moving, m.points, all);
+        for (std::size_t n = 0; n < m.num_points(); ++n) {
+            const auto y = dgwarp::test::moved(dim, m.points, n, rigid);
+            for (int d = 0; d < dim; ++d) EXPECT_NEAR(out[n * dim + d], y[d], 1e-12) << n;
+        }
+        // One and two threads give the same bits.
+        const BoundaryMotion motion = random_motion(m, 11);
+        const int threads = num_threads();
+        set_num_threads(1);
+        const DgIdwPlan plan1 = prepare_dg_idw(dim, m.points, m.boundary, continuous);
+        const auto one = deform(plan1, m.points, motion);
+        set_num_threads(2);
+        const DgIdwPlan plan2 = prepare_dg_idw(dim, m.points, m.boundary, continuous);
+        const auto two = deform(plan2, m.points, motion);
+        set_num_threads(threads);
+        EXPECT_EQ(plan1.node_coefficients, plan2.node_coefficients);
+        EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);
+        for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
+            const auto n = static_cast<std::size_t>(m.boundary.nodes[b]);
+            const auto y = m.boundary.moving[b] ? dgwarp::test::moved(dim, m.points, n, motion[b])
+                                                : std::vector<double>(m.points.begin() + n * dim,
+                                                                      m.points.begin() + (n + 1) * dim);
+            for (int d = 0; d < dim; ++d) EXPECT_EQ(one[n * dim + d], y[d]) << "boundary node " << n;
+        }
+    }
+}
