@@ -159,8 +159,9 @@ std::vector<std::string> plan_warnings(const PlannedMethod& p) {
 std::vector<std::string> step_warnings(const StepReport& step) {
     if (step.conflicting_shared_vertices == 0) return {};
     return {std::to_string(step.conflicting_shared_vertices) + " group" +
-            (step.conflicting_shared_vertices == 1 ? "" : "s") +
-            " of boundary nodes at the same coordinates were given different motions: the nodes separate, and the "
+            (step.conflicting_shared_vertices == 1 ? " of boundary nodes at the same coordinates was"
+                                                    : "s of boundary nodes at the same coordinates were") +
+            " given different motions: the nodes separate, and the "
             "volume nodes follow the first moving node of each group"};
 }
 
