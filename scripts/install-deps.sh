@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config python3
+  build-essential cmake pkg-config python3 python3-jsonschema
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libnanoflann-dev libcli11-dev nlohmann-json3-dev
   libgmsh-dev libcairo2-dev

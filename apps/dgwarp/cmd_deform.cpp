@@ -126,6 +126,9 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         return run;
     }
     if (text && !several) print_plan(std::cout, in, run.planned);
+    if (text && several)
+        for (const auto& w : plan_warnings(run.planned))
+            std::cerr << "warning: " << method_name(method) << ": " << w << "\n";
     const auto out = method_output(a.output, method, several);
     Mesh deformed = in.mesh;
     for (std::size_t k = 0; k < frames; ++k) {
@@ -145,6 +148,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             break;
         }
         f.deform_seconds = sw.lap();
+        for (auto& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
         const std::vector<double> quality = cell_qualities(deformed, in.orientation);
         const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
         f.quality = summarize_quality(quality);
@@ -226,6 +230,9 @@ void run_deform(const DeformArgs& a) {
     if (a.json) {
         nlohmann::json j = inputs_json(in, "deform");
         j["output"] = a.output;
+        for (const auto& r : runs)
+            for (const auto& w : plan_warnings(r.planned))
+                j["warnings"].push_back(several ? std::string(method_name(r.planned.method)) + ": " + w : w);
         if (several) {
             j["methods"] = nlohmann::json::array();
             for (const auto& r : runs) j["methods"].push_back(run_json(in, r));

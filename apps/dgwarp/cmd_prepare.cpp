@@ -31,6 +31,7 @@ void run_prepare(const PrepareArgs& a) {
         nlohmann::json j = inputs_json(in, "prepare");
         j["method"] = "dg-idw";
         j["plan"] = plan_json(in, p);
+        for (const auto& w : plan_warnings(p)) j["warnings"].push_back(w);
         j["output"] = a.output;
         j["seconds"]["write"] = write_seconds;
         std::cout << j.dump(2) << "\n";

@@ -1,6 +1,7 @@
 #include "deform_setup.hpp"
 
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
@@ -157,6 +158,25 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
     return p;
 }
 
+std::vector<std::string> plan_warnings(const PlannedMethod& p) {
+    const PlanSummary s = plan_summary(p.plan);
+    if (s.outside_hull == 0) return {};
+    return {std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
+            " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
+            std::string(method_name(p.method)) +
+            " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary "
+            "(far field, walls), it should be a marker of the mesh"};
+}
+
+std::vector<std::string> step_warnings(const StepReport& step) {
+    if (step.conflicting_shared_vertices == 0) return {};
+    return {std::to_string(step.conflicting_shared_vertices) + " group" +
+            (step.conflicting_shared_vertices == 1 ? " of boundary nodes at the same coordinates was"
+                                                    : "s of boundary nodes at the same coordinates were") +
+            " given different motions: the nodes separate, and the "
+            "volume nodes follow the first moving node of each group"};
+}
+
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames) {
     const auto& b = in.boundary.boundary;
     out << "mesh      " << in.args.mesh << ": " << describe_mesh(in.mesh) << "\n";
@@ -182,6 +202,7 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p) {
         out << ")";
     }
     out << "\n";
+    for (const auto& w : plan_warnings(p)) std::cerr << "warning: " << w << "\n";
 }
 
 nlohmann::json inputs_json(const Inputs& in, const std::string& command) {

@@ -68,9 +68,17 @@ struct PlannedMethod {
 
 PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress);
 
+/// Warnings about a plan: volume nodes outside the Delaunay graph's hull
+/// (DG-IDW and DGM extrapolate there).
+std::vector<std::string> plan_warnings(const PlannedMethod& p);
+
+/// Warnings about one step: boundary nodes at the same coordinates that were
+/// given different motions.
+std::vector<std::string> step_warnings(const StepReport& step);
+
 /// Lines about the mesh, motion and boundary.
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames);
-/// One line about the plan and its prepare time.
+/// Lines about the plan and its prepare time; its warnings on standard error.
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
 
 /// The JSON report's common part (docs/JSON.md).

@@ -45,7 +45,7 @@ BoundaryMotion wavy_motion(const BoxInBox& m, double amount = 0.05) {
 double interpolation_error(const RbfPlan& plan, const RbfCoefficients& c, const BoundaryMotion& motion) {
     const std::vector<double> d = rbf_boundary_displacements(plan, motion);
     std::vector<double> s(d.size());
-    evaluate_rbf(plan, c, plan.boundary_points, s);
+    evaluate_rbf(plan, c, plan.centre_points, s);
     double worst = 0;
     for (std::size_t b = 0; b < plan.boundary_nodes.size(); ++b) {
         double e2 = 0;

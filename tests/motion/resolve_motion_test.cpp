@@ -388,3 +388,70 @@ TEST(MotionResolve, SpecBuiltInCodeWithNodeTables) {
     for (NodeId n = 0; n < 3; ++n) EXPECT_EQ(motion_of(rb.boundary, f.motion, n).translation[1], n + 1.0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 3), NodeMotion{});
 }
+
+TEST(MotionResolve, AMotionForAnEmptyMarkerIsAWarningAndMovesNothing) {
+    Mesh mesh = two_squares();
+    mesh.markers.push_back(Marker{"slat", {}});  // SU2 MARKER_ELEMS= 0, a Gmsh physical group without elements
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec_of(R"({"markers": {"slat": {"translate": [0.1, 0]}}})"));
+    EXPECT_EQ(rb.boundary.nodes.size(), 8u);
+    EXPECT_EQ(rb.boundary.moving, std::vector<std::uint8_t>(8, 0));
+    EXPECT_EQ(rb.moving_markers, std::vector<std::string>{"slat"});
+    ASSERT_EQ(rb.warnings.size(), 1u);
+    EXPECT_TRUE(contains(rb.warnings[0], "names marker 'slat', which has no elements")) << rb.warnings[0];
+    // An empty marker the motion does not name: no warning.
+    EXPECT_TRUE(resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})")).warnings.empty());
+    // A node file for it: its nodes are not on the marker, an error naming the marker and node.
+    const auto dir = test::scratch_dir();
+    write(dir / "d.csv", "node,dx,dy\n4,0.1,0\n");
+    const MeshError e = mesh_error_of(
+        [&] { resolve_boundary(mesh, spec_in(dir, R"({"markers": {"slat": {"displacement_file": "d.csv"}}})")); });
+    EXPECT_EQ(e.marker(), "slat");
+    EXPECT_EQ(e.index(), 4);
+}
+
+TEST(MotionResolve, BoundaryNodesAtTheSameCoordinatesAreAWarning) {
+    // A zero-length boundary edge: node 9 is at node 6's coordinates, and the line 6-9 is on the airfoil.
+    Mesh mesh = two_squares();
+    mesh.points.insert(mesh.points.end(), {0.5, 0.5});
+    const NodeId edge[] = {6, 9};
+    mesh.markers[0].elements.push_back(CellType::line, edge);
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})"));
+    EXPECT_EQ(rb.boundary.nodes.size(), 9u);
+    ASSERT_EQ(rb.warnings.size(), 1u);
+    EXPECT_TRUE(contains(rb.warnings[0], "2 boundary nodes are at the same coordinates")) << rb.warnings[0];
+    EXPECT_TRUE(contains(rb.warnings[0], "nodes 6 and 9 at (0.5, 0.5)")) << rb.warnings[0];
+    // Both move with the marker.
+    const auto f = resolve_frame(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})"), rb.boundary, 0);
+    EXPECT_EQ(motion_of(rb.boundary, f.motion, 6), motion_of(rb.boundary, f.motion, 9));
+    // A boundary element whose two nodes are one node id: no coincident pair, no warning.
+    Mesh same_id = two_squares();
+    const NodeId loop[] = {6, 6};
+    same_id.markers[0].elements.push_back(CellType::line, loop);
+    EXPECT_TRUE(resolve_boundary(same_id, spec_of(R"({"markers": {"airfoil": "fixed"}})")).warnings.empty());
+}
+
+TEST(MotionResolve, ATurnOver180DegreesInOneStepIsAWarning) {
+    const Mesh mesh = two_squares();
+    const auto turn = [&](double degrees) {
+        return resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"rotate": {"angle_deg": )" +
+                                              std::to_string(degrees) + R"(, "center": [0, 0]}}}})"))
+            .warnings;
+    };
+    const auto w = turn(270);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_TRUE(contains(w[0], "marker 'airfoil' turns by 270 degrees")) << w[0];
+    EXPECT_TRUE(turn(180).empty());
+    EXPECT_TRUE(turn(-90).empty());
+}
+
+TEST(MotionResolve, AMeshWhoseMarkersAreAllEmptyIsAnError) {
+    Mesh mesh = two_squares();
+    for (Marker& m : mesh.markers) m.elements = {};
+    const MeshError e =
+        mesh_error_of([&] { resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})")); });
+    EXPECT_TRUE(contains(e.what(), "no boundary nodes")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "every marker (airfoil, farfield) is empty")) << e.what();
+    mesh.markers.clear();
+    EXPECT_TRUE(contains(mesh_error_of([&] { resolve_boundary(mesh, spec_of(R"({"markers": {}})")); }).what(),
+                         "it has no markers"));
+}

@@ -64,6 +64,7 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                                      StepReport r;
                                      r.rbf_centres = rbf.centres;
                                      r.rbf_boundary_error = rbf.boundary_error;
+                                     r.conflicting_shared_vertices = rbf.conflicting_shared_centres;
                                      return r;
                                  }},
                       plan);

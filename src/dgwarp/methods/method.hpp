@@ -51,7 +51,7 @@ using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan>;
 
 /// What one step did, whatever the method (fields a method does not use keep their defaults).
 struct StepReport {
-    std::int64_t conflicting_shared_vertices = 0;  // DG-IDW, DGM: shared graph vertices with differing motions
+    std::int64_t conflicting_shared_vertices = 0;  // DG-IDW, DGM, RBF: shared graph vertices (RBF centres) with differing motions
     int substeps = 1;                               // DGM: increments used (1 = one step)
     std::int64_t invalid_graph_simplices = 0;       // DGM: invalid simplices of the graph moved in one step
     std::int64_t rbf_centres = 0;                   // RBF: centres used (all boundary nodes without greedy reduction)

@@ -12,7 +12,9 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/graph/coincident_points.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
+#include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/rbf_centre_index.hpp"
 #include "dgwarp/methods/rbf_internal.hpp"
 
@@ -57,6 +59,27 @@ std::array<double, 3> box_centre(int dim, std::span<const double> boundary_point
     return c;
 }
 
+// The centres of `plan` (boundary_nodes and boundary_moving set): one per
+// distinct position, taking the motion of its first moving boundary node.
+void make_centres(std::span<const double> points, RbfPlan& plan) {
+    const int dim = plan.dim;
+    const CoincidentGroups groups = group_coincident_points(dim, points, plan.boundary_nodes);
+    plan.centre_points.reserve(groups.size() * static_cast<std::size_t>(dim));
+    plan.centre_source.reserve(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const auto first = groups.members.begin() + groups.offsets[g];
+        const auto last = groups.members.begin() + groups.offsets[g + 1];
+        const auto mover = std::find_if(first, last, [&](std::int32_t b) { return plan.boundary_moving[b] != 0; });
+        plan.centre_source.push_back(mover != last ? *mover : *first);
+        const auto n = static_cast<std::size_t>(plan.boundary_nodes[static_cast<std::size_t>(*first)]);
+        for (int d = 0; d < dim; ++d) plan.centre_points.push_back(points[n * dim + d]);
+        if (last - first > 1) {
+            plan.shared_members.insert(plan.shared_members.end(), first, last);
+            plan.shared_offsets.push_back(static_cast<std::int32_t>(plan.shared_members.size()));
+        }
+    }
+}
+
 void check_sizes(const RbfPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
                  std::span<double> out) {
     const auto expected = static_cast<std::size_t>(plan.num_points) * static_cast<std::size_t>(plan.dim);
@@ -75,9 +98,9 @@ void check_sizes(const RbfPlan& plan, std::span<const double> points, const Boun
 // max_b |s(x_b) - d_b| for the coefficients c.
 double boundary_error(const RbfPlan& plan, const RbfCoefficients& c, std::span<const double> d) {
     std::vector<double> s(d.size());
-    evaluate_rbf(plan, c, plan.boundary_points, s);
+    evaluate_rbf(plan, c, plan.centre_points, s);
     double worst = 0;
-    for (std::size_t b = 0; b < plan.boundary_nodes.size(); ++b) {
+    for (std::size_t b = 0; b < plan.num_centres(); ++b) {
         double e2 = 0;
         for (int k = 0; k < plan.dim; ++k) e2 += (s[b * plan.dim + k] - d[b * plan.dim + k]) * (s[b * plan.dim + k] - d[b * plan.dim + k]);
         worst = std::max(worst, std::sqrt(e2));
@@ -99,21 +122,19 @@ RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& 
     const std::size_t num_points = checked_point_count("RBF", dim, points);
     check_options(options);
     check_boundary_set(num_points, boundary);
-    if (boundary.nodes.size() < static_cast<std::size_t>(dim + 1))
-        throw MeshError("RBF needs at least " + std::to_string(dim + 1) + " boundary nodes in " + std::to_string(dim) +
-                        "D, got " + std::to_string(boundary.nodes.size()));
 
     RbfPlan plan;
     plan.dim = dim;
     plan.num_points = static_cast<std::int64_t>(num_points);
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
-    plan.boundary_points.reserve(boundary.nodes.size() * static_cast<std::size_t>(dim));
-    for (NodeId n : boundary.nodes)
-        for (int d = 0; d < dim; ++d) plan.boundary_points.push_back(points[static_cast<std::size_t>(n) * dim + d]);
+    make_centres(points, plan);
+    if (plan.num_centres() < static_cast<std::size_t>(dim + 1))
+        throw MeshError("RBF needs at least " + std::to_string(dim + 1) + " boundary nodes at distinct positions in " +
+                        std::to_string(dim) + "D, got " + std::to_string(plan.num_centres()));
     plan.diagonal = boundary_diagonal(dim, points, boundary, false);
     if (!(plan.diagonal > 0)) throw MeshError("RBF: all boundary nodes are at the same point");
-    plan.shift = box_centre(dim, plan.boundary_points);
+    plan.shift = box_centre(dim, plan.centre_points);
     plan.radius = options.support_radius > 0 ? options.support_radius : plan.diagonal;
     plan.compact = plan.radius < plan.diagonal;
     plan.greedy_tolerance = options.greedy_tolerance;
@@ -123,11 +144,11 @@ RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& 
 
     const auto t0 = Clock::now();
     if (plan.compact || (options.greedy_tolerance == 0 && !plan.dense))
-        plan.index = build_centre_index(dim, plan.boundary_points);
+        plan.index = build_centre_index(dim, plan.centre_points);
     const double index_seconds = seconds_since(t0);
     if (options.greedy_tolerance == 0) {
         if (plan.dense) {
-            const std::size_t nb = boundary.nodes.size();
+            const std::size_t nb = plan.num_centres();
             check_dense_bytes(nb * nb * sizeof(double) + nb * (2 * dim + 2) * sizeof(double), plan.max_dense_bytes,
                               "the dense " + std::to_string(nb) + " x " + std::to_string(nb) +
                                   " RBF system (factorised in place, plus P and M^-1 P)");
@@ -143,13 +164,14 @@ std::vector<double> rbf_boundary_displacements(const RbfPlan& plan, const Bounda
         throw MeshError("RBF: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
                         std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
     const int dim = plan.dim;
-    std::vector<double> d(plan.boundary_points.size(), 0.0);
-    for (std::size_t b = 0; b < plan.boundary_nodes.size(); ++b) {
+    std::vector<double> d(plan.centre_points.size(), 0.0);
+    for (std::size_t c = 0; c < plan.num_centres(); ++c) {
+        const auto b = static_cast<std::size_t>(plan.centre_source[c]);
         if (!plan.boundary_moving[b]) continue;
-        const std::span<const double> x(plan.boundary_points.data() + b * dim, dim);
+        const std::span<const double> x(plan.centre_points.data() + c * dim, dim);
         double y[3];
         apply_motion(motion[b], x, std::span<double>(y, dim));
-        for (int k = 0; k < dim; ++k) d[b * dim + k] = y[k] - x[k];
+        for (int k = 0; k < dim; ++k) d[c * dim + k] = y[k] - x[k];
     }
     return d;
 }
@@ -186,12 +208,16 @@ RbfStepReport deform_rbf(const RbfPlan& plan, std::span<const double> points, co
     });
     RbfStepReport report = c.report;
     report.evaluate_seconds = seconds_since(t0);
+    report.conflicting_shared_centres =
+        count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion);
     return report;
 }
 
 std::size_t plan_bytes(const RbfPlan& plan) {
     return plan.boundary_nodes.capacity() * sizeof(NodeId) + plan.boundary_moving.capacity() +
-           plan.boundary_points.capacity() * sizeof(double) +
+           plan.centre_points.capacity() * sizeof(double) +
+           (plan.centre_source.capacity() + plan.shared_offsets.capacity() + plan.shared_members.capacity()) *
+               sizeof(std::int32_t) +
            (plan.factorization ? factorization_bytes(*plan.factorization) : 0) +
            (plan.index ? index_bytes(*plan.index) : 0);
 }

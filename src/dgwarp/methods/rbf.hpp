@@ -86,7 +86,18 @@ struct RbfPlan {
     std::int64_t num_points = 0;
     std::vector<NodeId> boundary_nodes;         // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
-    std::vector<double> boundary_points;        // num_boundary × dim, row-major, boundary order
+    /// The centres: the distinct positions of the boundary nodes, num_centres
+    /// × dim, row-major, in the order of their first boundary index. Boundary
+    /// nodes at the same coordinates (zero-length boundary edges) are one
+    /// centre: two equal centres would make M singular.
+    std::vector<double> centre_points;
+    /// Per centre: the boundary index whose motion it interpolates (the first
+    /// moving node at that position, else the first node), as DG-IDW's graph vertices.
+    std::vector<std::int32_t> centre_source;
+    /// Centres standing for several boundary nodes: group g holds boundary
+    /// indices shared_members[shared_offsets[g] .. shared_offsets[g+1]), ascending.
+    std::vector<std::int32_t> shared_offsets{0};
+    std::vector<std::int32_t> shared_members;
     double radius = 0;            // R used
     double diagonal = 0;          // D: the boundary's bounding-box diagonal
     std::array<double, 3> shift{};  // x̄: the centre of the boundary's bounding box
@@ -95,9 +106,10 @@ struct RbfPlan {
     double greedy_tolerance = 0;  // 0: the full system, factorised here
     std::size_t max_dense_bytes = 0;  // resolved (never 0)
     std::shared_ptr<const RbfFactorization> factorization;  // null with greedy reduction
-    std::shared_ptr<const RbfCentreIndex> index;            // over boundary_points; null unless compact
+    std::shared_ptr<const RbfCentreIndex> index;            // over centre_points; null unless compact
     RbfPrepareStats stats;
 
+    std::size_t num_centres() const { return centre_source.size(); }
     std::int64_t num_volume_nodes() const {
         return num_points - static_cast<std::int64_t>(boundary_nodes.size());
     }
@@ -106,7 +118,7 @@ struct RbfPlan {
 /// Builds the plan for `points` (num_points × dim, original coordinates) and
 /// `boundary`. Without greedy reduction it builds and factorises M.
 /// Throws MeshError for a bad point array or boundary set, fewer than dim + 1
-/// boundary nodes, or boundary nodes that are all collinear (2D) / coplanar
+/// distinct boundary positions, or boundary nodes that are all collinear (2D) / coplanar
 /// (3D) so the linear polynomial is undetermined; Error for bad options, for
 /// a dense system larger than max_dense_bytes (the message gives the bytes it
 /// would need), and for a matrix that is numerically not positive definite
@@ -116,8 +128,9 @@ RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& 
 
 /// What one step did.
 struct RbfStepReport {
-    std::int64_t centres = 0;    // centres used (all boundary nodes without reduction)
-    double boundary_error = 0;   // max over boundary nodes of |s(x_b) - d_b| (mesh units)
+    std::int64_t centres = 0;    // centres used (all distinct boundary positions without reduction)
+    double boundary_error = 0;   // max over the centres of |s(x_c) - d_c| (mesh units)
+    std::int64_t conflicting_shared_centres = 0;  // centres whose boundary nodes were given different motions
     double solve_seconds = 0;    // coefficients (including the greedy loop)
     double evaluate_seconds = 0; // volume nodes
 };
@@ -125,7 +138,7 @@ struct RbfStepReport {
 /// The interpolant of one motion.
 struct RbfCoefficients {
     int dim = 3;
-    std::vector<std::int32_t> centres;  // boundary index of each centre
+    std::vector<std::int32_t> centres;  // index of each centre in the plan's centre_points
     std::vector<double> centre_points;  // centres.size() × dim, row-major
     std::vector<double> alpha;          // centres.size() × dim, row-major
     /// (dim + 1) × dim, row-major: the constant row, then one row per
@@ -135,8 +148,9 @@ struct RbfCoefficients {
     RbfStepReport report;                         // centres, boundary_error, solve_seconds
 };
 
-/// The boundary displacements d_b = apply_motion(x_b) - x_b of one motion
-/// (zero for static nodes): num_boundary × dim, row-major.
+/// The displacements of the centres d_c = apply_motion(x_c) - x_c of one
+/// motion, with the motion of centre_source[c] (zero for a static one):
+/// num_centres × dim, row-major.
 std::vector<double> rbf_boundary_displacements(const RbfPlan& plan, const BoundaryMotion& motion);
 
 /// Solves for the interpolant of `motion` (one NodeMotion per boundary node):

@@ -44,7 +44,7 @@ struct Greedy {
     std::vector<double> beta;    // np × dim, row-major
     std::vector<double> error;   // |s(x_b) - d_b| per boundary node
 
-    const double* x(std::size_t b) const { return plan.boundary_points.data() + b * dim; }
+    const double* x(std::size_t b) const { return plan.centre_points.data() + b * dim; }
 
     // Adds boundary node k as a centre; false when it is numerically dependent.
     bool add(std::size_t k) {
@@ -191,7 +191,7 @@ struct Greedy {
 
 void solve_greedy(const RbfPlan& plan, std::span<const double> d, RbfCoefficients& c) {
     const int dim = plan.dim;
-    Greedy g{plan, d, dim, dim + 1, plan.boundary_nodes.size(), 1.0 / plan.radius, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    Greedy g{plan, d, dim, dim + 1, plan.num_centres(), 1.0 / plan.radius, {}, {}, {}, {}, {}, {}, {}, {}, {}};
     g.is_centre.assign(g.nb, 0);
     g.error.resize(g.nb);
     for (std::size_t b = 0; b < g.nb; ++b) {

@@ -42,18 +42,17 @@ struct RbfFactorization {
 namespace {
 
 std::string not_positive_definite(const RbfPlan& plan) {
-    return "RBF: the " + std::to_string(plan.boundary_nodes.size()) + " x " +
-           std::to_string(plan.boundary_nodes.size()) +
+    return "RBF: the " + std::to_string(plan.num_centres()) + " x " + std::to_string(plan.num_centres()) +
            " interpolation matrix is numerically not positive definite (support radius " +
            std::to_string(plan.radius) +
            " is too large for the spacing of the boundary nodes); use a smaller support_radius or greedy reduction";
 }
 
 void factorize_dense(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& stats) {
-    const auto n = static_cast<std::int64_t>(plan.boundary_nodes.size());
+    const auto n = static_cast<std::int64_t>(plan.num_centres());
     const int dim = plan.dim;
     const double inv_radius = 1.0 / plan.radius;
-    const double* x = plan.boundary_points.data();
+    const double* x = plan.centre_points.data();
     auto t0 = Clock::now();
     f.m.resize(n, n);
     parallel_for(n, [&](std::int64_t j) {  // lower triangle, column j (contiguous)
@@ -69,10 +68,10 @@ void factorize_dense(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& 
 }
 
 void factorize_sparse(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& stats) {
-    const auto n = static_cast<std::int64_t>(plan.boundary_nodes.size());
+    const auto n = static_cast<std::int64_t>(plan.num_centres());
     const int dim = plan.dim;
     const double inv_radius = 1.0 / plan.radius;
-    const double* x = plan.boundary_points.data();
+    const double* x = plan.centre_points.data();
     auto t0 = Clock::now();
     // Column j of the lower triangle: the neighbours i >= j within R, in index order.
     std::vector<std::vector<Eigen::Triplet<double>>> columns(static_cast<std::size_t>(n));
@@ -112,12 +111,12 @@ std::shared_ptr<const RbfFactorization> factorize_rbf(const RbfPlan& plan, RbfPr
     else factorize_sparse(plan, *f, stats);
 
     const auto t0 = Clock::now();
-    const auto n = static_cast<std::int64_t>(plan.boundary_nodes.size());
+    const auto n = static_cast<std::int64_t>(plan.num_centres());
     const int np = plan.dim + 1;
     f->p.resize(n, np);
     for (std::int64_t i = 0; i < n; ++i) {
         double row[4];
-        polynomial_row(plan, plan.boundary_points.data() + i * plan.dim, row);
+        polynomial_row(plan, plan.centre_points.data() + i * plan.dim, row);
         for (int k = 0; k < np; ++k) f->p(i, k) = row[k];
     }
     f->g = f->solve(f->p);
@@ -139,7 +138,7 @@ std::size_t factorization_bytes(const RbfFactorization& f) {
 
 void solve_full(const RbfPlan& plan, std::span<const double> d, RbfCoefficients& c) {
     const RbfFactorization& f = *plan.factorization;
-    const auto n = static_cast<Eigen::Index>(plan.boundary_nodes.size());
+    const auto n = static_cast<Eigen::Index>(plan.num_centres());
     const int dim = plan.dim;
     const Eigen::MatrixXd rhs = Eigen::Map<const RowMajor>(d.data(), n, dim);
     const Eigen::MatrixXd y = f.solve(rhs);  // M⁻¹ d
@@ -148,7 +147,7 @@ void solve_full(const RbfPlan& plan, std::span<const double> d, RbfCoefficients&
 
     c.centres.resize(static_cast<std::size_t>(n));
     for (Eigen::Index i = 0; i < n; ++i) c.centres[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(i);
-    c.centre_points = plan.boundary_points;
+    c.centre_points = plan.centre_points;
     c.alpha.assign(alpha.data(), alpha.data() + alpha.size());
     c.beta.resize(static_cast<std::size_t>((dim + 1) * dim));
     for (int k = 0; k <= dim; ++k)

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <utility>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/graph/coincident_points.hpp"
 #include "dgwarp/motion/marker_node_motions.hpp"
 
 namespace dgwarp {
@@ -142,7 +144,7 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
     const NodeMotion zero{};
     for (std::size_t m = 0; m < n_markers; ++m) {
         if (!c.marker_moving[m]) continue;
-        double largest = 0;
+        double largest = 0, largest_angle = 0;
         NodeId largest_node = -1;
         for (std::size_t j = 0; j < c.marker_nodes[m].size(); ++j) {
             const NodeMotion& nm = node_motions[m].empty() ? zero : node_motions[m][j];
@@ -162,6 +164,15 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
                 largest = std::sqrt(d2);
                 largest_node = node;
             }
+            const Vec3& w = nm.rotation;
+            largest_angle = std::max(largest_angle, std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+        }
+        if (largest_angle > std::numbers::pi * (1 + 1e-12)) {
+            std::ostringstream w;
+            w << at << ": marker '" << mesh.markers[m].name << "' turns by " << largest_angle * 180 / std::numbers::pi
+              << " degrees in one step; the methods interpolate the rotation vector (axis x angle), so a turn over "
+                 "180 degrees is not the same as the shorter turn the other way: split it into frames";
+            warnings.push_back(w.str());
         }
         if (largest > c.diagonal && largest_node >= 0) {
             std::ostringstream w;
@@ -211,6 +222,42 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
     return resolved;
 }
 
+/// Warnings for markers the motion file names that have no nodes in the mesh.
+void warn_empty_named_markers(const Context& c, std::vector<std::string>& warnings) {
+    for (std::size_t m = 0; m < c.mesh.markers.size(); ++m) {
+        if (!c.marker_nodes[m].empty()) continue;
+        const std::string& name = c.mesh.markers[m].name;
+        const bool named = std::any_of(c.spec.frames.begin(), c.spec.frames.end(),
+                                       [&](const MotionFrame& f) { return f.markers.count(name) > 0; });
+        if (named)
+            warnings.push_back(where(c.spec, 0) + " names marker '" + name +
+                               "', which has no elements in the mesh (an empty marker, such as SU2's MARKER_ELEMS= 0 "
+                               "or a Gmsh physical group without elements): its motion acts on no node");
+    }
+}
+
+/// A warning when boundary nodes share their coordinates (zero-length
+/// boundary edges, such as a collapsed trailing edge).
+void warn_coincident_boundary_nodes(const Context& c, std::vector<std::string>& warnings) {
+    const CoincidentGroups groups = group_coincident_points(c.mesh.dim, c.mesh.points, c.boundary.nodes);
+    if (groups.size() == c.boundary.nodes.size()) return;
+    std::size_t nodes = 0, example = 0;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const auto size = static_cast<std::size_t>(groups.offsets[g + 1] - groups.offsets[g]);
+        if (size < 2) continue;
+        if (nodes == 0) example = g;
+        nodes += size;
+    }
+    const auto first = static_cast<std::size_t>(groups.offsets[example]);
+    const NodeId a = c.boundary.nodes[static_cast<std::size_t>(groups.members[first])];
+    const NodeId b = c.boundary.nodes[static_cast<std::size_t>(groups.members[first + 1])];
+    warnings.push_back(std::to_string(nodes) + " boundary nodes are at the same coordinates as another boundary node " +
+                       "(zero-length boundary edges, e.g. nodes " + std::to_string(a) + " and " + std::to_string(b) +
+                       " at " + point_text(point(c.mesh, a)) +
+                       "): each follows its own marker's motion; the methods use one position for them (DG-IDW and "
+                       "DGM one graph vertex, RBF one centre) with the motion of the first moving one");
+}
+
 }  // namespace
 
 ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
@@ -227,6 +274,18 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
             " on both a moving and a static marker; " +
             (spec.shared_nodes == SharedNodeRule::moving_wins ? "they follow the moving markers (shared_nodes: moving_wins)"
                                                               : "they stay fixed (shared_nodes: static_wins)"));
+
+    if (c.boundary.nodes.empty()) {
+        std::string list;
+        for (const Marker& m : mesh.markers) list += (list.empty() ? "" : ", ") + m.name;
+        throw MeshError(where(spec, 0) + ": the mesh has no boundary nodes: " +
+                            (list.empty() ? std::string("it has no markers")
+                                          : "every marker (" + list + ") is empty, without elements") +
+                            ". Every method moves the mesh from its boundary: give the mesh its boundary markers",
+                        mesh.markers.empty() ? std::string() : mesh.markers.front().name);
+    }
+    warn_coincident_boundary_nodes(c, out.warnings);
+    warn_empty_named_markers(c, out.warnings);
 
     // Resolve every frame the spec writes out (step 0 for periodic motions),
     // so that bad files and conflicts fail before any deformation.

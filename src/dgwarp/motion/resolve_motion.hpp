@@ -15,7 +15,10 @@
 //    markers and the number of nodes, except for nodes that static_wins holds
 //    fixed.
 //  - static nodes get the zero motion (t = 0, w = 0, c = 0).
-// Nothing here prints: warnings come back as strings.
+//  - warnings (strings, nothing here prints): a marker moving a node farther
+//    than the mesh's bounding-box diagonal, nodes on moving and static
+//    markers, boundary nodes at the same coordinates (zero-length boundary
+//    edges), a marker the motion names that has no elements.
 #include <cstddef>
 #include <string>
 #include <vector>

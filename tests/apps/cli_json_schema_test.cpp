@@ -1,0 +1,143 @@
+// Every --json report validates against its schema in docs/schema/ (checked
+// by tests/tools/check_json_schema.py with Debian's python3-jsonschema), and
+// a tampered report does not: the schemas are strict enough to catch a
+// renamed, missing or retyped field.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/test_paths.hpp"
+
+using namespace dgwarp::test;
+
+namespace {
+
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::stringstream s;
+    s << std::ifstream(p, std::ios::binary).rdbuf();
+    return s.str();
+}
+
+/// Validates `report` (JSON text, written to a file in `dir`) against docs/schema/COMMAND.schema.json.
+CommandResult validate(const std::filesystem::path& dir, const std::string& command, const std::string& report) {
+    const auto file = write_text(dir / ("report-" + command + ".json"), report);
+    return run_command(std::string(DGWARP_PYTHON) + " " + quoted(source_dir() / "tests/tools/check_json_schema.py") +
+                       " " + quoted(source_dir() / "docs/schema") + " " + command + " " + quoted(file));
+}
+
+/// Runs the CLI, expects exit 0, validates its standard output against COMMAND's schema.
+nlohmann::json valid_report(const std::filesystem::path& dir, const std::string& command, const std::string& args) {
+    const CommandResult r = run_cli(command + " " + args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const CommandResult v = validate(dir, command, r.out);
+    EXPECT_EQ(v.exit_code, 0) << command << " " << args << ":\n" << v.err << "\n" << r.out;
+    return nlohmann::json::parse(r.out);
+}
+
+/// `report` changed by `tamper` must fail validation, the message naming `expected`.
+void expect_invalid(const std::filesystem::path& dir, const std::string& command, nlohmann::json report,
+                    const std::function<void(nlohmann::json&)>& tamper, const std::string& expected) {
+    tamper(report);
+    const CommandResult v = validate(dir, command, report.dump());
+    EXPECT_EQ(v.exit_code, 1) << command << ": a tampered report passed (expected an error about " << expected << ")";
+    EXPECT_NE(v.err.find(expected), std::string::npos) << v.err;
+}
+
+struct RectBox {
+    std::filesystem::path dir, mesh, motion;
+};
+
+RectBox rect_box() {
+    RectBox c;
+    c.dir = scratch_dir();
+    EXPECT_EQ(run_cli("demo -o " + quoted(c.dir)).exit_code, 0);
+    c.mesh = c.dir / "rect_box.su2";
+    c.motion = write_text(c.dir / "m.json", R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})");
+    return c;
+}
+
+}  // namespace
+
+TEST(CliJsonSchema, EverySchemaIsValidAndTheToolRejectsBadUsage) {
+    // A report for a command without a schema file, and no arguments: usage errors (2), not "valid".
+    const auto dir = scratch_dir();
+    EXPECT_EQ(validate(dir, "no-such-command", "{}").exit_code, 2);
+    EXPECT_EQ(run_command(std::string(DGWARP_PYTHON) + " " + quoted(source_dir() / "tests/tools/check_json_schema.py"))
+                  .exit_code,
+              2);
+    EXPECT_EQ(validate(dir, "info", "not json").exit_code, 1);
+}
+
+TEST(CliJsonSchema, InfoAndQualityReportsValidateAndTamperedOnesDoNot) {
+    const RectBox c = rect_box();
+    const nlohmann::json info = valid_report(c.dir, "info", quoted(c.mesh) + " --json");
+    valid_report(c.dir, "quality", quoted(c.mesh) + " --json");
+    const nlohmann::json quality = valid_report(c.dir, "quality", quoted(c.mesh) + " --reference " + quoted(c.mesh) + " --json");
+    ASSERT_TRUE(quality.contains("ratio"));
+
+    expect_invalid(c.dir, "info", info, [](auto& j) { j["mesh"]["node_count"] = j["mesh"]["nodes"]; j["mesh"].erase("nodes"); },
+                   "node_count");
+    expect_invalid(c.dir, "info", info, [](auto& j) { j.erase("bounding_box"); }, "bounding_box");
+    expect_invalid(c.dir, "info", info, [](auto& j) { j["quality"]["min"] = "0.5"; }, "quality/min");
+    expect_invalid(c.dir, "info", info, [](auto& j) { j["quality"]["histogram"]["counts"].push_back(0); }, "counts");
+    expect_invalid(c.dir, "info", info, [](auto& j) { j["schema_version"] = 2; }, "schema_version");
+    expect_invalid(c.dir, "info", info, [](auto& j) { j["mesh"]["markers"][0].erase("elements"); }, "elements");
+    expect_invalid(c.dir, "quality", quality, [](auto& j) { j.erase("ratio"); }, "ratio");
+    expect_invalid(c.dir, "quality", quality, [](auto& j) { j["ratio"]["worst"] = 0; }, "worst");
+}
+
+TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
+    const RectBox c = rect_box();
+    const std::string inputs = quoted(c.mesh) + " -m " + quoted(c.motion);
+    const nlohmann::json one = valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "out.su2") + " --json");
+    const nlohmann::json all =
+        valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "cmp.su2") + " --method all --json");
+    ASSERT_EQ(all.at("methods").size(), 4u);
+    const nlohmann::json prepared = valid_report(c.dir, "prepare", inputs + " -o " + quoted(c.dir / "m.plan") + " --json");
+    valid_report(c.dir, "deform", inputs + " --plan " + quoted(c.dir / "m.plan") + " -o " + quoted(c.dir / "p.su2") + " --json");
+    // A time series, and a motion far larger than the mesh (a warning; cells invert: exit 3, report on stdout).
+    const auto pitch = write_text(c.dir / "pitch.json", R"({
+        "markers": {"rectangle": {"periodic": {"pitch": {"amplitude_deg": 5, "frequency": 1, "center": [0, 0]}}}},
+        "time": {"time_step": 0.25, "steps": 3}})");
+    const nlohmann::json series = valid_report(
+        c.dir, "deform", quoted(c.mesh) + " -m " + quoted(pitch) + " -o " + quoted(c.dir / "f.su2") + " --json");
+    EXPECT_EQ(series.at("frames").size(), 3u);
+    const auto huge = write_text(c.dir / "huge.json", R"({"markers": {"rectangle": {"translate": [60, 0]}}})");
+    const CommandResult r = run_cli("deform " + quoted(c.mesh) + " -m " + quoted(huge) + " -o " +
+                                    quoted(c.dir / "h.su2") + " --json");
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    const CommandResult v = validate(c.dir, "deform", r.out);
+    EXPECT_EQ(v.exit_code, 0) << v.err;
+    EXPECT_FALSE(nlohmann::json::parse(r.out).at("warnings").empty());
+
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j.erase("plan"); }, "plan");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["frames"][0]["seconds"].erase("deform"); }, "deform");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["boundary"]["moving"] = j["boundary"]["moving_nodes"]; }, "moving");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["method"] = "spring"; }, "spring");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["methods"] = nlohmann::json::array(); }, "methods");
+    expect_invalid(c.dir, "deform", all, [](auto& j) { j["methods"][1]["plan"].erase("outside_hull"); }, "outside_hull");
+    expect_invalid(c.dir, "deform", all, [](auto& j) { j["method"] = "dg-idw"; }, "method");
+    expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["seconds"].erase("write"); }, "write");
+    expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["options"]["length_scale"] = "big"; }, "length_scale");
+}
+
+TEST(CliJsonSchema, BenchReportValidatesAndATamperedOneDoesNot) {
+    const auto dir = scratch_dir(), js = dir / "bench.json";
+    const CommandResult r = run_cli("bench --case rect-box --json " + quoted(js));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string text = slurp(js);
+    const CommandResult v = validate(dir, "bench", text);
+    EXPECT_EQ(v.exit_code, 0) << v.err;
+    expect_invalid(dir, "bench", nlohmann::json::parse(text), [](auto& j) { j["rows"][0]["methods"][0].erase("paper"); },
+                   "paper");
+}
