@@ -129,7 +129,7 @@ TEST(CasesWingBody, IdwFoldKeepsEveryCellValid) {
 
 // DG-IDW (the paper's formula, L = 1) puts every boundary node where the fold
 // says, but does NOT keep every cell valid: on this coarse mesh one cell of
-// 53,679 inverts, above the fuselage (711 of 1.39 M at the paper's size). A
+// 53,679 inverts, above the fuselage (902 of 1.52 M at the paper's size). A
 // volume node there lies in a Delaunay-graph simplex with a wing vertex and
 // turns with the wing about the hinge ~1 away (moves ~0.1), while its neighbour
 // in a simplex without one stays put: the jump is larger than the cells

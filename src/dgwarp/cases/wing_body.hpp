@@ -5,7 +5,7 @@
 // text, generated with Gmsh's library (OCC kernel; Delaunay 3D, one thread:
 // deterministic).
 //
-// Geometry (lengths in fuselage radii × 1/0.6; the half model, y >= 0):
+// Geometry (mesh units; the half model, y >= 0):
 //   fuselage  a capsule along x: radius 0.6, length 10 (nose at x = -5)
 //   wing      elliptic sections 12 % thick, chord 2.2 at the root (y = 0, inside the
 //             fuselage) to 0.9 at the tip (y = 6), leading edge from x = -1.1 to
