@@ -34,8 +34,9 @@ void add_case_command(CLI::App& app) {
     for (const auto& n : case_names()) names += (names.empty() ? "" : ", ") + n;
     cmd->add_option("name", args->name, "The case: " + names)->required();
     cmd->add_option("-o,--output", args->output, "Output mesh (.su2, .msh, .vtu)")->required();
-    cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~404k), 2 (~826k)");
-    cmd->footer("Examples:\n  dgwarp case naca0012 -o naca0012.su2\n  dgwarp case squeezed-sphere --size 1 -o sphere.msh");
+    cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~404k), 2 (~826k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
+    cmd->footer("Examples:\n  dgwarp case naca0012 -o naca0012.su2\n  dgwarp case squeezed-sphere --size 1 -o sphere.msh\n"
+                "  dgwarp case wing-body --size 1 -o wing-body.su2");
     cmd->callback([args] { run_case(*args); });
 }
 

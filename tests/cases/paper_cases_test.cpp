@@ -21,7 +21,8 @@ std::pair<std::vector<double>, ResolvedBoundary> moved(const Mesh& mesh, const C
 }  // namespace
 
 TEST(CasesPaper, NamesSizesAndUnknownNames) {
-    EXPECT_EQ(case_names().size(), 4u);
+    EXPECT_EQ(case_names().size(), 5u);
+    EXPECT_EQ(case_names().back(), "wing-body");
     EXPECT_EQ(case_size_count("squeezed-sphere"), 3);
     EXPECT_EQ(case_size_count("naca0012"), 1);
     EXPECT_THROW(make_case("nope"), Error);

@@ -7,6 +7,7 @@
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/cases/sphere_box.hpp"
 #include "dgwarp/cases/twisted_bar.hpp"
+#include "dgwarp/cases/wing_body.hpp"
 #include "dgwarp/core/error.hpp"
 
 namespace dgwarp {
@@ -87,12 +88,26 @@ CaseMotion squeeze(const Mesh& mesh) {
             one_marker("sphere", PrescribedDisplacements{std::move(table)})};
 }
 
+/// The outer wing folded up by 20° about its hinge line (wing-body.hpp).
+CaseMotion fold(const Mesh& mesh) {
+    (void)find_marker(mesh, "wing");  // throws MeshError when the mesh has no wing
+    const WingHinge hinge = wing_body_hinge();
+    NodeMotion m;
+    for (int k = 0; k < 3; ++k) m.rotation[k] = 20 * degree * hinge.axis[k];
+    m.center = hinge.point;
+    return {"fold-20", "the outer wing folds up by 20° about its hinge line at the root",
+            one_marker("wing", RigidMotion{m})};
+}
+
 }  // namespace
 
-std::vector<std::string> case_names() { return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere"}; }
+std::vector<std::string> case_names() {
+    return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere", "wing-body"};
+}
 
 int case_size_count(std::string_view name) {
     if (name == "squeezed-sphere") return 3;
+    if (name == "wing-body") return 2;
     for (const auto& n : case_names())
         if (n == name) return 1;
     throw Error("unknown case '" + std::string(name) + "'; the cases are " + known_cases());
@@ -105,6 +120,7 @@ Mesh make_case(std::string_view name, int size) {
     if (name == "rect-box") return make_rect_box();
     if (name == "naca0012") return make_naca0012();
     if (name == "twisted-bar") return make_twisted_bar();
+    if (name == "wing-body") return make_wing_body(wing_body_size(size));
     return make_sphere_box(sphere_box_paper_size(size));
 }
 
@@ -123,6 +139,7 @@ std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh) {
                 rigid("airfoil", "rotate-45", "the airfoil turns 45° counter-clockwise about (0.25, 0)", 45,
                       {0.25, 0, 0}, {0, 0, 0})};
     if (name == "twisted-bar") return {twist(mesh, 0), twist(mesh, 45)};
+    if (name == "wing-body") return {fold(mesh)};
     return {squeeze(mesh)};
 }
 

@@ -10,6 +10,7 @@
 //   naca0012         section 3.2, Tables 5-6   (make_naca0012)
 //   twisted-bar      section 4,   Tables 7-8   (make_twisted_bar)
 //   squeezed-sphere  section 5,   Tables 9-10  (make_sphere_box; sizes 0, 1, 2)
+//   wing-body        section 6,   Figs. 23-24  (make_wing_body; size 0 coarse, size 1 the paper's)
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,7 +23,7 @@ namespace dgwarp {
 /// The case names, in the paper's order.
 std::vector<std::string> case_names();
 
-/// How many sizes a case has (1, or 3 for squeezed-sphere).
+/// How many sizes a case has (1; 3 for squeezed-sphere, 2 for wing-body).
 int case_size_count(std::string_view name);
 
 /// The mesh of case `name` at size `size` (0 = smallest, < case_size_count).
@@ -47,6 +48,8 @@ struct CaseMotion {
 ///                    displacement per node (a shape deformation, the paper's dx, dy); twist-rotate-45:
 ///                    the twist followed by a rigid 45° rotation about the bar's centre
 ///   squeezed-sphere: squeeze: the sphere's node (x, y, z) moves to (1.1x, 1.1y, 0.8z), an ellipsoid
+///   wing-body:       fold-20: the outer wing (marker "wing") turns 20° about its hinge line
+///                    (wing_body_hinge(), along +x), tip up; body, symmetry and far field fixed
 /// Throws Error for an unknown name, MeshError when the mesh lacks the case's markers.
 std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh);
 
