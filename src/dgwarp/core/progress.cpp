@@ -22,7 +22,9 @@ void ProgressCounter::report() {
     const double f = total_ > 0 ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total_)) : 0.0;
     if (f <= reported_) return;
     reported_ = f;
-    next_.store(done + std::max<std::int64_t>(1, total_ / 100), std::memory_order_relaxed);  // a percent on
+    // A percent on, but never past the end: the add that completes the count
+    // must always find a report due, whatever thread reported last.
+    next_.store(std::min(total_, done + std::max<std::int64_t>(1, total_ / 100)), std::memory_order_relaxed);
     progress_(f);
 }
 
