@@ -27,11 +27,6 @@ void ProgressLine::phase(const std::string& text) {
     show(text + "...");
 }
 
-void ProgressLine::step(const std::string& text, std::size_t done, std::size_t total) {
-    std::lock_guard lock(mutex_);
-    show(text + "  " + std::to_string(done) + "/" + std::to_string(total));
-}
-
 void ProgressLine::fraction(const std::string& text, double f) {
     if (!active_) return;
     const int percent = static_cast<int>(std::floor(100 * std::clamp(f, 0.0, 1.0)));

@@ -24,8 +24,6 @@ public:
 
     /// Shows "phase..." (replacing the previous phase).
     void phase(const std::string& text);
-    /// Shows "phase  done/total" (e.g. frames).
-    void step(const std::string& text, std::size_t done, std::size_t total);
     /// Shows "phase  42%" for a fraction f in [0, 1]; redraws only when the
     /// shown percentage (or the phase) changes. Thread-safe, like every member.
     void fraction(const std::string& text, double f);
