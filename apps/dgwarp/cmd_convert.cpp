@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "progress_line.hpp"
 #include "report.hpp"
 
 namespace dgwarp::cli {
@@ -19,10 +20,13 @@ struct ConvertArgs {
 };
 
 void run_convert(const ConvertArgs& a) {
-    const Mesh mesh = read_mesh(a.input, {a.zone});
+    ProgressLine progress(!a.quiet);
+    const Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input));
+    progress.phase("writing " + a.output);
     WriteOptions options;
     options.gmsh_version = a.gmsh_version;
     write_mesh(a.output, mesh, {}, options);
+    progress.clear();
     if (!a.quiet) std::cout << a.input << " -> " << a.output << ": " << describe_mesh(mesh) << "\n";
 }
 

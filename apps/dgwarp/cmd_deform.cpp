@@ -135,12 +135,15 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         FrameResult f;
         f.frame = k;
         f.time = frame_time(in.spec, k);
-        if (frames > 1) progress.step(std::string(method_name(method)) + ": deforming frame", k + 1, frames);
+        const std::string phase = std::string(method_name(method)) + ": deforming" +
+                                  (frames > 1 ? " frame " + std::to_string(k + 1) + "/" + std::to_string(frames) : "");
+        progress.phase(phase);
         const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
         f.warnings = motion.warnings;
         Stopwatch sw;  // the deform time is the method's step alone
         try {
-            f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points, run.planned.options);
+            f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points, run.planned.options,
+                            progress.reporter(phase));
         } catch (const InvalidResultError& e) {
             if (!several) throw;
             run.error = e.what();

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "progress_line.hpp"
 #include "report.hpp"
 
 namespace dgwarp::cli {
@@ -19,9 +20,12 @@ struct InfoArgs {
 };
 
 void run_info(const InfoArgs& a) {
-    const Mesh mesh = read_mesh(a.mesh, {a.zone});
+    ProgressLine progress(!a.json);
+    const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh));
+    progress.phase("measuring quality");
     const BoundingBox box = bounding_box(mesh);
     const QualitySummary quality = summarize_quality(cell_qualities(mesh, dominant_orientations(mesh)));
+    progress.clear();
     const auto d = static_cast<std::size_t>(mesh.dim);
     if (a.json) {
         nlohmann::json j = {{"schema_version", json_schema_version},

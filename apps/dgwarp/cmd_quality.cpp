@@ -7,6 +7,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "progress_line.hpp"
 #include "report.hpp"
 
 namespace dgwarp::cli {
@@ -24,11 +25,13 @@ struct QualityArgs {
 
 void run_quality(const QualityArgs& a) {
     if (a.threads > 0) set_num_threads(a.threads);
-    const Mesh mesh = read_mesh(a.mesh, {a.zone});
+    ProgressLine progress(!a.json);
+    const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh));
     std::vector<std::int8_t> orientation;
     std::vector<double> original_quality;
     if (!a.reference.empty()) {
-        const Mesh reference = read_mesh(a.reference, {a.zone});
+        const Mesh reference = read_mesh(a.reference, {a.zone}, progress.reporter("reading " + a.reference));
+        progress.phase("measuring quality");
         if (reference.cells != mesh.cells)
             throw MeshError(a.reference + ": the reference mesh has other cells than " + a.mesh +
                             " (it must be the same mesh before deformation)");
@@ -37,8 +40,10 @@ void run_quality(const QualityArgs& a) {
     } else {
         orientation = dominant_orientations(mesh);
     }
+    progress.phase("measuring quality");
     const std::vector<double> quality = cell_qualities(mesh, orientation);
     const QualitySummary summary = summarize_quality(quality);
+    progress.clear();
 
     if (a.json) {
         nlohmann::json j = {{"schema_version", json_schema_version},

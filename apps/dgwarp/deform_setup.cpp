@@ -115,7 +115,7 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
     in.args = args;
     Stopwatch sw;
     progress.phase("reading " + args.mesh);
-    in.mesh = read_mesh(args.mesh, {args.zone});
+    in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh));
     in.spec = read_motion_file(args.motion);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
@@ -150,8 +150,10 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         p.options.dg_idw.weighting = loaded.weighting;
         p.plan = std::move(loaded);
     } else {
-        progress.phase("preparing " + std::string(method_name(method)));
-        p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.boundary.boundary, p.options);
+        const std::string phase = "preparing " + std::string(method_name(method));
+        progress.phase(phase);
+        p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.boundary.boundary, p.options,
+                         progress.reporter(phase));
     }
     p.prepare_seconds = sw.lap();
     progress.clear();

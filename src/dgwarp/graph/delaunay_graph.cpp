@@ -55,7 +55,8 @@ bool is_coherent_order(int dim, std::span<const double> points, std::span<const 
 
 LocatedGraph build_located_graph(int dim, std::span<const double> points,
                                  std::span<const NodeId> boundary_nodes,
-                                 std::span<const NodeId> query_nodes, const GraphOptions& options) {
+                                 std::span<const NodeId> query_nodes, const GraphOptions& options,
+                                 const ProgressFn& progress) {
     if (dim != 2 && dim != 3) throw MeshError("the Delaunay graph needs dim 2 or 3, got " + std::to_string(dim));
     if (points.size() % static_cast<std::size_t>(dim) != 0)
         throw MeshError("the point array holds " + std::to_string(points.size()) +
@@ -82,9 +83,11 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     const bool hilbert = options.order == LocateOrder::hilbert ||
                          (options.order == LocateOrder::automatic && !is_coherent_order(dim, points, query_nodes));
     const double order_seconds = seconds_since(t1);
+    if (progress) progress(0.0);
+    const ProgressFn locate_progress = progress_part(progress, graph_progress_share, 1.0);
     detail::TriangulationResult tri =
-        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, hilbert)
-                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, hilbert);
+        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, hilbert, locate_progress)
+                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, hilbert, locate_progress);
     out.graph.simplices = std::move(tri.simplices);
     out.location = std::move(tri.location);
     out.timings = tri.timings;

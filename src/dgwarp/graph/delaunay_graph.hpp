@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
@@ -81,9 +82,16 @@ bool is_coherent_order(int dim, std::span<const double> points, std::span<const 
 /// Throws MeshError when a node id is out of range, when there are fewer than
 /// dim + 1 distinct boundary points, or when they are all collinear (2D) /
 /// coplanar (3D), so that no graph simplex exists.
+///  progress:       gets the fraction done (core/progress.hpp): the
+///                  triangulation counts for the first graph_progress_share,
+///                  then each located block of 8192 nodes.
 LocatedGraph build_located_graph(int dim, std::span<const double> points,
                                  std::span<const NodeId> boundary_nodes,
                                  std::span<const NodeId> query_nodes,
-                                 const GraphOptions& options = {});
+                                 const GraphOptions& options = {}, const ProgressFn& progress = {});
+
+/// The part of build_located_graph's progress given to the triangulation
+/// (about its share of the time on large meshes; the rest is locating).
+inline constexpr double graph_progress_share = 0.4;
 
 }  // namespace dgwarp

@@ -37,7 +37,7 @@ Point point_of(std::span<const double> points, NodeId n) {
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order) {
+                                              bool hilbert_order, const ProgressFn& locate_progress) {
     TriangulationResult result;
     auto t0 = Clock::now();
 
@@ -73,6 +73,7 @@ TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
     const auto n = static_cast<std::int64_t>(order.size());
     const std::int64_t blocks = (n + locate_block_size - 1) / locate_block_size;
     std::vector<std::int64_t> outside(static_cast<std::size_t>(blocks), 0);
+    ProgressCounter located(locate_progress, n);
     parallel_for(blocks, [&](std::int64_t b) {
         Delaunay::Cell_handle hint;
         const std::int64_t end = std::min(n, (b + 1) * locate_block_size);
@@ -89,7 +90,9 @@ TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
             result.location.simplex[q] = c->info();
             hint = c;
         }
+        located.add(end - b * locate_block_size);
     });
+    located.finish();
     result.location.outside_count = std::accumulate(outside.begin(), outside.end(), std::int64_t{0});
     result.timings.locate_seconds = seconds_since(t0);
     return result;

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 
 namespace dgwarp::detail {
@@ -17,15 +18,16 @@ struct TriangulationResult {
 
 /// Delaunay triangulation of the points `vertex_node[v]` (graph vertex v; all
 /// distinct), then location of `query_nodes`. `points` is num_points × dim.
+/// `locate_progress` gets the fraction of the queries located, per block.
 /// Throws MeshError when the vertices do not span the plane / space.
 TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order);
+                                              bool hilbert_order, const ProgressFn& locate_progress);
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order);
+                                              bool hilbert_order, const ProgressFn& locate_progress);
 
 /// Queries are located in blocks of this many visits, each block walking from
 /// its own start, so blocks can run in parallel and the result does not

@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
@@ -35,7 +36,8 @@ namespace dgwarp {
 /// truncated or misplaced sections, wrong counts, bad numbers, unsupported
 /// element types, undefined node tags) and MeshError (no 2D/3D elements, a 2D
 /// mesh off the z = 0 plane, an inconsistent result).
-Mesh read_gmsh(const std::filesystem::path& path);
+/// `progress` (core/progress.hpp) gets the fraction of the file parsed.
+Mesh read_gmsh(const std::filesystem::path& path, const ProgressFn& progress = {});
 
 /// The same, from text in memory; `file_name` is used in error messages.
 Mesh read_gmsh_text(const std::string& file_name, std::string content);

@@ -122,11 +122,14 @@ Mesh read_gmsh_from(TextReader& r, std::size_t file_size) {
 
 }  // namespace
 
-Mesh read_gmsh(const std::filesystem::path& path) {
+Mesh read_gmsh(const std::filesystem::path& path, const ProgressFn& progress) {
     TextReader r = TextReader::open(path);
+    r.set_progress(progress);
     std::error_code ec;
     const auto size = std::filesystem::file_size(path, ec);
-    return read_gmsh_from(r, ec ? 0 : static_cast<std::size_t>(size));
+    Mesh mesh = read_gmsh_from(r, ec ? 0 : static_cast<std::size_t>(size));
+    if (progress) progress(1.0);
+    return mesh;
 }
 
 Mesh read_gmsh_text(const std::string& file_name, std::string content) {

@@ -29,10 +29,10 @@ std::string joined(const std::vector<std::string>& v) {
 std::vector<std::string> readable_extensions() { return {".su2", ".msh"}; }
 std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
 
-Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress) {
     const std::string ext = lower_extension(path);
-    if (ext == ".su2") return read_su2(path, options.zone);
-    if (ext == ".msh") return read_gmsh(path);
+    if (ext == ".su2") return read_su2(path, options.zone, progress);
+    if (ext == ".msh") return read_gmsh(path, progress);
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
                       joined(readable_extensions()));
 }

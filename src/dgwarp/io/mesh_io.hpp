@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
@@ -36,7 +37,10 @@ struct WriteOptions {
 /// an unsupported extension, IoError when the file cannot be read, ParseError
 /// (file, line, what was expected) when it is malformed, and MeshError when
 /// its content is inconsistent.
-Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options = {});
+/// `progress` (core/progress.hpp) gets the fraction of the file parsed
+/// (bytes read / file size, every 1% or 1 MiB, whichever is more), ending at 1.
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options = {},
+               const ProgressFn& progress = {});
 
 /// Writes a mesh atomically (temporary file, then rename); the format comes
 /// from the extension.

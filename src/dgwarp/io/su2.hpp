@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
@@ -24,7 +25,8 @@ namespace dgwarp {
 /// elements of the wrong dimension, node ids out of range, missing sections,
 /// counts the file cannot hold (rejected before any allocation), an absent
 /// zone; MeshError when the result fails validate().
-Mesh read_su2(const std::filesystem::path& path, int zone = 1);
+/// `progress` (core/progress.hpp) gets the fraction of the file parsed.
+Mesh read_su2(const std::filesystem::path& path, int zone = 1, const ProgressFn& progress = {});
 
 /// The same, from text in memory; `file_name` is used in error messages.
 Mesh read_su2_text(const std::string& file_name, std::string content, int zone = 1);

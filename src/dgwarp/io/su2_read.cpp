@@ -407,9 +407,12 @@ Mesh read_su2_text(const std::string& file_name, std::string content, int zone) 
     return read_su2_zone(r, zone);
 }
 
-Mesh read_su2(const std::filesystem::path& path, int zone) {
+Mesh read_su2(const std::filesystem::path& path, int zone, const ProgressFn& progress) {
     TextReader r = TextReader::open(path);
-    return read_su2_zone(r, zone);
+    r.set_progress(progress);
+    Mesh mesh = read_su2_zone(r, zone);
+    if (progress) progress(1.0);
+    return mesh;
 }
 
 }  // namespace dgwarp

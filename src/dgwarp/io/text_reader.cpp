@@ -1,5 +1,6 @@
 #include "dgwarp/io/text_reader.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -36,7 +37,20 @@ TextReader TextReader::open(const std::filesystem::path& path) {
 TextReader::TextReader(std::string file_name, std::string content)
     : file_(std::move(file_name)), content_(std::move(content)) {}
 
+void TextReader::set_progress(ProgressFn progress) {
+    progress_ = std::move(progress);
+    next_report_ = progress_ ? pos_ : static_cast<std::size_t>(-1);
+}
+
+void TextReader::report_progress() {
+    constexpr std::size_t mib = std::size_t{1} << 20;
+    const std::size_t size = content_.size();
+    progress_(size == 0 ? 1.0 : std::min(1.0, static_cast<double>(pos_) / static_cast<double>(size)));
+    next_report_ = pos_ + std::max(mib, size / 100);
+}
+
 bool TextReader::next_line() {
+    if (pos_ >= next_report_) report_progress();
     if (pos_ >= content_.size()) {
         line_ = {};
         cursor_ = 0;

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "dgwarp/core/progress.hpp"
+
 namespace dgwarp {
 
 class TextReader {
@@ -15,6 +17,10 @@ public:
     static TextReader open(const std::filesystem::path& path);
     /// A reader over `content`, reporting errors as coming from `file_name`.
     TextReader(std::string file_name, std::string content);
+
+    /// Reports the bytes consumed / the content's size to `progress` as
+    /// next_line() advances: every 1% or 1 MiB, whichever is more.
+    void set_progress(ProgressFn progress);
 
     /// Advances to the next line (the first call reads line 1); false at end of file.
     bool next_line();
@@ -57,6 +63,9 @@ private:
     std::string_view line_;
     std::size_t cursor_ = 0;  // position of the next token in line_
     std::size_t line_number_ = 0;
+    ProgressFn progress_;
+    std::size_t next_report_ = static_cast<std::size_t>(-1);  // position of the next progress report
+    void report_progress();
 };
 
 /// Parses a whole token as an integer / a finite double; false if malformed.

@@ -29,6 +29,7 @@
 #include <span>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/methods/mesh_fingerprint.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
@@ -134,8 +135,9 @@ struct DgIdwPlan {
 /// Throws MeshError for an inconsistent boundary set (unsorted, duplicate or
 /// out-of-range ids, size mismatch) or a degenerate boundary (fewer than
 /// dim + 1 distinct points, all collinear / coplanar), Error for bad options.
+/// `progress` gets the fraction done (the graph's, then the weights' share).
 DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const BoundarySet& boundary,
-                         const DgIdwOptions& options = {});
+                         const DgIdwOptions& options = {}, const ProgressFn& progress = {});
 
 /// What one deformation step found.
 struct DgIdwStepReport {

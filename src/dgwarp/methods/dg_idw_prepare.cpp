@@ -102,7 +102,7 @@ const char* weighting_name(DgIdwWeighting w) {
 }
 
 DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const BoundarySet& boundary,
-                         const DgIdwOptions& options) {
+                         const DgIdwOptions& options, const ProgressFn& progress) {
     const std::size_t num_points = check_points_and_boundary("DG-IDW", dim, points, boundary);
     check_dg_idw_options(options);
 
@@ -117,7 +117,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     // Volume nodes: every node not in the (sorted) boundary list.
     const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
 
-    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume);
+    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume, {}, progress_part(progress, 0, 0.9));
     plan.stats.graph_seconds = lg.timings.triangulate_seconds;
     plan.stats.locate_seconds = lg.timings.locate_seconds;
     plan.stats.outside_count = lg.location.outside_count;
@@ -176,6 +176,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     plan.stats.snapped_count = std::count(snapped.begin(), snapped.end(), std::uint8_t{1});
     plan.mesh = mesh_fingerprint(dim, points, boundary);
     plan.stats.weights_seconds = seconds_since(t0);
+    if (progress) progress(1.0);
     return plan;
 }
 

@@ -22,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -105,8 +106,9 @@ struct DgmPlan {
 /// Throws MeshError for an inconsistent boundary set (unsorted, duplicate or
 /// out-of-range ids, size mismatch) or a degenerate boundary (fewer than
 /// dim + 1 distinct points, all collinear / coplanar), Error for bad options.
+/// `progress` gets the fraction done (the graph's, then the coordinates' share).
 DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& boundary,
-                    const DgmOptions& options = {});
+                    const DgmOptions& options = {}, const ProgressFn& progress = {});
 
 /// What one deformation step found.
 struct DgmStepReport {

@@ -41,7 +41,7 @@ std::vector<double> barycentric_coordinates(int dim, std::span<const double> poi
 }  // namespace detail
 
 DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& boundary,
-                    const DgmOptions& options) {
+                    const DgmOptions& options, const ProgressFn& progress) {
     const std::size_t num_points = check_points_and_boundary("DGM", dim, points, boundary);
     detail::check_dgm_options(options);
 
@@ -51,7 +51,7 @@ DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& 
     plan.boundary_moving = boundary.moving;
     const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
 
-    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume);
+    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume, {}, progress_part(progress, 0, 0.9));
     plan.stats.graph_seconds = lg.timings.triangulate_seconds;
     plan.stats.locate_seconds = lg.timings.locate_seconds;
     plan.stats.outside_count = lg.location.outside_count;
@@ -71,6 +71,7 @@ DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& 
     for (std::size_t i = 0; i < volume.size(); ++i) plan.node_simplex[volume[i]] = lg.location.simplex[i];
     plan.simplices = std::move(lg.graph.simplices);
     plan.stats.barycentric_seconds = seconds_since(t0);
+    if (progress) progress(1.0);
     return plan;
 }
 

@@ -37,6 +37,7 @@
 #include <span>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -78,9 +79,10 @@ IdwPlan prepare_idw(int dim, std::span<const double> points, const BoundarySet& 
 /// dim, written completely (it may be `points` itself). Each volume node sums
 /// over all boundary nodes in boundary order, so the result does not depend
 /// on the thread count. Throws MeshError when a size does not match the plan,
-/// Error for bad options.
+/// Error for bad options. `progress` gets the fraction of volume nodes moved,
+/// per block of them.
 void deform_idw(const IdwPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                std::span<double> out, const IdwOptions& options = {});
+                std::span<double> out, const IdwOptions& options = {}, const ProgressFn& progress = {});
 
 /// Bytes held by the plan's arrays.
 std::size_t plan_bytes(const IdwPlan& plan);

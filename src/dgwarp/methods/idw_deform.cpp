@@ -22,6 +22,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/core/simd_clones.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/idw.hpp"
@@ -276,18 +277,26 @@ void deform_volume_range(const IdwPlan& plan, const StepArrays& a, MovingSums mo
 
 template <int Dim, bool Rotate>
 void deform_volume(const IdwPlan& plan, const StepArrays& a, const IdwOptions& options, double inv_l,
-                   const double* x0, double* out) {
+                   const double* x0, double* out, ProgressCounter& progress) {
     const MovingSums moving = pick_moving<Dim, Rotate>(options.exponent_moving);
     const StaticSums fixed = pick_static<Dim>(options.exponent_static);
+    // Each thread's chunk in blocks of progress_block nodes, a multiple of
+    // Lanes: the nodes are grouped into lanes as without the blocks (and each
+    // lane's sums are independent anyway).
+    constexpr std::int64_t progress_block = 256 * Lanes;
     parallel_for_chunks(plan.num_volume_nodes(), [&](std::int64_t begin, std::int64_t end) {
-        deform_volume_range<Dim, Rotate>(plan, a, moving, fixed, inv_l, x0, out, begin, end);
+        for (std::int64_t b = begin; b < end; b += progress_block) {
+            const std::int64_t e = std::min(end, b + progress_block);
+            deform_volume_range<Dim, Rotate>(plan, a, moving, fixed, inv_l, x0, out, b, e);
+            progress.add(e - b);
+        }
     });
 }
 
 }  // namespace
 
 void deform_idw(const IdwPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                std::span<double> out, const IdwOptions& options) {
+                std::span<double> out, const IdwOptions& options, const ProgressFn& progress) {
     check_idw_options(options);
     const auto expected = static_cast<std::size_t>(plan.num_points) * static_cast<std::size_t>(plan.dim);
     if (points.size() != expected)
@@ -312,12 +321,13 @@ void deform_idw(const IdwPlan& plan, std::span<const double> points, const Bound
     // Volume nodes first: they read only their own coordinates, and the
     // boundary's from the plan, so `out` may alias `points`.
     const double inv_l = 1.0 / l;
+    ProgressCounter moved(progress, plan.num_volume_nodes());
     if (plan.dim == 2) {
-        if (rotate) deform_volume<2, true>(plan, a, options, inv_l, points.data(), out.data());
-        else deform_volume<2, false>(plan, a, options, inv_l, points.data(), out.data());
+        if (rotate) deform_volume<2, true>(plan, a, options, inv_l, points.data(), out.data(), moved);
+        else deform_volume<2, false>(plan, a, options, inv_l, points.data(), out.data(), moved);
     } else {
-        if (rotate) deform_volume<3, true>(plan, a, options, inv_l, points.data(), out.data());
-        else deform_volume<3, false>(plan, a, options, inv_l, points.data(), out.data());
+        if (rotate) deform_volume<3, true>(plan, a, options, inv_l, points.data(), out.data(), moved);
+        else deform_volume<3, false>(plan, a, options, inv_l, points.data(), out.data(), moved);
     }
     const int dim = plan.dim;
     parallel_for(static_cast<std::int64_t>(plan.boundary_nodes.size()), [&](std::int64_t b) {
@@ -327,6 +337,7 @@ void deform_idw(const IdwPlan& plan, std::span<const double> points, const Bound
         if (plan.boundary_moving[b]) apply_motion(motion[b], x, y);
         else std::copy(x.begin(), x.end(), y.begin());
     });
+    moved.finish();
 }
 
 }  // namespace dgwarp

@@ -28,24 +28,33 @@ std::optional<Method> method_from_name(std::string_view name) {
 }
 
 Plan prepare(Method method, int dim, std::span<const double> points, const BoundarySet& boundary,
-             const MethodOptions& options) {
+             const MethodOptions& options, const ProgressFn& progress) {
     switch (method) {
-        case Method::dg_idw: return prepare_dg_idw(dim, points, boundary, options.dg_idw);
-        case Method::dgm: return prepare_dgm(dim, points, boundary, options.dgm);
-        case Method::idw: return prepare_idw(dim, points, boundary, options.idw);
-        case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf);
+        case Method::dg_idw: return prepare_dg_idw(dim, points, boundary, options.dg_idw, progress);
+        case Method::dgm: return prepare_dgm(dim, points, boundary, options.dgm, progress);
+        case Method::idw: {
+            Plan plan = prepare_idw(dim, points, boundary, options.idw);
+            if (progress) progress(1.0);
+            return plan;
+        }
+        case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf, progress);
     }
     return {};
 }
 
 StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                  std::span<double> out, const MethodOptions& options) {
+                  std::span<double> out, const MethodOptions& options, const ProgressFn& progress) {
+    // DG-IDW and DGM: one pass over the nodes, milliseconds; only the end is reported.
+    const auto done = [&](StepReport r) {
+        if (progress) progress(1.0);
+        return r;
+    };
     return std::visit(overloaded{[&](const DgIdwPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
                                          deform_dg_idw(p, points, motion, out, options.dg_idw)
                                              .conflicting_shared_vertices;
-                                     return r;
+                                     return done(r);
                                  },
                                  [&](const DgmPlan& p) {
                                      const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
@@ -53,14 +62,14 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                                      r.conflicting_shared_vertices = d.conflicting_shared_vertices;
                                      r.substeps = d.substeps;
                                      r.invalid_graph_simplices = d.invalid_simplices;
-                                     return r;
+                                     return done(r);
                                  },
                                  [&](const IdwPlan& p) {
-                                     deform_idw(p, points, motion, out, options.idw);
+                                     deform_idw(p, points, motion, out, options.idw, progress);
                                      return StepReport{};
                                  },
                                  [&](const RbfPlan& p) {
-                                     const RbfStepReport rbf = deform_rbf(p, points, motion, out);
+                                     const RbfStepReport rbf = deform_rbf(p, points, motion, out, progress);
                                      StepReport r;
                                      r.rbf_centres = rbf.centres;
                                      r.rbf_boundary_error = rbf.boundary_error;

@@ -6,6 +6,9 @@
 //   Plan plan = prepare(Method::dg_idw, dim, points, boundary, options);
 //   StepReport r = deform(plan, points, motion, out, options);
 //
+// Both take an optional last argument, a ProgressFn (core/progress.hpp) that
+// gets the fraction done of long calls.
+//
 // Methods (METHODS.md): DG-IDW (the paper's), DGM (Delaunay graph mapping),
 // IDW (global inverse distance weighting), RBF (radial basis functions).
 // Conventions as everywhere: points num_points × dim row-major, 0-based ids,
@@ -61,15 +64,21 @@ struct StepReport {
 /// Builds the plan of `method` for the original `points` and `boundary`.
 /// Throws as the method's own prepare does (MeshError for a bad boundary set
 /// or degenerate geometry, Error for bad options).
+/// `progress` gets the fraction done, ending at 1: per block of located volume
+/// nodes (DG-IDW, DGM), per phase of the factorisation (RBF); IDW has nothing
+/// to prepare.
 Plan prepare(Method method, int dim, std::span<const double> points, const BoundarySet& boundary,
-             const MethodOptions& options = {});
+             const MethodOptions& options = {}, const ProgressFn& progress = {});
 
 /// One step: writes the new coordinates of every node to `out`
 /// (num_points × dim; may alias `points`). Throws as the method's deform does
 /// (MeshError on size mismatch, InvalidResultError when the method cannot
 /// produce a valid result and was told to fail).
+/// `progress` gets the fraction done, ending at 1: per block of volume nodes
+/// (IDW, RBF's evaluation, after its solve); DG-IDW and DGM, one fast pass,
+/// report only the end.
 StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                  std::span<double> out, const MethodOptions& options = {});
+                  std::span<double> out, const MethodOptions& options = {}, const ProgressFn& progress = {});
 
 /// The method a plan belongs to.
 Method plan_method(const Plan& plan);

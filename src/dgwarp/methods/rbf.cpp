@@ -118,7 +118,8 @@ void check_dense_bytes(std::size_t needed, std::size_t max_dense_bytes, const st
                 "boundary's bounding-box diagonal, with the sparse solver)");
 }
 
-RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& boundary, const RbfOptions& options) {
+RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& boundary, const RbfOptions& options,
+                    const ProgressFn& progress) {
     const std::size_t num_points = checked_point_count("RBF", dim, points);
     check_options(options);
     check_boundary_set(num_points, boundary);
@@ -153,9 +154,10 @@ RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& 
                               "the dense " + std::to_string(nb) + " x " + std::to_string(nb) +
                                   " RBF system (factorised in place, plus P and M^-1 P)");
         }
-        plan.factorization = factorize_rbf(plan, plan.stats);
+        plan.factorization = factorize_rbf(plan, plan.stats, progress);
     }
     plan.stats.matrix_seconds += index_seconds;
+    if (progress) progress(1.0);
     return plan;
 }
 
@@ -193,11 +195,16 @@ RbfCoefficients solve_rbf(const RbfPlan& plan, const BoundaryMotion& motion) {
 }
 
 RbfStepReport deform_rbf(const RbfPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                         std::span<double> out) {
+                         std::span<double> out, const ProgressFn& progress) {
     check_sizes(plan, points, motion, out);
+    if (progress) progress(0.0);
     const RbfCoefficients c = solve_rbf(plan, motion);
+    // The solve's share of the step: the greedy loop rivals the evaluation,
+    // the full system's triangular solves do not.
+    const ProgressFn evaluate_progress = progress_part(progress, plan.factorization ? 0.1 : 0.5, 1.0);
+    ProgressCounter moved(evaluate_progress, plan.num_volume_nodes());
     const auto t0 = Clock::now();
-    move_volume_nodes(plan, c, points, out);  // reads only volume nodes: `out` may alias `points`
+    move_volume_nodes(plan, c, points, out, moved);  // reads only volume nodes: `out` may alias `points`
     const int dim = plan.dim;
     parallel_for(static_cast<std::int64_t>(plan.boundary_nodes.size()), [&](std::int64_t b) {
         const auto n = static_cast<std::size_t>(plan.boundary_nodes[b]);
@@ -206,6 +213,7 @@ RbfStepReport deform_rbf(const RbfPlan& plan, std::span<const double> points, co
         if (plan.boundary_moving[b]) apply_motion(motion[b], x, y);
         else std::copy(x.begin(), x.end(), y.begin());
     });
+    moved.finish();
     RbfStepReport report = c.report;
     report.evaluate_seconds = seconds_since(t0);
     report.conflicting_shared_centres =

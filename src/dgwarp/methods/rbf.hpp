@@ -42,6 +42,7 @@
 #include <span>
 #include <vector>
 
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -123,8 +124,10 @@ struct RbfPlan {
 /// a dense system larger than max_dense_bytes (the message gives the bytes it
 /// would need), and for a matrix that is numerically not positive definite
 /// (support radius far too large for the node spacing).
+/// `progress` gets the fraction done: per column while building M, then at
+/// the end of the factorisation and of G and H (fixed shares of the time).
 RbfPlan prepare_rbf(int dim, std::span<const double> points, const BoundarySet& boundary,
-                    const RbfOptions& options = {});
+                    const RbfOptions& options = {}, const ProgressFn& progress = {});
 
 /// What one step did.
 struct RbfStepReport {
@@ -169,8 +172,10 @@ void evaluate_rbf(const RbfPlan& plan, const RbfCoefficients& coefficients, std:
 /// (static ones stay). points: the original num_points × dim coordinates;
 /// out: num_points × dim, written completely (it may be `points`). Throws as
 /// solve_rbf does, and MeshError when an array size does not match the plan.
+/// `progress` gets the fraction done: the solve's share at its end, then per
+/// block of volume nodes evaluated.
 RbfStepReport deform_rbf(const RbfPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                         std::span<double> out);
+                         std::span<double> out, const ProgressFn& progress = {});
 
 /// Bytes held by the plan (its arrays, factorisation and k-d tree).
 std::size_t plan_bytes(const RbfPlan& plan);

@@ -152,13 +152,17 @@ void evaluate_rbf(const RbfPlan& plan, const RbfCoefficients& c, std::span<const
 }
 
 void move_volume_nodes(const RbfPlan& plan, const RbfCoefficients& c, std::span<const double> points,
-                       std::span<double> out) {
+                       std::span<double> out, ProgressCounter& moved) {
     const int dim = plan.dim;
     const Evaluator e(plan, c);
+    // Nodes per progress report, a multiple of Lanes: the lanes are grouped
+    // as without reports (and each point's sum is independent anyway).
+    constexpr std::int64_t progress_block = 256 * Lanes;
     parallel_for_chunks(plan.num_volume_nodes(), [&](std::int64_t begin, std::int64_t end) {
         std::vector<std::uint32_t> found;
         VolumeNodeCursor cursor(plan.boundary_nodes, begin);
         for (std::int64_t v = begin; v < end; v += Lanes) {
+            if (v > begin && (v - begin) % progress_block == 0) moved.add(progress_block);
             const int count = static_cast<int>(std::min<std::int64_t>(Lanes, end - v));
             NodeId ids[Lanes];
             double x0[Lanes][3];  // copies: `out` may alias `points`
@@ -174,6 +178,7 @@ void move_volume_nodes(const RbfPlan& plan, const RbfCoefficients& c, std::span<
                 for (int k = 0; k < dim; ++k)
                     out[static_cast<std::size_t>(ids[l]) * dim + k] = x0[l][k] + s[l * dim + k];
         }
+        moved.add((end - begin - 1) % progress_block + 1);  // the last block's nodes
     });
 }
 

@@ -39,8 +39,9 @@ inline void polynomial_row(const RbfPlan& plan, const double* x, double* row) {
 void check_dense_bytes(std::size_t needed, std::size_t max_dense_bytes, const std::string& what);
 
 /// Builds and factorises M (dense or sparse, as plan.dense says), G and H
-/// (rbf.hpp); fills stats.
-std::shared_ptr<const RbfFactorization> factorize_rbf(const RbfPlan& plan, RbfPrepareStats& stats);
+/// (rbf.hpp); fills stats. Reports to `progress` (prepare_rbf's shares).
+std::shared_ptr<const RbfFactorization> factorize_rbf(const RbfPlan& plan, RbfPrepareStats& stats,
+                                                      const ProgressFn& progress);
 
 /// Bytes held by a factorisation.
 std::size_t factorization_bytes(const RbfFactorization& f);
@@ -53,8 +54,9 @@ void solve_full(const RbfPlan& plan, std::span<const double> d, RbfCoefficients&
 /// solve_full does, plus report.centres and report.boundary_error.
 void solve_greedy(const RbfPlan& plan, std::span<const double> d, RbfCoefficients& c);
 
-/// Moves every volume node x0 of `points` to x0 + s(x0) in `out` (threaded).
+/// Moves every volume node x0 of `points` to x0 + s(x0) in `out` (threaded),
+/// adding the nodes moved to `moved` per block.
 void move_volume_nodes(const RbfPlan& plan, const RbfCoefficients& c, std::span<const double> points,
-                       std::span<double> out);
+                       std::span<double> out, ProgressCounter& moved);
 
 }  // namespace dgwarp

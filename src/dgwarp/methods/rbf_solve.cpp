@@ -48,16 +48,24 @@ std::string not_positive_definite(const RbfPlan& plan) {
            " is too large for the spacing of the boundary nodes); use a smaller support_radius or greedy reduction";
 }
 
-void factorize_dense(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& stats) {
+// Shares of prepare_rbf's progress: building M ends at matrix_share, the
+// Cholesky factorisation at factor_share, G and H at 1. Eigen's factorisations
+// report nothing while they run; these shares are rough averages of their times.
+constexpr double dense_matrix_share = 0.1, sparse_matrix_share = 0.3, factor_share = 0.9;
+
+void factorize_dense(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& stats, const ProgressFn& progress) {
     const auto n = static_cast<std::int64_t>(plan.num_centres());
     const int dim = plan.dim;
     const double inv_radius = 1.0 / plan.radius;
     const double* x = plan.centre_points.data();
     auto t0 = Clock::now();
     f.m.resize(n, n);
+    const ProgressFn matrix_progress = progress_part(progress, 0, dense_matrix_share);
+    ProgressCounter entries(matrix_progress, n * (n + 1) / 2);
     parallel_for(n, [&](std::int64_t j) {  // lower triangle, column j (contiguous)
         double* column = f.m.data() + j * n;
         for (std::int64_t i = j; i < n; ++i) column[i] = wendland_c2_r2(distance2(dim, x + i * dim, x + j * dim), inv_radius);
+        entries.add(n - j);
     });
     stats.matrix_nonzeros = n * (n + 1) / 2;
     stats.matrix_seconds = seconds_since(t0);
@@ -65,9 +73,10 @@ void factorize_dense(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& 
     f.llt.emplace(f.m);
     if (f.llt->info() != Eigen::Success) throw Error(not_positive_definite(plan));
     stats.factor_seconds = seconds_since(t0);
+    if (progress) progress(factor_share);
 }
 
-void factorize_sparse(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& stats) {
+void factorize_sparse(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats& stats, const ProgressFn& progress) {
     const auto n = static_cast<std::int64_t>(plan.num_centres());
     const int dim = plan.dim;
     const double inv_radius = 1.0 / plan.radius;
@@ -75,6 +84,8 @@ void factorize_sparse(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats&
     auto t0 = Clock::now();
     // Column j of the lower triangle: the neighbours i >= j within R, in index order.
     std::vector<std::vector<Eigen::Triplet<double>>> columns(static_cast<std::size_t>(n));
+    const ProgressFn matrix_progress = progress_part(progress, 0, sparse_matrix_share);
+    ProgressCounter columns_done(matrix_progress, n);
     parallel_for_chunks(n, [&](std::int64_t begin, std::int64_t end) {
         std::vector<std::uint32_t> found;
         for (std::int64_t j = begin; j < end; ++j) {
@@ -85,6 +96,7 @@ void factorize_sparse(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats&
                 if (static_cast<std::int64_t>(i) >= j)
                     column.emplace_back(static_cast<int>(i), static_cast<int>(j),
                                         wendland_c2_r2(distance2(dim, x + i * dim, x + j * dim), inv_radius));
+            columns_done.add(1);
         }
     });
     std::vector<Eigen::Triplet<double>> triplets;
@@ -100,15 +112,17 @@ void factorize_sparse(const RbfPlan& plan, RbfFactorization& f, RbfPrepareStats&
     f.sparse_factor_bytes = static_cast<std::size_t>(l.nonZeros()) * (sizeof(double) + sizeof(int)) +
                             static_cast<std::size_t>(n) * (sizeof(double) + 3 * sizeof(int));
     stats.factor_seconds = seconds_since(t0);
+    if (progress) progress(factor_share);
 }
 
 }  // namespace
 
-std::shared_ptr<const RbfFactorization> factorize_rbf(const RbfPlan& plan, RbfPrepareStats& stats) {
+std::shared_ptr<const RbfFactorization> factorize_rbf(const RbfPlan& plan, RbfPrepareStats& stats,
+                                                      const ProgressFn& progress) {
     auto f = std::make_shared<RbfFactorization>();
     f->dense = plan.dense;
-    if (plan.dense) factorize_dense(plan, *f, stats);
-    else factorize_sparse(plan, *f, stats);
+    if (plan.dense) factorize_dense(plan, *f, stats, progress);
+    else factorize_sparse(plan, *f, stats, progress);
 
     const auto t0 = Clock::now();
     const auto n = static_cast<std::int64_t>(plan.num_centres());

@@ -1,0 +1,84 @@
+// The progress line: shown on a terminal (here a pseudo-terminal from
+// script(1)), never when standard error is a file or pipe, nor with --quiet.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/test_paths.hpp"
+
+using namespace dgwarp::test;
+
+namespace {
+
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+const char* rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
+
+struct Files {
+    std::filesystem::path dir, mesh, motion;
+};
+
+// The rect-box mesh (from `dgwarp demo`) and a motion for it.
+Files rect_box() {
+    Files f;
+    f.dir = scratch_dir();
+    EXPECT_EQ(run_cli("demo -o " + quoted(f.dir)).exit_code, 0);
+    f.mesh = f.dir / "rect_box.su2";
+    f.motion = f.dir / "m.json";
+    std::ofstream(f.motion) << rotation;
+    return f;
+}
+
+// Every command that shows progress, with arguments that run each method.
+std::vector<std::string> commands(const Files& f) {
+    const std::string m = quoted(f.mesh);
+    return {"info " + m,
+            "quality " + m + " --reference " + m,
+            "convert " + m + " " + quoted(f.dir / "c.msh"),
+            "prepare " + m + " -m " + quoted(f.motion) + " -o " + quoted(f.dir / "p.plan"),
+            "deform " + m + " -m " + quoted(f.motion) + " -o " + quoted(f.dir / "d.su2") + " --method all"};
+}
+
+// A percentage, or a carriage return that is not a terminal's line end
+// ("\r\n": a pseudo-terminal turns every "\n" into it): the line's redraws.
+bool shows_progress(const std::string& text) {
+    for (std::size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '%' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) return true;
+    return false;
+}
+
+// Runs the CLI with standard input, output and error on a pseudo-terminal;
+// everything it printed comes back in `out`.
+CommandResult run_cli_on_terminal(const std::string& args) {
+    return run_command("script -qec \"" + cli_path().string() + " " + args + "\" /dev/null </dev/null");
+}
+
+}  // namespace
+
+TEST(CliProgress, NothingWhenStandardErrorIsNotATerminal) {
+    const Files f = rect_box();
+    for (const std::string& c : commands(f)) {
+        const CommandResult r = run_cli(c);
+        ASSERT_EQ(r.exit_code, 0) << c << "\n" << r.err;
+        EXPECT_FALSE(shows_progress(r.err)) << c << "\n" << r.err;
+        EXPECT_FALSE(shows_progress(r.out)) << c << "\n" << r.out;
+    }
+}
+
+TEST(CliProgress, FractionsOnATerminalButNotWithQuiet) {
+    if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "script(1) not installed";
+    const Files f = rect_box();
+    for (const std::string& c : commands(f)) {
+        const CommandResult r = run_cli_on_terminal(c);
+        ASSERT_EQ(r.exit_code, 0) << c << "\n" << r.out << r.err;
+        EXPECT_NE(r.out.find("%\r"), std::string::npos) << c << "\n" << r.out;  // a fraction, then redrawn
+        EXPECT_NE(r.out.find("100%"), std::string::npos) << c << "\n" << r.out;
+    }
+    const std::string deform = commands(f).back();
+    EXPECT_NE(run_cli_on_terminal(deform).out.find("preparing rbf  "), std::string::npos);
+    for (const std::string& quiet : {deform + " --quiet", deform + " --json"}) {
+        const CommandResult r = run_cli_on_terminal(quiet);
+        ASSERT_EQ(r.exit_code, 0) << quiet << "\n" << r.out;
+        EXPECT_FALSE(shows_progress(r.out)) << quiet << "\n" << r.out;
+    }
+}
