@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace dgwarp;
@@ -39,6 +41,20 @@ TEST(ParallelFor, ChunksCoverTheRangeContiguouslyAndUseTheThreads) {
         for (int h : hits) ASSERT_EQ(h, 1) << "n = " << n;
         EXPECT_EQ(chunks.load(), n < parallel_grain ? 1 : 2) << "n = " << n;
     }
+}
+
+TEST(ParallelFor, ShortLoopsStayOnTheCallerUnlessTheGrainIsOne) {
+    ThreadCount keep;
+    set_num_threads(2);
+    if (num_threads() < 2) GTEST_SKIP() << "built without OpenMP";
+    auto threads_used = [](std::int64_t grain) {
+        std::vector<std::thread::id> ids(8);
+        parallel_for(8, [&](std::int64_t i) { ids[static_cast<std::size_t>(i)] = std::this_thread::get_id(); }, grain);
+        std::sort(ids.begin(), ids.end());
+        return std::unique(ids.begin(), ids.end()) - ids.begin();
+    };
+    EXPECT_EQ(threads_used(parallel_grain), 1);  // 8 cheap indices: not worth a thread
+    EXPECT_EQ(threads_used(1), 2);               // 8 blocks of real work (the graph's location)
 }
 
 TEST(ParallelFor, RethrowsTheBodysException) {

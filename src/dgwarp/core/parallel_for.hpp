@@ -7,6 +7,11 @@
 
 namespace dgwarp {
 
+/// Loops shorter than this run on the calling thread (by default): starting a
+/// parallel region costs microseconds, and far more when other processes hold
+/// the cores (OpenMP threads then wait for a core), which dwarfs a short loop.
+inline constexpr std::int64_t parallel_grain = 4096;
+
 /// Number of threads parallel_for uses (OpenMP's current setting; 1 without OpenMP).
 int num_threads();
 
@@ -15,8 +20,10 @@ void set_num_threads(int n);
 
 /// Calls body(i) for every i in [0, n), in parallel. body must only write data
 /// owned by index i. Exceptions thrown by body are rethrown (the first one).
+/// Loops shorter than `grain` run on the calling thread: the default suits a
+/// cheap body (one node); pass 1 when each index is a block of real work.
 template <class Body>
-void parallel_for(std::int64_t n, Body&& body);
+void parallel_for(std::int64_t n, Body&& body, std::int64_t grain = parallel_grain);
 
 /// Calls body(begin, end) on contiguous chunks covering [0, n), one chunk per
 /// thread at most; useful when each chunk needs scratch space.

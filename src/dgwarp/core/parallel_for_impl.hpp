@@ -5,10 +5,6 @@
 
 namespace dgwarp {
 
-/// Loops shorter than this run on the calling thread: starting a parallel
-/// region costs microseconds, and far more when other processes hold the
-/// cores (OpenMP threads then wait for a core), which dwarfs a short loop.
-inline constexpr std::int64_t parallel_grain = 4096;
 
 namespace detail {
 
@@ -33,8 +29,8 @@ void parallel_region_for(std::int64_t n, Body&& body) {
 }  // namespace detail
 
 template <class Body>
-void parallel_for(std::int64_t n, Body&& body) {
-    if (n < parallel_grain || num_threads() == 1) {
+void parallel_for(std::int64_t n, Body&& body, std::int64_t grain) {
+    if (n < grain || n < 2 || num_threads() == 1) {
         for (std::int64_t i = 0; i < n; ++i) body(i);
         return;
     }

@@ -91,7 +91,7 @@ TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
             hint = c;
         }
         located.add(end - b * locate_block_size);
-    });
+    }, 1);  // each index is a block of thousands of walks: always worth a thread
     located.finish();
     result.location.outside_count = std::accumulate(outside.begin(), outside.end(), std::int64_t{0});
     result.timings.locate_seconds = seconds_since(t0);
