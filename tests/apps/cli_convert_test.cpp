@@ -8,7 +8,6 @@ using namespace dgwarp;
 using namespace dgwarp::test;
 
 namespace {
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 }  // namespace
 
 TEST(CliConvert, RoundTripsThroughEveryFormatAreExactOnRealMeshes) {

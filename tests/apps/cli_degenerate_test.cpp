@@ -15,12 +15,7 @@ using namespace dgwarp::test;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
-std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-    return path;
-}
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 

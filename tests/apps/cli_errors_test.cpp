@@ -10,7 +10,6 @@ using namespace dgwarp::test;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 // A small valid SU2 mesh: two triangles, two markers.
 const char* good_su2 =
@@ -33,10 +32,6 @@ const char* good_su2 =
     "3 2 3\n"
     "3 3 0\n";
 
-std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-    return path;
-}
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     const auto at = text.find(from);

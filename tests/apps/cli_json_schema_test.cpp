@@ -15,18 +15,8 @@ using namespace dgwarp::test;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
-std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-    return path;
-}
 
-std::string slurp(const std::filesystem::path& p) {
-    std::stringstream s;
-    s << std::ifstream(p, std::ios::binary).rdbuf();
-    return s.str();
-}
 
 /// Validates `report` (JSON text, written to a file in `dir`) against docs/schema/COMMAND.schema.json.
 CommandResult validate(const std::filesystem::path& dir, const std::string& command, const std::string& report) {

@@ -10,7 +10,6 @@ using namespace dgwarp::test;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 const char* rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
 

@@ -13,7 +13,6 @@ namespace {
 
 class CliQualityOnRealMeshes : public ::testing::TestWithParam<std::filesystem::path> {};
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 }  // namespace
 

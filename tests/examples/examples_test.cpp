@@ -24,7 +24,6 @@ using namespace dgwarp::test;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 /// Runs example `name` with `args` in `dir`.
 CommandResult run_example(const std::string& name, const std::filesystem::path& dir, const std::string& args = "") {

@@ -12,15 +12,10 @@
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
+using dgwarp::test::slurp;
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::size_t files_in(const std::filesystem::path& dir) {
     return static_cast<std::size_t>(

@@ -16,6 +16,7 @@
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
+using dgwarp::test::slurp;
 using nlohmann::json;
 
 namespace {
@@ -94,12 +95,6 @@ const json& array_named(const json& summary, const std::string& section, const s
     return none;
 }
 
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 void overwrite(const std::filesystem::path& file, const std::string& text) {
     std::ofstream(file, std::ios::binary | std::ios::trunc) << text;

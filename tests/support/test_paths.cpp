@@ -64,4 +64,18 @@ CommandResult run_command(const std::string& command) {
 
 CommandResult run_cli(const std::string& args) { return run_command(cli_path().string() + " " + args); }
 
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 }  // namespace dgwarp::test

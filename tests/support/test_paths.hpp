@@ -29,6 +29,13 @@ CommandResult run_command(const std::string& command);
 /// Runs the dgwarp CLI with the given argument string.
 CommandResult run_cli(const std::string& args);
 
+/// `p` in single quotes, for a shell command line.
+std::string quoted(const std::filesystem::path& p);
+/// Writes `text` to `path` (replacing it); returns `path`.
+std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text);
+/// The whole file's bytes ("" when it cannot be read).
+std::string slurp(const std::filesystem::path& p);
+
 }  // namespace dgwarp::test
 
 /// Skips the current test when ../shared/meshes/su2 is not beside the
