@@ -13,7 +13,8 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # a code no test expects (the CLI's codes are 0-4). Gmsh's own leaks are
 # suppressed inside the test binary (__lsan_default_suppressions in
 # tests/io/gmsh_write_test.cpp); fontconfig's caches (Cairo's text in the
-# pictures, also in the CLI the tests run) by tests/lsan.supp.
+# pictures, also in the CLI the tests run) and OpenCASCADE's (Gmsh's OCC kernel,
+# the wing-body case) by tests/lsan.supp.
 SANITIZER_ENV = ASAN_OPTIONS=exitcode=86:detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
   UBSAN_OPTIONS=exitcode=86:print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=exitcode=86:suppressions=$(CURDIR)/tests/lsan.supp
