@@ -193,10 +193,8 @@ int main(int argc, char** argv) {
     // approach the paper's node counts (201,920 / 403,840 / 826,080 nodes;
     // 10,096 / 10,096 / 41,304 boundary).
     std::vector<bench::SphereBoxCase> cases;
-    for (int size = 0; size < 3; ++size) {
-        const SphereBoxOptions o = sphere_box_paper_size(size);
-        cases.push_back({std::array{"200k", "400k", "826k"}[size], o.h_sphere, o.h_max, o.growth, o.h_box});
-    }
+    for (int size = 0; size < 3; ++size)
+        cases.push_back({std::array{"200k", "400k", "826k"}[size], sphere_box_paper_size(size)});
     std::vector<std::string> wanted(argv + 1, argv + argc);
     const bool generate_only = std::erase(wanted, "--generate-only") > 0;
     if (wanted.empty())

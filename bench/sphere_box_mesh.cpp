@@ -22,7 +22,7 @@ constexpr char magic[8] = {'D', 'G', 'W', 'S', 'P', 'H', 'M', '1'};
 // Runs Gmsh (the library's make_sphere_box); returns the mesh. Called in a child process.
 SphereBoxMesh generate(const SphereBoxCase& c) {
     const auto t0 = std::chrono::steady_clock::now();
-    const Mesh mesh = make_sphere_box({c.h_sphere, c.h_max, c.growth, c.h_box, 2});
+    const Mesh mesh = make_sphere_box(c.options);
     SphereBoxMesh m;
     m.points = mesh.points;
     m.sphere_nodes = marker_nodes(find_marker(mesh, "sphere"));
@@ -72,9 +72,10 @@ bool load(const std::filesystem::path& file, SphereBoxMesh& m) {
 
 SphereBoxMesh sphere_box_mesh(const SphereBoxCase& c, const std::filesystem::path& cache_dir, int timeout_seconds) {
     std::filesystem::create_directories(cache_dir);
-    const auto file = cache_dir / ("sphere_box_" + c.name + "_" + std::to_string(c.h_sphere) + "_" +
-                                   std::to_string(c.h_max) + "_" + std::to_string(c.growth) + "_" +
-                                   std::to_string(c.h_box) + ".bin");
+    const SphereBoxOptions& o = c.options;
+    const auto file = cache_dir / ("sphere_box_" + c.name + "_" + std::to_string(o.h_sphere) + "_" +
+                                   std::to_string(o.h_max) + "_" + std::to_string(o.growth) + "_" +
+                                   std::to_string(o.h_box) + "_t" + std::to_string(o.threads) + ".bin");
     SphereBoxMesh m;
     if (load(file, m)) return m;
 

@@ -7,18 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "dgwarp/cases/sphere_box.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp::bench {
 
-/// Mesh sizes of one case: size h_sphere on the sphere, growing by `growth`
-/// per unit distance from it, capped at h_max; h_box on the box faces.
+/// One case: its name and the library generator's options (sphere_box_paper_size),
+/// so the benchmark runs on exactly the mesh `dgwarp case squeezed-sphere` writes.
 struct SphereBoxCase {
     std::string name;
-    double h_sphere;
-    double h_max;
-    double growth;
-    double h_box;
+    SphereBoxOptions options;
 };
 
 struct SphereBoxMesh {

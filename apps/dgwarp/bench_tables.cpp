@@ -112,7 +112,9 @@ std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& r
          "L = 1; IDW c_d = 3, c_s = 2, L auto; RBF Wendland C2, global support, no reduction; DGM without sub-steps, "
          "as the paper maps in one step). *dg-idw L=auto* is DG-IDW with our automatic length scale (docs/dg-idw-length-scale.md), "
          "not the paper's formula: it has no paper column; *dg-idw continuous* is DG-IDW with our continuous weights "
-         "(each corner's weight times the node's barycentric coordinate, no multipliers; docs/dg-idw.md), L = 1.\n\n";
+         "(each corner's weight times the node's barycentric coordinate, no multipliers; docs/dg-idw.md), L = 1; "
+         "*dg-idw + untangle* is DG-IDW with the paper's formula followed by our local repair of inverted cells "
+         "(docs/UNTANGLE.md; boundary nodes stay, its time is in the step).\n\n";
     for (const BenchRow& r : rows) {
         std::string description = r.motion_description;
         if (!description.empty()) description[0] = static_cast<char>(std::toupper(description[0]));

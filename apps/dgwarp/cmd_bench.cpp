@@ -19,6 +19,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/picture/mesh_picture.hpp"
+#include "dgwarp/repair/untangle.hpp"
 #include "progress_line.hpp"
 #include "stopwatch.hpp"
 
@@ -170,6 +171,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
         Method method;
         std::string label;
         MethodOptions options;
+        bool untangle = false;  // repair inverted cells after the step (its time counts in the step)
     };
     std::vector<Variant> variants;
     for (Method m : all_methods) variants.push_back({m, std::string(method_name(m)), {}});
@@ -177,6 +179,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
     variants.back().options.dg_idw.length_scale = 0;
     variants.push_back({Method::dg_idw, "dg-idw continuous", {}});
     variants.back().options.dg_idw.weighting = DgIdwWeighting::continuous;
+    variants.push_back({Method::dg_idw, "dg-idw + untangle", {}, true});
     for (const Variant& v : variants) {
         const Method method = v.method;
         MethodResult r;
@@ -198,6 +201,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             r.prepare_seconds = sw.lap();
             const StepReport step =
                 deform(plan, mesh.points, motion, deformed.points, options, progress.reporter(what + ": deforming"));
+            if (v.untangle) untangle(mesh.dim, mesh.cells, orientation, b.boundary.nodes, deformed.points);
             r.step_seconds = sw.lap();
             const std::vector<double> q = cell_qualities(deformed, orientation);
             r.quality = summarize_quality(q);

@@ -3,12 +3,14 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "deform_setup.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/repair/untangle.hpp"
 #include "frame_output.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
@@ -23,6 +25,8 @@ struct DeformArgs {
     std::string plan;
     bool json = false;
     bool allow_invalid = false;
+    bool untangle = false;
+    double untangle_target = 0;
     bool quiet = false;
 };
 
@@ -34,7 +38,8 @@ struct FrameResult {
     RatioSummary ratio;
     StepReport step;
     std::vector<std::int64_t> worst_inverted;
-    double deform_seconds = 0, quality_seconds = 0, write_seconds = 0;
+    std::optional<UntangleReport> untangled;  // when --untangle found inverted cells to repair
+    double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
     std::vector<std::string> warnings;
 };
 
@@ -52,6 +57,17 @@ std::string cell_list(const std::vector<std::int64_t>& cells) {
     return s;
 }
 
+nlohmann::json untangle_json(const UntangleReport& u) {
+    return {{"inverted_before", u.inverted_before},
+            {"inverted_after", u.inverted_after},
+            {"below_target_before", u.below_target_before},
+            {"below_target_after", u.below_target_after},
+            {"nodes_moved", u.nodes_moved},
+            {"max_move", u.max_move},
+            {"rounds", u.rounds},
+            {"min_quality_after", u.min_quality_after}};
+}
+
 nlohmann::json frame_json(const FrameResult& f) {
     return {{"frame", f.frame},
             {"time", f.time},
@@ -63,7 +79,10 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"invalid_graph_simplices", f.step.invalid_graph_simplices},
             {"rbf_centres", f.step.rbf_centres},
             {"rbf_boundary_error", f.step.rbf_boundary_error},
-            {"seconds", {{"deform", f.deform_seconds}, {"quality", f.quality_seconds}, {"write", f.write_seconds}}},
+            {"untangle", f.untangled ? untangle_json(*f.untangled) : nlohmann::json(nullptr)},
+            {"seconds",
+             {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
+              {"write", f.write_seconds}}},
             {"warnings", f.warnings}};
 }
 
@@ -88,6 +107,11 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout.unsetf(std::ios::floatfield);
     std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
               << ", write " << milliseconds(f.write_seconds) << "\n";
+    if (f.untangled)
+        std::cout << "untangle  inverted cells " << f.untangled->inverted_before << " -> " << f.untangled->inverted_after
+                  << ", cells at or below the target " << f.untangled->below_target_before << " -> "
+                  << f.untangled->below_target_after << ", " << f.untangled->nodes_moved << " volume nodes moved (at most " << f.untangled->max_move
+                  << "), " << milliseconds(f.untangle_seconds) << "\n";
     if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
                                        << f.step.invalid_graph_simplices << " invalid simplices)\n";
 }
@@ -152,6 +176,15 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         }
         f.deform_seconds = sw.lap();
         for (auto& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
+        if (a.untangle) {
+            progress.phase(std::string(method_name(method)) + ": untangling");
+            UntangleOptions options;
+            options.target_quality = a.untangle_target;
+            const UntangleReport u = untangle(deformed.dim, deformed.cells, in.orientation, in.boundary.boundary.nodes,
+                                              deformed.points, options);
+            if (u.below_target_before > 0) f.untangled = u;
+            f.untangle_seconds = sw.lap();
+        }
         const std::vector<double> quality = cell_qualities(deformed, in.orientation);
         const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
         f.quality = summarize_quality(quality);
@@ -274,6 +307,12 @@ void add_deform_command(CLI::App& app) {
         ->required();
     cmd->add_option("--plan", args->plan, "Use a plan saved by 'dgwarp prepare' instead of building it");
     cmd->add_flag("--allow-invalid", args->allow_invalid, "Write the result even if cells are inverted");
+    cmd->add_flag("--untangle", args->untangle,
+                  "After each step, move the volume nodes around inverted cells until none is inverted "
+                  "(boundary nodes stay; docs/UNTANGLE.md)");
+    cmd->add_option("--untangle-target", args->untangle_target,
+                    "With --untangle: also repair the cells of quality at or below this (default 0: inverted only)")
+        ->check(CLI::Range(0.0, 0.99));
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(

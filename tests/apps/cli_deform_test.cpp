@@ -229,3 +229,43 @@ TEST(CliDeform, Naca0012RotationsKeepEveryCellValid) {
         EXPECT_GT(q.at("min").get<double>(), 0.2) << angle;
     }
 }
+
+// The top face of SU2's tetrahedral brick turned 10° inside its fixed side
+// walls: DG-IDW alone inverts cells next to the rim (exit 3, nothing written);
+// --untangle repairs them, reports what it did, and the file written has no
+// inverted cell by `dgwarp quality`'s own count.
+TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = scratch_dir();
+    const auto mesh = su2_meshes_dir() / "deformation_brick_tets_mesh_brick_tets_ffd.su2";
+    const auto motion = source_dir() / "examples" / "motions" / "brick_rotate_top.json";
+    const std::string base = "deform " + quoted(mesh) + " -m " + quoted(motion) + " --length-scale auto -o ";
+    CommandResult r = run_cli(base + quoted(dir / "plain.su2") + " -q");
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_FALSE(std::filesystem::exists(dir / "plain.su2"));
+
+    r = run_cli(base + quoted(dir / "fixed.su2") + " --untangle --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto frame = nlohmann::json::parse(r.out).at("frames").at(0);
+    const auto u = frame.at("untangle");
+    EXPECT_GT(u.at("inverted_before").get<long>(), 0);
+    EXPECT_EQ(u.at("inverted_after").get<long>(), 0);
+    EXPECT_GT(u.at("nodes_moved").get<long>(), 0);
+    EXPECT_GT(frame.at("seconds").at("untangle").get<double>(), 0);
+    EXPECT_EQ(frame.at("quality").at("inverted").get<long>(), 0);
+    const CommandResult q = run_cli("quality " + quoted(dir / "fixed.su2") + " --reference " + quoted(mesh) + " --json");
+    ASSERT_EQ(q.exit_code, 0) << q.err;
+    EXPECT_EQ(nlohmann::json::parse(q.out).at("quality").at("inverted").get<long>(), 0);
+
+    // A target lifts the worst cells too; without inverted cells and with the
+    // default target it reports nothing.
+    r = run_cli(base + quoted(dir / "lifted.su2") + " --untangle --untangle-target 0.1 --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_GT(nlohmann::json::parse(r.out).at("frames").at(0).at("quality").at("min").get<double>(), 0.05);
+    const auto bump = source_dir() / "examples" / "motions" / "brick_tets_bump_top.json";
+    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(bump) + " --length-scale auto -o " + quoted(dir / "b.su2") +
+                " --untangle --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(nlohmann::json::parse(r.out).at("frames").at(0).at("untangle").is_null());
+    EXPECT_EQ(run_cli(base + quoted(dir / "x.su2") + " --untangle --untangle-target 1.5").exit_code, 1);
+}

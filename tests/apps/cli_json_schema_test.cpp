@@ -109,6 +109,16 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
     const CommandResult v = validate(c.dir, "deform", r.out);
     EXPECT_EQ(v.exit_code, 0) << v.err;
     EXPECT_FALSE(nlohmann::json::parse(r.out).at("warnings").empty());
+    // The same with --untangle: the frame carries what the repair did.
+    const CommandResult ru = run_cli("deform " + quoted(c.mesh) + " -m " + quoted(huge) + " -o " +
+                                     quoted(c.dir / "u.su2") + " --untangle --allow-invalid --json");
+    ASSERT_EQ(ru.exit_code, 0) << ru.err;
+    const nlohmann::json untangled = nlohmann::json::parse(ru.out);
+    EXPECT_EQ(validate(c.dir, "deform", ru.out).exit_code, 0);
+    ASSERT_TRUE(untangled.at("frames").at(0).at("untangle").is_object());
+    expect_invalid(c.dir, "deform", untangled, [](auto& j) { j["frames"][0]["untangle"].erase("nodes_moved"); },
+                   "nodes_moved");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["frames"][0].erase("untangle"); }, "untangle");
 
     expect_invalid(c.dir, "deform", one, [](auto& j) { j.erase("plan"); }, "plan");
     expect_invalid(c.dir, "deform", one, [](auto& j) { j["frames"][0]["seconds"].erase("deform"); }, "deform");

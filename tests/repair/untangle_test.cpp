@@ -1,0 +1,255 @@
+// untangle: moves volume nodes around inverted cells until none is inverted.
+// Properties checked on structured meshes with nodes pushed through their
+// neighbours (quadrilaterals, tetrahedra, hexahedra): every inverted cell is
+// repaired, fixed nodes and nodes far from the damage keep every bit, the
+// report counts what the quality driver counts, the result does not depend on
+// the thread count, and what cannot be repaired (a cell whose nodes are all
+// fixed) is reported, not hidden.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "dgwarp/cases/grid_with_hole.hpp"
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/repair/untangle.hpp"
+
+using namespace dgwarp;
+
+namespace {
+
+/// The cube [0, 1]³ as n³ hexahedra (VTK order), or each hexahedron cut into
+/// six tetrahedra around its main diagonal (Kuhn), all positively oriented.
+Mesh cube_grid(int n, bool tetrahedra) {
+    Mesh m;
+    m.dim = 3;
+    auto id = [n](int i, int j, int k) { return static_cast<NodeId>((k * (n + 1) + j) * (n + 1) + i); };
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i)
+                for (int c : {i, j, k}) m.points.push_back(double(c) / n);
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const NodeId v[8] = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),
+                                     id(i, j + 1, k),     id(i, j, k + 1),         id(i + 1, j, k + 1),
+                                     id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+                if (!tetrahedra) {
+                    m.cells.push_back(CellType::hexahedron, v);
+                    continue;
+                }
+                // Paths from corner 0 to corner 6 along the edges, one tetrahedron each.
+                const int paths[6][2] = {{1, 2}, {2, 3}, {3, 7}, {7, 4}, {4, 5}, {5, 1}};
+                for (const auto& p : paths) {
+                    NodeId t[4] = {v[0], v[p[0]], v[p[1]], v[6]};
+                    m.cells.push_back(CellType::tetrahedron, t);
+                }
+            }
+    // Give every tetrahedron a positive orientation (the paths alternate).
+    if (tetrahedra) {
+        const auto orientation = cell_orientations(m);
+        for (std::size_t c = 0; c < m.cells.size(); ++c)
+            if (orientation[c] < 0) std::swap(m.cells.nodes[m.cells.offsets[c] + 1], m.cells.nodes[m.cells.offsets[c] + 2]);
+    }
+    return m;
+}
+
+/// The nodes on the cube's faces.
+std::vector<NodeId> cube_faces(const Mesh& m) {
+    std::vector<NodeId> out;
+    for (std::size_t i = 0; i < m.num_points(); ++i) {
+        bool face = false;
+        for (int d = 0; d < 3; ++d) face |= m.points[3 * i + d] == 0.0 || m.points[3 * i + d] == 1.0;
+        if (face) out.push_back(static_cast<NodeId>(i));
+    }
+    return out;
+}
+
+std::vector<NodeId> marker_nodes_of(const Mesh& m) {
+    std::vector<NodeId> out;
+    for (const Marker& marker : m.markers)
+        for (NodeId n : marker_nodes(marker)) out.push_back(n);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+QualitySummary judge(const Mesh& reference, const std::vector<double>& points) {
+    Mesh moved = reference;
+    moved.points = points;
+    return summarize_quality(cell_qualities(moved, cell_orientations(reference)));
+}
+
+/// Pushes every node in `nodes` by up to `amount` in each coordinate (seeded).
+void shake(std::vector<double>& points, int dim, const std::vector<NodeId>& nodes, double amount, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-amount, amount);
+    for (NodeId n : nodes)
+        for (int d = 0; d < dim; ++d) points[static_cast<std::size_t>(n) * dim + d] += u(rng);
+}
+
+std::vector<NodeId> complement(std::size_t num_points, const std::vector<NodeId>& fixed) {
+    std::vector<NodeId> out;
+    for (std::size_t i = 0; i < num_points; ++i)
+        if (!std::binary_search(fixed.begin(), fixed.end(), static_cast<NodeId>(i))) out.push_back(static_cast<NodeId>(i));
+    return out;
+}
+
+}  // namespace
+
+TEST(Untangle, AValidMeshIsLeftAsItIs) {
+    const Mesh mesh = cube_grid(4, true);
+    std::vector<double> points = mesh.points;
+    shake(points, 3, complement(mesh.num_points(), cube_faces(mesh)), 0.02, 1);  // small: nothing inverts
+    const std::vector<double> before = points;
+    const UntangleReport r =
+        untangle(3, mesh.cells, cell_orientations(mesh), cube_faces(mesh), points);
+    EXPECT_EQ(r.inverted_before, 0);
+    EXPECT_EQ(r.inverted_after, 0);
+    EXPECT_EQ(r.nodes_moved, 0);
+    EXPECT_EQ(r.rounds, 0);
+    EXPECT_EQ(points, before);
+}
+
+TEST(Untangle, ANodePushedThroughItsNeighbourIsPulledBackIn2DQuadrilaterals) {
+    const Mesh mesh = make_grid_with_hole();  // 49 cells a side, hole 21 × 9
+    const std::vector<NodeId> fixed = marker_nodes_of(mesh);
+    std::vector<double> points = mesh.points;
+    // Node (5, 5) of the grid pushed 1.6 cells right, past node (6, 5).
+    const double h = 20.0 / 49;
+    NodeId pushed = -1;
+    for (std::size_t i = 0; i < mesh.num_points(); ++i)
+        if (std::abs(mesh.points[2 * i] - (-10 + 5 * h)) < 1e-9 && std::abs(mesh.points[2 * i + 1] - (-10 + 5 * h)) < 1e-9)
+            pushed = static_cast<NodeId>(i);
+    ASSERT_GE(pushed, 0);
+    points[2 * static_cast<std::size_t>(pushed)] += 1.6 * h;
+    const QualitySummary damaged = judge(mesh, points);
+    ASSERT_GT(damaged.inverted, 0);
+    const std::vector<double> before = points;
+
+    const UntangleReport r = untangle(2, mesh.cells, cell_orientations(mesh), fixed, points);
+    const QualitySummary repaired = judge(mesh, points);
+    EXPECT_EQ(r.inverted_before, damaged.inverted);
+    EXPECT_EQ(r.inverted_after, 0);
+    EXPECT_EQ(repaired.inverted, 0);
+    EXPECT_GT(repaired.min, 0.2);
+    EXPECT_GT(r.nodes_moved, 0);
+    EXPECT_GE(r.min_quality_after, repaired.min);  // the worst of the cells it changed
+    // Fixed nodes keep every bit; nodes more than 12 cells from the push were never touched.
+    for (NodeId n : fixed)
+        for (int d = 0; d < 2; ++d)
+            EXPECT_EQ(points[2 * static_cast<std::size_t>(n) + d], before[2 * static_cast<std::size_t>(n) + d]);
+    for (std::size_t i = 0; i < mesh.num_points(); ++i) {
+        const double dist = std::hypot(mesh.points[2 * i] - mesh.points[2 * static_cast<std::size_t>(pushed)],
+                                       mesh.points[2 * i + 1] - mesh.points[2 * static_cast<std::size_t>(pushed) + 1]);
+        if (dist > 12 * h) {
+            EXPECT_EQ(points[2 * i], before[2 * i]) << "node " << i;
+            EXPECT_EQ(points[2 * i + 1], before[2 * i + 1]) << "node " << i;
+        }
+    }
+    // The report's largest move is the largest move.
+    double largest = 0;
+    for (std::size_t i = 0; i < mesh.num_points(); ++i)
+        largest = std::max(largest, std::hypot(points[2 * i] - before[2 * i], points[2 * i + 1] - before[2 * i + 1]));
+    EXPECT_DOUBLE_EQ(r.max_move, largest);
+}
+
+TEST(Untangle, ShakenTetrahedraAndHexahedraAreAllRepaired) {
+    for (const bool tetrahedra : {true, false}) {
+        SCOPED_TRACE(tetrahedra ? "tetrahedra" : "hexahedra");
+        const Mesh mesh = cube_grid(8, tetrahedra);
+        const std::vector<NodeId> fixed = cube_faces(mesh);
+        std::vector<double> points = mesh.points;
+        shake(points, 3, complement(mesh.num_points(), fixed), 0.6 / 8, 7);  // up to 0.6 cells: many cells invert
+        const QualitySummary damaged = judge(mesh, points);
+        ASSERT_GT(damaged.inverted, 10);
+        const std::vector<double> before = points;
+
+        const UntangleReport r = untangle(3, mesh.cells, cell_orientations(mesh), fixed, points);
+        const QualitySummary repaired = judge(mesh, points);
+        EXPECT_EQ(r.inverted_before, damaged.inverted);
+        EXPECT_EQ(r.inverted_after, 0);
+        EXPECT_EQ(repaired.inverted, 0);
+        EXPECT_GT(repaired.min, 0);
+        EXPECT_GT(r.min_quality_after, 0);
+        for (NodeId n : fixed)
+            for (int d = 0; d < 3; ++d)
+                EXPECT_EQ(points[3 * static_cast<std::size_t>(n) + d], before[3 * static_cast<std::size_t>(n) + d]);
+    }
+}
+
+TEST(Untangle, ATargetQualityAlsoLiftsThePoorCells) {
+    const Mesh mesh = cube_grid(6, true);
+    const std::vector<NodeId> fixed = cube_faces(mesh);
+    std::vector<double> points = mesh.points;
+    shake(points, 3, complement(mesh.num_points(), fixed), 0.45 / 6, 3);
+    std::vector<double> only_untangled = points;
+    UntangleOptions options;
+    options.target_quality = 0.2;
+    const UntangleReport r = untangle(3, mesh.cells, cell_orientations(mesh), fixed, points, options);
+    untangle(3, mesh.cells, cell_orientations(mesh), fixed, only_untangled);
+    EXPECT_GT(r.below_target_before, r.inverted_before);
+    EXPECT_EQ(r.below_target_after, 0);
+    EXPECT_GT(judge(mesh, points).min, 0.2);
+    EXPECT_GT(judge(mesh, points).min, judge(mesh, only_untangled).min);
+}
+
+TEST(Untangle, TheResultDoesNotDependOnTheThreadCount) {
+    const Mesh mesh = cube_grid(8, true);
+    const std::vector<NodeId> fixed = cube_faces(mesh);
+    std::vector<double> damaged = mesh.points;
+    shake(damaged, 3, complement(mesh.num_points(), fixed), 0.6 / 8, 11);
+    std::vector<std::vector<double>> results;
+    const int threads = num_threads();
+    for (int t : {1, 2}) {
+        set_num_threads(t);
+        std::vector<double> points = damaged;
+        untangle(3, mesh.cells, cell_orientations(mesh), fixed, points);
+        results.push_back(points);
+    }
+    set_num_threads(threads);
+    EXPECT_EQ(results[0], results[1]);
+}
+
+TEST(Untangle, ACellWhoseNodesAreAllFixedIsReportedNotRepaired) {
+    Mesh mesh;
+    mesh.dim = 3;
+    mesh.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const NodeId t[4] = {0, 1, 2, 3};
+    mesh.cells.push_back(CellType::tetrahedron, t);
+    std::vector<double> points = mesh.points;
+    points[11] = -1;  // the apex through the base
+    const std::vector<double> before = points;
+    const UntangleReport r = untangle(3, mesh.cells, cell_orientations(mesh), std::vector<NodeId>{0, 1, 2, 3}, points);
+    EXPECT_EQ(r.inverted_before, 1);
+    EXPECT_EQ(r.inverted_after, 1);
+    EXPECT_EQ(r.nodes_moved, 0);
+    EXPECT_EQ(points, before);
+    // With the apex free it is repaired.
+    const UntangleReport free_apex = untangle(3, mesh.cells, cell_orientations(mesh), std::vector<NodeId>{0, 1, 2}, points);
+    EXPECT_EQ(free_apex.inverted_after, 0);
+    EXPECT_GT(points[11], 0);
+}
+
+TEST(Untangle, BadInputThrowsNamingWhatIsWrong) {
+    const Mesh mesh = cube_grid(2, true);
+    std::vector<double> points = mesh.points;
+    const auto orientation = cell_orientations(mesh);
+    const std::vector<NodeId> none;
+    EXPECT_THROW(untangle(4, mesh.cells, orientation, none, points), MeshError);
+    EXPECT_THROW(untangle(3, mesh.cells, std::span(orientation).first(3), none, points), MeshError);
+    EXPECT_THROW(untangle(3, mesh.cells, orientation, none, std::span(points).first(points.size() - 1)), MeshError);
+    EXPECT_THROW(untangle(3, mesh.cells, orientation, std::vector<NodeId>{1000}, points), MeshError);
+    ElementList bad = mesh.cells;
+    bad.nodes[0] = 1000;
+    EXPECT_THROW(untangle(3, bad, orientation, none, points), MeshError);
+    UntangleOptions options;
+    options.target_quality = 1.0;
+    EXPECT_THROW(untangle(3, mesh.cells, orientation, none, points, options), Error);
+    options.target_quality = -0.1;
+    EXPECT_THROW(untangle(3, mesh.cells, orientation, none, points, options), Error);
+}
