@@ -13,6 +13,9 @@
 #include <vector>
 
 #include "dgwarp/cases/grid_with_hole.hpp"
+#include "dgwarp/cases/paper_cases.hpp"
+#include "dgwarp/methods/method.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
@@ -252,4 +255,31 @@ TEST(Untangle, BadInputThrowsNamingWhatIsWrong) {
     EXPECT_THROW(untangle(3, mesh.cells, orientation, none, points, options), Error);
     options.target_quality = -0.1;
     EXPECT_THROW(untangle(3, mesh.cells, orientation, none, points, options), Error);
+}
+
+// The paper's twisted bar after the twist and a 45° rotation: DG-IDW with the
+// paper's weights inverts cells in bands along the Delaunay graph's edges
+// (docs/RESULTS-DISCUSSION.md); no single node can leave such a band, and the
+// rounds' smoothing restart is what unfolds it (measured: 151 inverted -> 0).
+TEST(Untangle, UnfoldsTheTwistedBarAfterTheTwistAndTheRotation) {
+    const Mesh mesh = make_case("twisted-bar");
+    const auto motions = case_motions("twisted-bar", mesh);
+    const CaseMotion& cm = motions.at(1);
+    ASSERT_EQ(cm.name, "twist-rotate-45");
+    const ResolvedBoundary b = resolve_boundary(mesh, cm.spec);
+    const BoundaryMotion motion = resolve_frame(mesh, cm.spec, b.boundary, 0).motion;
+    const Plan plan = prepare(Method::dg_idw, 2, mesh.points, b.boundary);
+    std::vector<double> points(mesh.points.size());
+    deform(plan, mesh.points, motion, points);
+    const QualitySummary interpolated = judge(mesh, points);
+    ASSERT_GT(interpolated.inverted, 50);
+    const std::vector<double> before = points;
+
+    const UntangleReport r = untangle(2, mesh.cells, cell_orientations(mesh), b.boundary.nodes, points);
+    EXPECT_EQ(r.inverted_before, interpolated.inverted);
+    EXPECT_EQ(r.inverted_after, 0);
+    EXPECT_EQ(judge(mesh, points).inverted, 0);
+    for (NodeId n : b.boundary.nodes)
+        for (int d = 0; d < 2; ++d)
+            EXPECT_EQ(points[2 * static_cast<std::size_t>(n) + d], before[2 * static_cast<std::size_t>(n) + d]);
 }

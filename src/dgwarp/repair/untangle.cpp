@@ -190,6 +190,30 @@ void improve_node(int dim, const ElementList& cells, const CellJudge& judge, std
     }
 }
 
+/// `iterations` Jacobi sweeps moving each of `nodes` to the mean of the
+/// centroids of its cells.
+void smooth(int dim, const ElementList& cells, const NodeCells& around, std::span<const NodeId> nodes,
+            std::span<double> points, int iterations) {
+    std::vector<double> next(nodes.size() * static_cast<std::size_t>(dim));
+    for (int it = 0; it < iterations; ++it) {
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            std::array<double, 3> sum{};
+            const auto star = around.of(static_cast<std::size_t>(nodes[i]));
+            for (std::int64_t c : star) {
+                const auto cn = cells.nodes_of(static_cast<std::size_t>(c));
+                for (NodeId m : cn)
+                    for (int d = 0; d < dim; ++d)
+                        sum[d] += points[static_cast<std::size_t>(m) * dim + d] / static_cast<double>(cn.size());
+            }
+            for (int d = 0; d < dim; ++d)
+                next[i * static_cast<std::size_t>(dim) + d] = star.empty() ? points[static_cast<std::size_t>(nodes[i]) * dim + d]
+                                                                           : sum[d] / static_cast<double>(star.size());
+        }
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+            for (int d = 0; d < dim; ++d) points[static_cast<std::size_t>(nodes[i]) * dim + d] = next[i * static_cast<std::size_t>(dim) + d];
+    }
+}
+
 }  // namespace
 
 UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
@@ -282,6 +306,17 @@ UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::
                 touched[static_cast<std::size_t>(n)] = 1;
                 touched_list.push_back(n);
             }
+        // After a round that gained nothing, the search is stuck in a fold that
+        // no single node can leave: smooth the region first (each node to the
+        // mean of its cells' centroids, which unfolds bands of flipped cells),
+        // and keep the result only if the round then ends better.
+        std::vector<double> snapshot;
+        if (stalled > 0) {
+            snapshot.reserve(movable.size() * static_cast<std::size_t>(dim));
+            for (NodeId n : movable)
+                for (int d = 0; d < dim; ++d) snapshot.push_back(points[static_cast<std::size_t>(n) * dim + d]);
+            smooth(dim, cells, around, movable, points, 20);
+        }
         for (int sweep = 0; sweep < options.sweeps_per_round; ++sweep)
             for (NodeId n : movable)
                 improve_node(dim, cells, judge, around.of(static_cast<std::size_t>(n)), n, points, options.max_steps);
@@ -298,6 +333,12 @@ UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::
         for (NodeId n : movable)
             for (std::int64_t c : around.of(static_cast<std::size_t>(n))) check(c);
         std::sort(still.begin(), still.end());
+        if (!snapshot.empty() && !(still.size() < bad.size() || (still.size() == bad.size() && score(still).second > last.second))) {
+            for (std::size_t i = 0; i < movable.size(); ++i)  // the smoothing did not help: undo the round
+                for (int d = 0; d < dim; ++d)
+                    points[static_cast<std::size_t>(movable[i]) * dim + d] = snapshot[i * static_cast<std::size_t>(dim) + d];
+            still = bad;
+        }
         bad = std::move(still);
         const auto now = score(bad);
         stalled = (now.first < last.first || now.second > last.second + 1e-3) ? 0 : stalled + 1;

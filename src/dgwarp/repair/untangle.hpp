@@ -13,9 +13,11 @@
 // round by round one more ring of their neighbours, are each moved in turn
 // (Gauss-Seidel, in node order) by a compass search that maximises the
 // smallest Knupp shape quality of the cells around the node (optimisation-based
-// smoothing, Freitag & Plassmann). The quality is signed against the
-// reference orientations, so a node leaves an inverted cell by raising its
-// quality through zero. Serial and deterministic.
+// smoothing, Freitag & Plassmann); after a round that gained nothing, the
+// region is first smoothed (Laplacian), which unfolds bands of flipped cells
+// that no single node can leave, and the round is undone if that did not help.
+// The quality is signed against the reference orientations, so a node leaves
+// an inverted cell by raising its quality through zero. Serial and deterministic.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -26,7 +28,7 @@ namespace dgwarp {
 
 struct UntangleOptions {
     double target_quality = 0;  // repair the cells at or below this quality (0: the inverted ones); in [0, 1)
-    int max_rounds = 12;        // round r moves the free nodes within r - 1 rings of the cells to repair;
+    int max_rounds = 30;        // round r moves the free nodes within r - 1 rings of the cells to repair;
                                 //   it stops early when two rounds in a row repair no cell and lift the worst by under 0.001
     int sweeps_per_round = 4;   // Gauss-Seidel sweeps over those nodes per round
     int max_steps = 40;         // search steps per node and sweep
