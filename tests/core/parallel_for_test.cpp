@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -66,4 +67,37 @@ TEST(ParallelFor, RethrowsTheBodysException) {
                      }),
                      std::runtime_error);
     }
+}
+
+TEST(ParallelFor, BlocksCoverTheRangeOnceInBlocksOfTheGivenSize) {
+    ThreadCount keep;
+    for (int threads : {1, 2}) {
+        set_num_threads(threads);
+        for (std::int64_t n : {std::int64_t{0}, std::int64_t{1}, std::int64_t{999}, std::int64_t{1000}, std::int64_t{12345}}) {
+            std::vector<int> hits(static_cast<std::size_t>(n), 0);
+            std::vector<std::pair<std::int64_t, std::int64_t>> blocks;
+            std::mutex m;
+            parallel_for_blocks(n, 1000, [&](std::int64_t begin, std::int64_t end) {
+                {
+                    std::lock_guard lock(m);
+                    blocks.emplace_back(begin, end);
+                }
+                for (std::int64_t i = begin; i < end; ++i) ++hits[static_cast<std::size_t>(i)];
+            });
+            for (int h : hits) ASSERT_EQ(h, 1) << "n = " << n;
+            std::sort(blocks.begin(), blocks.end());
+            if (threads == 1 || n <= 1000) {
+                EXPECT_EQ(blocks.size(), n == 0 ? 0u : 1u) << "n = " << n;  // one call on the caller
+            } else {
+                EXPECT_EQ(blocks.size(), static_cast<std::size_t>((n + 999) / 1000)) << "n = " << n;
+                for (std::size_t b = 0; b < blocks.size(); ++b)
+                    EXPECT_EQ(blocks[b].first, static_cast<std::int64_t>(b) * 1000);
+            }
+        }
+    }
+    set_num_threads(2);
+    EXPECT_THROW(parallel_for_blocks(5000, 100, [](std::int64_t begin, std::int64_t) {
+                     if (begin == 2500) throw std::runtime_error("bad block");
+                 }),
+                 std::runtime_error);
 }

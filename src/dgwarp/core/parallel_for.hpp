@@ -30,6 +30,14 @@ void parallel_for(std::int64_t n, Body&& body, std::int64_t grain = parallel_gra
 template <class Body>
 void parallel_for_chunks(std::int64_t n, Body&& body);
 
+/// Calls body(begin, end) on blocks of `block` indices covering [0, n),
+/// handed to the threads as they become free: for loops whose cost per index
+/// varies along the range (one contiguous chunk per thread would leave one
+/// thread waiting). With a body that writes only its own indices, results do
+/// not depend on the thread count. One thread, or one block: a single call.
+template <class Body>
+void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body);
+
 }  // namespace dgwarp
 
 #include "dgwarp/core/parallel_for_impl.hpp"

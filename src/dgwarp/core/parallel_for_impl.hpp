@@ -26,6 +26,24 @@ void parallel_region_for(std::int64_t n, Body&& body) {
     if (error) std::rethrow_exception(error);
 }
 
+// The same with blocks handed out to the threads as they finish (dynamic
+// schedule), for bodies whose cost varies along the range.
+template <class Body>
+void parallel_region_for_dynamic(std::int64_t n, Body&& body) {
+    std::exception_ptr error;
+    std::mutex error_mutex;
+#pragma omp parallel for schedule(dynamic)
+    for (std::int64_t i = 0; i < n; ++i) {
+        try {
+            body(i);
+        } catch (...) {
+            std::lock_guard lock(error_mutex);
+            if (!error) error = std::current_exception();
+        }
+    }
+    if (error) std::rethrow_exception(error);
+}
+
 }  // namespace detail
 
 template <class Body>
@@ -43,6 +61,15 @@ void parallel_for_chunks(std::int64_t n, Body&& body) {
     const std::int64_t chunks = n < parallel_grain ? 1 : std::min<std::int64_t>(num_threads(), n);
     if (chunks == 1) return body(std::int64_t{0}, n);
     detail::parallel_region_for(chunks, [&](std::int64_t c) { body(n * c / chunks, n * (c + 1) / chunks); });
+}
+
+template <class Body>
+void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body) {
+    if (n <= 0) return;
+    block = std::max<std::int64_t>(block, 1);
+    const std::int64_t blocks = (n + block - 1) / block;
+    if (blocks == 1 || num_threads() == 1) return body(std::int64_t{0}, n);
+    detail::parallel_region_for_dynamic(blocks, [&](std::int64_t b) { body(b * block, std::min(n, (b + 1) * block)); });
 }
 
 }  // namespace dgwarp
