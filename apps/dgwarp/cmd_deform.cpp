@@ -107,11 +107,11 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout.unsetf(std::ios::floatfield);
     std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
               << ", write " << milliseconds(f.write_seconds) << "\n";
-    if (f.untangled)
-        std::cout << "untangle  inverted cells " << f.untangled->inverted_before << " -> " << f.untangled->inverted_after
-                  << ", cells at or below the target " << f.untangled->below_target_before << " -> "
-                  << f.untangled->below_target_after << ", " << f.untangled->nodes_moved << " volume nodes moved (at most " << f.untangled->max_move
-                  << "), " << milliseconds(f.untangle_seconds) << "\n";
+    if (const auto& u = f.untangled)
+        std::cout << "untangle  inverted cells " << u->inverted_before << " -> " << u->inverted_after
+                  << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
+                  << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
+                  << milliseconds(f.untangle_seconds) << "\n";
     if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
                                        << f.step.invalid_graph_simplices << " invalid simplices)\n";
 }
@@ -307,12 +307,14 @@ void add_deform_command(CLI::App& app) {
         ->required();
     cmd->add_option("--plan", args->plan, "Use a plan saved by 'dgwarp prepare' instead of building it");
     cmd->add_flag("--allow-invalid", args->allow_invalid, "Write the result even if cells are inverted");
-    cmd->add_flag("--untangle", args->untangle,
-                  "After each step, move the volume nodes around inverted cells until none is inverted "
-                  "(boundary nodes stay; docs/UNTANGLE.md)");
+    CLI::Option* untangle_flag =
+        cmd->add_flag("--untangle", args->untangle,
+                      "After each step, move the volume nodes around inverted cells until none is inverted "
+                      "(boundary nodes stay; docs/UNTANGLE.md)");
     cmd->add_option("--untangle-target", args->untangle_target,
                     "With --untangle: also repair the cells of quality at or below this (default 0: inverted only)")
-        ->check(CLI::Range(0.0, 0.99));
+        ->check(CLI::Range(0.0, 0.99))
+        ->needs(untangle_flag);
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(

@@ -268,4 +268,5 @@ TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(nlohmann::json::parse(r.out).at("frames").at(0).at("untangle").is_null());
     EXPECT_EQ(run_cli(base + quoted(dir / "x.su2") + " --untangle --untangle-target 1.5").exit_code, 1);
+    EXPECT_EQ(run_cli(base + quoted(dir / "x.su2") + " --untangle-target 0.1").exit_code, 1);  // needs --untangle
 }
