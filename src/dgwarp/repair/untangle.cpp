@@ -194,23 +194,22 @@ void improve_node(int dim, const ElementList& cells, const CellJudge& judge, std
 /// centroids of its cells.
 void smooth(int dim, const ElementList& cells, const NodeCells& around, std::span<const NodeId> nodes,
             std::span<double> points, int iterations) {
-    std::vector<double> next(nodes.size() * static_cast<std::size_t>(dim));
+    const auto at = [&](NodeId n, int d) -> double& { return points[static_cast<std::size_t>(n) * dim + d]; };
+    std::vector<std::array<double, 3>> next(nodes.size());
     for (int it = 0; it < iterations; ++it) {
         for (std::size_t i = 0; i < nodes.size(); ++i) {
-            std::array<double, 3> sum{};
             const auto star = around.of(static_cast<std::size_t>(nodes[i]));
+            std::array<double, 3> sum{};
             for (std::int64_t c : star) {
-                const auto cn = cells.nodes_of(static_cast<std::size_t>(c));
-                for (NodeId m : cn)
-                    for (int d = 0; d < dim; ++d)
-                        sum[d] += points[static_cast<std::size_t>(m) * dim + d] / static_cast<double>(cn.size());
+                const auto cell = cells.nodes_of(static_cast<std::size_t>(c));
+                for (NodeId m : cell)
+                    for (int d = 0; d < dim; ++d) sum[d] += at(m, d) / static_cast<double>(cell.size());
             }
             for (int d = 0; d < dim; ++d)
-                next[i * static_cast<std::size_t>(dim) + d] = star.empty() ? points[static_cast<std::size_t>(nodes[i]) * dim + d]
-                                                                           : sum[d] / static_cast<double>(star.size());
+                next[i][d] = star.empty() ? at(nodes[i], d) : sum[d] / static_cast<double>(star.size());
         }
         for (std::size_t i = 0; i < nodes.size(); ++i)
-            for (int d = 0; d < dim; ++d) points[static_cast<std::size_t>(nodes[i]) * dim + d] = next[i * static_cast<std::size_t>(dim) + d];
+            for (int d = 0; d < dim; ++d) at(nodes[i], d) = next[i][d];
     }
 }
 
