@@ -2,6 +2,11 @@
 
 #include "dgwarp/cases/sphere_box.hpp"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +15,7 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 
@@ -104,6 +110,31 @@ SphereBoxMesh sphere_box_mesh(const SphereBoxCase& c, const std::filesystem::pat
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !load(file, m))
         throw std::runtime_error("Gmsh mesh generation failed for case " + c.name);
     return m;
+}
+
+SphereBoxMesh renumbered_along_hilbert_curve(const SphereBoxMesh& m) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Point = K::Point_3;
+    const std::size_t n = m.num_points();
+    std::vector<Point> points(n);
+    for (std::size_t i = 0; i < n; ++i) points[i] = Point(m.points[3 * i], m.points[3 * i + 1], m.points[3 * i + 2]);
+    std::vector<std::size_t> order(n);  // order[k]: the old id of new node k
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    using Traits = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<Point>::type>;
+    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)),
+                       CGAL::Hilbert_sort_median_policy());
+    std::vector<NodeId> new_id(n);
+    for (std::size_t k = 0; k < n; ++k) new_id[order[k]] = static_cast<NodeId>(k);
+    SphereBoxMesh r;
+    r.generate_seconds = m.generate_seconds;
+    r.points.resize(m.points.size());
+    for (std::size_t k = 0; k < n; ++k)
+        for (int d = 0; d < 3; ++d) r.points[3 * k + d] = m.points[3 * order[k] + d];
+    for (const auto& [from, to] : {std::pair{&m.sphere_nodes, &r.sphere_nodes}, std::pair{&m.box_nodes, &r.box_nodes}}) {
+        for (NodeId id : *from) to->push_back(new_id[static_cast<std::size_t>(id)]);
+        std::sort(to->begin(), to->end());
+    }
+    return r;
 }
 
 }  // namespace dgwarp::bench

@@ -31,4 +31,10 @@ struct SphereBoxMesh {
 /// process killed after `timeout_seconds`) when absent. Throws std::runtime_error.
 SphereBoxMesh sphere_box_mesh(const SphereBoxCase& c, const std::filesystem::path& cache_dir, int timeout_seconds);
 
+/// The same mesh with its nodes renumbered along a Hilbert curve (as solvers
+/// renumber meshes for locality): Gmsh's 3D Delaunay numbers new nodes in
+/// insertion order, which is spatially random, and a step's gathers follow the
+/// node order.
+SphereBoxMesh renumbered_along_hilbert_curve(const SphereBoxMesh& m);
+
 }  // namespace dgwarp::bench
