@@ -8,6 +8,7 @@
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/methods/method.hpp"
+#include "support/rect_box_files.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -15,24 +16,12 @@ using namespace dgwarp::test;
 
 namespace {
 
-
-
-
-// The rect-box mesh in `dir`.
-std::filesystem::path rect_box(const std::filesystem::path& dir) {
-    EXPECT_EQ(run_cli("demo -o " + quoted(dir)).exit_code, 0);
-    return dir / "rect_box.su2";
-}
-
-const char* small_rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
 const char* huge_translation = R"({"markers": {"rectangle": {"translate": [18.8, 0]}}})";  // to 0.2 from the box
 
 }  // namespace
 
 TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", small_rotation);
+    const auto [dir, mesh, motion] = rect_box_files();
     const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
                                     quoted(dir / "out.su2") + " --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -62,9 +51,7 @@ TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
 }
 
 TEST(CliDeform, VtuOutputCarriesDisplacementAndQuality) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", small_rotation);
+    const auto [dir, mesh, motion] = rect_box_files();
     ASSERT_EQ(run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "out.vtu") + " -q")
                   .exit_code,
               0);
@@ -78,9 +65,8 @@ TEST(CliDeform, VtuOutputCarriesDisplacementAndQuality) {
 }
 
 TEST(CliDeform, InvertedCellsExitWith3AndWriteNothingUnlessAllowed) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", huge_translation);
+    const auto [dir, mesh, rotation] = rect_box_files();
+    const auto motion = write_text(dir / "huge.json", huge_translation);
     const auto out = write_text(dir / "out.su2", "previous result");
     CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(out));
     EXPECT_EQ(r.exit_code, 3) << r.err;
@@ -94,8 +80,7 @@ TEST(CliDeform, InvertedCellsExitWith3AndWriteNothingUnlessAllowed) {
 }
 
 TEST(CliDeform, TimeSeriesWritesOneFilePerFrame) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
+    const auto [dir, mesh, rotation] = rect_box_files();
     const auto motion = write_text(dir / "pitch.json", R"({
         "markers": {"rectangle": {"periodic": {"pitch": {"amplitude_deg": 10, "frequency": 1, "center": [0, 0]}}}},
         "time": {"time_step": 0.125, "steps": 5}})");
@@ -115,9 +100,7 @@ TEST(CliDeform, TimeSeriesWritesOneFilePerFrame) {
 }
 
 TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", small_rotation);
+    const auto [dir, mesh, motion] = rect_box_files();
     ASSERT_EQ(run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "rb.plan") + " -q")
                   .exit_code,
               0);
@@ -132,9 +115,7 @@ TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
 }
 
 TEST(CliPrepare, APlanKeepsItsWeightsAndRefusesOthers) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", small_rotation);
+    const auto [dir, mesh, motion] = rect_box_files();
     const std::string base = quoted(mesh) + " -m " + quoted(motion);
     ASSERT_EQ(run_cli("prepare " + base + " --dg-idw-weights continuous -o " + quoted(dir / "c.plan") + " -q").exit_code,
               0);
@@ -158,9 +139,7 @@ TEST(CliPrepare, APlanKeepsItsWeightsAndRefusesOthers) {
 }
 
 TEST(CliPrepare, PlanOfAnotherMeshIsRefused) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", small_rotation);
+    const auto [dir, mesh, motion] = rect_box_files();
     ASSERT_EQ(run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "rb.plan") + " -q")
                   .exit_code,
               0);
@@ -176,9 +155,7 @@ TEST(CliPrepare, PlanOfAnotherMeshIsRefused) {
 }
 
 TEST(CliDeform, MethodAllPrintsOneRowPerMethod) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
-    const auto motion = write_text(dir / "m.json", small_rotation);
+    const auto [dir, mesh, motion] = rect_box_files();
     CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "out.su2") +
                               " --method all");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -197,15 +174,14 @@ TEST(CliDeform, MethodAllPrintsOneRowPerMethod) {
 }
 
 TEST(CliDeform, BadMotionFilesExitWith2NamingTheProblem) {
-    const auto dir = scratch_dir();
-    const auto mesh = rect_box(dir);
+    const auto [dir, mesh, rotation] = rect_box_files();
     const std::vector<std::pair<std::string, std::string>> cases = {
         {R"({"markers": {"wing": {"translate": [1, 0]}}})", "wing"},
         {R"({"markers": {"rectangle": {"translte": [1, 0]}}})", "translte"},
-        {R"({"markers": {"rectangle": {"translate": [1, 0)", "m.json"},
+        {R"({"markers": {"rectangle": {"translate": [1, 0)", "bad.json"},
     };
     for (const auto& [text, needle] : cases) {
-        const auto motion = write_text(dir / "m.json", text);
+        const auto motion = write_text(dir / "bad.json", text);
         const CommandResult r =
             run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "x.su2"));
         EXPECT_EQ(r.exit_code, 2) << text;

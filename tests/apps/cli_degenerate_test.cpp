@@ -8,14 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "dgwarp/io/mesh_io.hpp"
+#include "support/rect_box_files.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
 using namespace dgwarp::test;
 
 namespace {
-
-
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
@@ -24,12 +23,6 @@ bool has_warning(const nlohmann::json& warnings, const std::string& part) {
     for (const auto& w : warnings)
         if (contains(w.get<std::string>(), part)) return true;
     return false;
-}
-
-/// The rect-box mesh (from `dgwarp demo`), read.
-Mesh rect_box(const std::filesystem::path& dir) {
-    EXPECT_EQ(run_cli("demo -o " + quoted(dir)).exit_code, 0);
-    return read_mesh(dir / "rect_box.su2");
 }
 
 std::size_t marker_index(const Mesh& mesh, const std::string& name) {
@@ -49,7 +42,27 @@ NodeId add_collapsed_edge(Mesh& mesh, NodeId node, const std::string& marker) {
     return copy;
 }
 
-const char* rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
+/// The rect-box mesh with a zero-length boundary edge (the rectangle's first
+/// node and a copy of it) added to `marker`, and `deform --method all --json`
+/// of it with the rect-box rotation.
+struct CollapsedEdgeRun {
+    Mesh mesh;  // the input: rect-box with the copy
+    NodeId node = 0, copy = 0;
+    CommandResult deform;
+};
+
+CollapsedEdgeRun deform_with_collapsed_edge(const std::string& marker) {
+    const auto [dir, rect_box, rotation] = rect_box_files();
+    CollapsedEdgeRun run;
+    run.mesh = read_mesh(rect_box);
+    run.node = run.mesh.markers[marker_index(run.mesh, "rectangle")].elements.nodes[0];
+    run.copy = add_collapsed_edge(run.mesh, run.node, marker);
+    const auto file = dir / ("collapsed-on-" + marker + ".su2");
+    write_mesh(file, run.mesh);
+    run.deform = run_cli("deform " + quoted(file) + " -m " + quoted(rotation) + " -o " + quoted(dir / "out.su2") +
+                         " --method all --json");
+    return run;
+}
 
 /// A 2D square of 8 triangles (nodes on a 3 x 3 grid) whose boundary is the
 /// physical group "outer"; the physical group "slat" has no element.
@@ -98,8 +111,8 @@ $EndElements
 }  // namespace
 
 TEST(CliDegenerate, AnEmptySu2MarkerIsListedAndAMotionNamingItWarnsAndMovesNothing) {
-    const auto dir = scratch_dir();
-    Mesh mesh = rect_box(dir);
+    const auto [dir, rect_box, rotation] = rect_box_files();
+    Mesh mesh = read_mesh(rect_box);
     mesh.markers.push_back(Marker{"slat", {}});
     write_mesh(dir / "empty.su2", mesh);
     {
@@ -151,11 +164,10 @@ TEST(CliDegenerate, AGmshPhysicalGroupWithoutElementsIsAnEmptyMarker) {
 }
 
 TEST(CliDegenerate, AMeshWhoseMarkersAreAllEmptyIsAnErrorNamingThem) {
-    const auto dir = scratch_dir();
-    Mesh mesh = rect_box(dir);
+    const auto [dir, rect_box, motion] = rect_box_files();
+    Mesh mesh = read_mesh(rect_box);
     for (Marker& m : mesh.markers) m.elements = {};
     write_mesh(dir / "bare.su2", mesh);
-    const auto motion = write_text(dir / "m.json", rotation);
     for (const char* method : {"dg-idw", "dgm", "idw", "rbf"}) {
         const CommandResult r = run_cli("deform " + quoted(dir / "bare.su2") + " -m " + quoted(motion) + " -o " +
                                         quoted(dir / "out.su2") + " --method " + method);
@@ -167,15 +179,7 @@ TEST(CliDegenerate, AMeshWhoseMarkersAreAllEmptyIsAnErrorNamingThem) {
 }
 
 TEST(CliDegenerate, AZeroLengthBoundaryEdgeWorksWithEveryMethodAndWarns) {
-    const auto dir = scratch_dir();
-    Mesh mesh = rect_box(dir);
-    const Marker& rectangle = mesh.markers[marker_index(mesh, "rectangle")];
-    const NodeId node = rectangle.elements.nodes[0];
-    const NodeId copy = add_collapsed_edge(mesh, node, "rectangle");
-    write_mesh(dir / "collapsed.su2", mesh);
-    const auto motion = write_text(dir / "m.json", rotation);
-    const CommandResult r = run_cli("deform " + quoted(dir / "collapsed.su2") + " -m " + quoted(motion) + " -o " +
-                                    quoted(dir / "out.su2") + " --method all --json");
+    const auto [mesh, node, copy, r] = deform_with_collapsed_edge("rectangle");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_TRUE(has_warning(j.at("warnings"), "2 boundary nodes are at the same coordinates")) << j.at("warnings");
@@ -194,16 +198,9 @@ TEST(CliDegenerate, AZeroLengthBoundaryEdgeWorksWithEveryMethodAndWarns) {
 }
 
 TEST(CliDegenerate, CoincidentNodesOnAMovingAndAStaticMarkerSeparateWithAWarning) {
-    const auto dir = scratch_dir();
-    Mesh mesh = rect_box(dir);
-    const NodeId node = mesh.markers[marker_index(mesh, "rectangle")].elements.nodes[0];
     // The edge (node, copy) on the static far field: node is then on both markers and moves
     // (moving_wins), its copy is static only: a collapsed trailing edge whose lower node is held.
-    const NodeId copy = add_collapsed_edge(mesh, node, "farfield");
-    write_mesh(dir / "split.su2", mesh);
-    const auto motion = write_text(dir / "m.json", rotation);
-    const CommandResult r = run_cli("deform " + quoted(dir / "split.su2") + " -m " + quoted(motion) + " -o " +
-                                    quoted(dir / "out.su2") + " --method all --json");
+    const auto [mesh, node, copy, r] = deform_with_collapsed_edge("farfield");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     for (const auto& run : j.at("methods")) {
@@ -220,11 +217,11 @@ TEST(CliDegenerate, CoincidentNodesOnAMovingAndAStaticMarkerSeparateWithAWarning
 
 TEST(CliDegenerate, VolumeNodesOutsideTheGraphsHullAreAWarning) {
     // Without its far-field marker, the rectangle's graph covers none of the volume nodes.
-    const auto dir = scratch_dir();
-    Mesh mesh = rect_box(dir);
+    const auto [dir, rect_box, rotation] = rect_box_files();
+    Mesh mesh = read_mesh(rect_box);
     mesh.markers.erase(mesh.markers.begin() + static_cast<std::ptrdiff_t>(marker_index(mesh, "farfield")));
     write_mesh(dir / "open.su2", mesh);
-    const auto motion = write_text(dir / "m.json", R"({"markers": {"rectangle": {"translate": [0.01, 0]}}})");
+    const auto motion = write_text(dir / "translate.json", R"({"markers": {"rectangle": {"translate": [0.01, 0]}}})");
     const std::string inputs = quoted(dir / "open.su2") + " -m " + quoted(motion);
     const CommandResult r = run_cli("deform " + inputs + " -o " + quoted(dir / "out.su2") + " --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -240,7 +237,7 @@ TEST(CliDegenerate, VolumeNodesOutsideTheGraphsHullAreAWarning) {
     ASSERT_EQ(prepared.exit_code, 0) << prepared.err;
     EXPECT_TRUE(has_warning(nlohmann::json::parse(prepared.out).at("warnings"), "outside the Delaunay graph's hull"));
     // With the far field, no node is outside: no such warning.
-    const CommandResult closed = run_cli("deform " + quoted(dir / "rect_box.su2") + " -m " + quoted(motion) + " -o " +
+    const CommandResult closed = run_cli("deform " + quoted(rect_box) + " -m " + quoted(motion) + " -o " +
                                          quoted(dir / "out.su2") + " --json");
     ASSERT_EQ(closed.exit_code, 0) << closed.err;
     EXPECT_FALSE(has_warning(nlohmann::json::parse(closed.out).at("warnings"), "hull"));

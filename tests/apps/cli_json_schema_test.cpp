@@ -9,14 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/rect_box_files.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp::test;
 
 namespace {
-
-
-
 
 /// Validates `report` (JSON text, written to a file in `dir`) against docs/schema/COMMAND.schema.json.
 CommandResult validate(const std::filesystem::path& dir, const std::string& command, const std::string& report) {
@@ -43,19 +41,6 @@ void expect_invalid(const std::filesystem::path& dir, const std::string& command
     EXPECT_NE(v.err.find(expected), std::string::npos) << v.err;
 }
 
-struct RectBox {
-    std::filesystem::path dir, mesh, motion;
-};
-
-RectBox rect_box() {
-    RectBox c;
-    c.dir = scratch_dir();
-    EXPECT_EQ(run_cli("demo -o " + quoted(c.dir)).exit_code, 0);
-    c.mesh = c.dir / "rect_box.su2";
-    c.motion = write_text(c.dir / "m.json", R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})");
-    return c;
-}
-
 }  // namespace
 
 TEST(CliJsonSchema, EverySchemaIsValidAndTheToolRejectsBadUsage) {
@@ -69,7 +54,7 @@ TEST(CliJsonSchema, EverySchemaIsValidAndTheToolRejectsBadUsage) {
 }
 
 TEST(CliJsonSchema, InfoAndQualityReportsValidateAndTamperedOnesDoNot) {
-    const RectBox c = rect_box();
+    const RectBoxFiles c = rect_box_files();
     const nlohmann::json info = valid_report(c.dir, "info", quoted(c.mesh) + " --json");
     valid_report(c.dir, "quality", quoted(c.mesh) + " --json");
     const nlohmann::json quality = valid_report(c.dir, "quality", quoted(c.mesh) + " --reference " + quoted(c.mesh) + " --json");
@@ -87,7 +72,7 @@ TEST(CliJsonSchema, InfoAndQualityReportsValidateAndTamperedOnesDoNot) {
 }
 
 TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
-    const RectBox c = rect_box();
+    const RectBoxFiles c = rect_box_files();
     const std::string inputs = quoted(c.mesh) + " -m " + quoted(c.motion);
     const nlohmann::json one = valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "out.su2") + " --json");
     const nlohmann::json all =

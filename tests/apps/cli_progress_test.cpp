@@ -2,34 +2,15 @@
 // script(1)), never when standard error is a file or pipe, nor with --quiet.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
+#include "support/rect_box_files.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp::test;
 
 namespace {
 
-
-const char* rotation = R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "center": [0, 0]}}}})";
-
-struct Files {
-    std::filesystem::path dir, mesh, motion;
-};
-
-// The rect-box mesh (from `dgwarp demo`) and a motion for it.
-Files rect_box() {
-    Files f;
-    f.dir = scratch_dir();
-    EXPECT_EQ(run_cli("demo -o " + quoted(f.dir)).exit_code, 0);
-    f.mesh = f.dir / "rect_box.su2";
-    f.motion = f.dir / "m.json";
-    std::ofstream(f.motion) << rotation;
-    return f;
-}
-
 // Every command that shows progress, with arguments that run each method.
-std::vector<std::string> commands(const Files& f) {
+std::vector<std::string> commands(const RectBoxFiles& f) {
     const std::string m = quoted(f.mesh);
     return {"info " + m,
             "quality " + m + " --reference " + m,
@@ -55,7 +36,7 @@ CommandResult run_cli_on_terminal(const std::string& args) {
 }  // namespace
 
 TEST(CliProgress, NothingWhenStandardErrorIsNotATerminal) {
-    const Files f = rect_box();
+    const RectBoxFiles f = rect_box_files();
     for (const std::string& c : commands(f)) {
         const CommandResult r = run_cli(c);
         ASSERT_EQ(r.exit_code, 0) << c << "\n" << r.err;
@@ -66,7 +47,7 @@ TEST(CliProgress, NothingWhenStandardErrorIsNotATerminal) {
 
 TEST(CliProgress, FractionsOnATerminalButNotWithQuiet) {
     if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "script(1) not installed";
-    const Files f = rect_box();
+    const RectBoxFiles f = rect_box_files();
     for (const std::string& c : commands(f)) {
         const CommandResult r = run_cli_on_terminal(c);
         ASSERT_EQ(r.exit_code, 0) << c << "\n" << r.out << r.err;

@@ -5,16 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/mesh_file_test_name.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp::test;
 
-namespace {
-
 class CliQualityOnRealMeshes : public ::testing::TestWithParam<std::filesystem::path> {};
-
-
-}  // namespace
 
 TEST_P(CliQualityOnRealMeshes, JsonAgreesWithIndependentComputation) {
     const auto mesh = GetParam();
@@ -43,12 +39,7 @@ TEST_P(CliQualityOnRealMeshes, JsonAgreesWithIndependentComputation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Su2Meshes, CliQualityOnRealMeshes, ::testing::ValuesIn(su2_meshes()),
-                         [](const auto& info) {
-                             std::string n = info.param.stem().string();
-                             for (char& c : n)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return n;
-                         });
+                         mesh_file_test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(CliQualityOnRealMeshes);
 
 TEST(CliQuality, ReferenceGivesRatioOfOneForTheSameMesh) {

@@ -7,18 +7,18 @@
 #include <numbers>
 
 #include "dgwarp/core/error.hpp"
+#include "support/degrees.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
+using dgwarp::test::deg;
 
 namespace {
-
-constexpr double deg = std::numbers::pi / 180;
 
 MotionSpec parse(const std::string& text) { return parse_motion_file(text, "m.json", test::scratch_dir()); }
 
 /// The ParseError that parsing `text` throws, or fails the test.
-ParseError parse_error(const std::string& text) {
+ParseError motion_parse_error(const std::string& text) {
     try {
         parse(text);
     } catch (const ParseError& e) {
@@ -213,14 +213,14 @@ TEST(MotionFile, ErrorsNameTheJsonPath) {
         {R"([1, 2])", "top level"},
     };
     for (const Case& c : cases) {
-        const ParseError e = parse_error(c.text);
+        const ParseError e = motion_parse_error(c.text);
         EXPECT_EQ(e.file(), "m.json");
         EXPECT_TRUE(contains(e.what(), c.in_message)) << "message: " << e.what() << "\nshould name: " << c.in_message;
     }
 }
 
 TEST(MotionFile, UnknownKeyListsTheAcceptedKeys) {
-    const ParseError e = parse_error(R"({"markers": {"airfoil": {"translte": [1, 0]}}})");
+    const ParseError e = motion_parse_error(R"({"markers": {"airfoil": {"translte": [1, 0]}}})");
     EXPECT_EQ(e.found(), "unknown key translte");
     EXPECT_TRUE(contains(e.expected(), "translate"));
     EXPECT_TRUE(contains(e.expected(), "rotate"));
@@ -230,19 +230,19 @@ TEST(MotionFile, UnknownKeyListsTheAcceptedKeys) {
 
 TEST(MotionFile, SyntaxErrorsNaNAndOverflowGiveTheLine) {
     // NaN is not JSON: the parser stops at it.
-    ParseError nan = parse_error("{\"markers\": {\n  \"airfoil\": {\"translate\": [NaN, 0]}\n}}");
+    ParseError nan = motion_parse_error("{\"markers\": {\n  \"airfoil\": {\"translate\": [NaN, 0]}\n}}");
     EXPECT_EQ(nan.line(), 2u);
-    ParseError missing = parse_error("{\"markers\": {\n\n  \"a\": \"fixed\",\n}}");
+    ParseError missing = motion_parse_error("{\"markers\": {\n\n  \"a\": \"fixed\",\n}}");
     EXPECT_EQ(missing.line(), 4u);
-    ParseError overflow = parse_error("{\"markers\": {\n\"a\": {\"translate\": [1e999, 0]}}}");
+    ParseError overflow = motion_parse_error("{\"markers\": {\n\"a\": {\"translate\": [1e999, 0]}}}");
     EXPECT_EQ(overflow.line(), 2u);
     EXPECT_EQ(overflow.found(), "1e999");
 }
 
 TEST(MotionFile, KeyGivenTwiceIsAnError) {
-    const ParseError e = parse_error(R"({"frames": [{"markers": {"a": "fixed"}}, {"markers": {"a": "fixed", "a": {"translate": [1, 0]}}}]})");
+    const ParseError e = motion_parse_error(R"({"frames": [{"markers": {"a": "fixed"}}, {"markers": {"a": "fixed", "a": {"translate": [1, 0]}}}]})");
     EXPECT_TRUE(contains(e.what(), "frames[1].markers.a")) << e.what();
-    const ParseError top = parse_error(R"({"markers": {}, "markers": {}})");
+    const ParseError top = motion_parse_error(R"({"markers": {}, "markers": {}})");
     EXPECT_TRUE(contains(top.what(), "key markers twice at markers")) << top.what();
 }
 
@@ -250,12 +250,12 @@ TEST(MotionFile, DeeplyNestedJsonIsAParseError) {
     // A million '[' once overflowed the stack (the error message printed the
     // value recursively). Nesting is limited to 100 levels, the top object included.
     const std::size_t n = 1000000;
-    const ParseError deep = parse_error("{\"markers\": " + std::string(n, '[') + std::string(n, ']') + "}");
+    const ParseError deep = motion_parse_error("{\"markers\": " + std::string(n, '[') + std::string(n, ']') + "}");
     EXPECT_TRUE(contains(deep.expected(), "arrays and objects nested at most 100 deep")) << deep.what();
     EXPECT_EQ(deep.found().rfind("deeper nesting at markers[0][0]", 0), 0u) << deep.what();
     const auto with_comment = [](std::size_t levels) {
         return R"({"markers": {"a": "fixed"}, "comment": )" + std::string(levels, '[') + std::string(levels, ']') + "}";
     };
     EXPECT_EQ(parse(with_comment(99)).frames.size(), 1u);
-    EXPECT_TRUE(contains(parse_error(with_comment(100)).expected(), "nested at most 100 deep"));
+    EXPECT_TRUE(contains(motion_parse_error(with_comment(100)).expected(), "nested at most 100 deep"));
 }

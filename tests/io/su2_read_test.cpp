@@ -7,6 +7,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/su2.hpp"
+#include "support/mesh_file_test_name.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -89,12 +90,6 @@ void expect_markers_on_cells(const Mesh& m) {
         for (NodeId n : marker.elements.nodes) ASSERT_TRUE(in_cell[static_cast<std::size_t>(n)]) << marker.name << " " << n;
 }
 
-std::string test_name(const testing::TestParamInfo<std::filesystem::path>& info) {
-    std::string s = info.param.stem().string();
-    std::replace_if(s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-    return s;
-}
-
 }  // namespace
 
 TEST(Su2Meshes, TheFolderHoldsExactlyTheMeshesOfTheReadme) {
@@ -117,7 +112,7 @@ TEST_P(Su2ReadRealMesh, CountsMatchTheReadmeAndTheMeshIsValid) {
     for (const Marker& marker : m.markers) EXPECT_FALSE(marker.elements.empty()) << marker.name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Su2, Su2ReadRealMesh, testing::ValuesIn(test::su2_meshes()), test_name);
+INSTANTIATE_TEST_SUITE_P(Su2, Su2ReadRealMesh, testing::ValuesIn(test::su2_meshes()), test::mesh_file_test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Su2ReadRealMesh);
 
 TEST(Su2ReadRealMeshValues, FirstAndLastRecordsAreTheFilesText) {

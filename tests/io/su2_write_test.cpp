@@ -9,6 +9,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/su2.hpp"
+#include "support/mesh_file_test_name.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -39,12 +40,6 @@ Mesh awkward_2d_mesh() {
     tip.elements.push_back(CellType::vertex, v);
     m.markers = {wall, tip};
     return m;
-}
-
-std::string test_name(const testing::TestParamInfo<std::filesystem::path>& info) {
-    std::string s = info.param.stem().string();
-    std::replace_if(s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-    return s;
 }
 
 }  // namespace
@@ -104,7 +99,7 @@ TEST_P(Su2WriteRealMesh, WriteThenReadGivesTheSameMesh) {
     EXPECT_EQ(back.cells.size(), m.cells.size());
 }
 
-INSTANTIATE_TEST_SUITE_P(Su2, Su2WriteRealMesh, testing::ValuesIn(test::su2_meshes()), test_name);
+INSTANTIATE_TEST_SUITE_P(Su2, Su2WriteRealMesh, testing::ValuesIn(test::su2_meshes()), test::mesh_file_test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Su2WriteRealMesh);
 
 TEST(Su2Write, SecondZoneOfTheChtFileRoundTrips) {

@@ -23,7 +23,8 @@ namespace {
 
 constexpr DgIdwOptions continuous{.weighting = DgIdwWeighting::continuous};
 
-std::vector<double> deform(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion,
+/// The points deformed by DG-IDW, continuous weights unless `options` say otherwise.
+std::vector<double> run_dg_idw(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion,
                            const DgIdwOptions& options = continuous) {
     std::vector<double> out(points.size(), std::nan(""));
     deform_dg_idw(plan, points, motion, out, options);
@@ -72,7 +73,7 @@ TEST(DgIdwContinuous, OneTriangleTranslationMatchesTheHandFormulaForEveryMovingS
             }
             DgIdwOptions options = continuous;
             options.length_scale = length;
-            const auto out = deform(plan, points, motion, options);
+            const auto out = run_dg_idw(plan, points, motion, options);
             for (int d = 0; d < 2; ++d) {
                 const double expected = mask == 0 ? 0.0 : numerator[d] / (moving_sum + static_sum);
                 EXPECT_NEAR(out[6 + d] - x[d], expected, 1e-14) << "mask " << mask << " L " << length;
@@ -125,7 +126,7 @@ double largest_slope_across_faces(int dim, DgIdwWeighting weighting) {
     BoxInBox with_pairs = m;
     with_pairs.points = points;
     const BoundaryMotion motion = random_motion(with_pairs, 3, 0.05);
-    const auto out = deform(plan, points, motion, {.weighting = weighting});
+    const auto out = run_dg_idw(plan, points, motion, {.weighting = weighting});
     double worst = 0;
     for (NodeId p : pairs) {
         const auto a = static_cast<std::size_t>(p), b = a + 1;
@@ -158,14 +159,14 @@ TEST(DgIdwContinuous, KeepsTheMethodsProperties) {
         EXPECT_EQ(plan.weighting, DgIdwWeighting::continuous);
         // Zero motion is the identity, bit for bit.
         const BoundaryMotion zero(m.boundary.nodes.size());
-        EXPECT_EQ(deform(plan, m.points, zero), m.points);
+        EXPECT_EQ(run_dg_idw(plan, m.points, zero), m.points);
         // Boundary nodes move exactly; the same rigid motion everywhere moves every node rigidly.
         NodeMotion rigid{{0.1, -0.2, 0.05}, {0.0, dim == 3 ? 0.2 : 0.0, 0.4}, m.inner_center};
         BoundaryMotion all(m.boundary.nodes.size(), rigid);
         BoxInBox moving = m;
         std::fill(moving.boundary.moving.begin(), moving.boundary.moving.end(), std::uint8_t{1});
         const DgIdwPlan all_moving = prepare_dg_idw(dim, moving.points, moving.boundary, continuous);
-        const auto out = deform(all_moving, m.points, all);
+        const auto out = run_dg_idw(all_moving, m.points, all);
         for (std::size_t n = 0; n < m.num_points(); ++n) {
             const auto y = dgwarp::test::moved(dim, m.points, n, rigid);
             for (int d = 0; d < dim; ++d) EXPECT_NEAR(out[n * dim + d], y[d], 1e-12) << n;
@@ -175,10 +176,10 @@ TEST(DgIdwContinuous, KeepsTheMethodsProperties) {
         const int threads = num_threads();
         set_num_threads(1);
         const DgIdwPlan plan1 = prepare_dg_idw(dim, m.points, m.boundary, continuous);
-        const auto one = deform(plan1, m.points, motion);
+        const auto one = run_dg_idw(plan1, m.points, motion);
         set_num_threads(2);
         const DgIdwPlan plan2 = prepare_dg_idw(dim, m.points, m.boundary, continuous);
-        const auto two = deform(plan2, m.points, motion);
+        const auto two = run_dg_idw(plan2, m.points, motion);
         set_num_threads(threads);
         EXPECT_EQ(plan1.node_coefficients, plan2.node_coefficients);
         EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);

@@ -12,6 +12,7 @@
 #include "support/box_in_box.hpp"
 
 using namespace dgwarp;
+using dgwarp::test::all_moving;
 using dgwarp::test::box_in_box;
 using dgwarp::test::BoxInBox;
 using dgwarp::test::moved;
@@ -24,13 +25,6 @@ std::vector<double> deform(const DgIdwPlan& plan, const std::vector<double>& poi
     std::vector<double> out(points.size(), std::nan(""));
     deform_dg_idw(plan, points, motion, out, options);
     return out;
-}
-
-
-
-BoxInBox all_moving(BoxInBox m) {
-    std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), std::uint8_t{1});
-    return m;
 }
 
 }  // namespace

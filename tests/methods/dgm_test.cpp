@@ -13,6 +13,7 @@
 #include "support/box_in_box.hpp"
 
 using namespace dgwarp;
+using dgwarp::test::all_moving;
 using dgwarp::test::box_in_box;
 using dgwarp::test::BoxInBox;
 using dgwarp::test::moved;
@@ -26,13 +27,6 @@ std::vector<double> deform(const DgmPlan& plan, const std::vector<double>& point
     const DgmStepReport r = deform_dgm(plan, points, motion, out, options);
     if (report) *report = r;
     return out;
-}
-
-
-
-BoxInBox all_moving(BoxInBox m) {
-    std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), std::uint8_t{1});
-    return m;
 }
 
 // A random affine map x -> A x + b with det A > 0 (so the graph stays valid), row-major A.

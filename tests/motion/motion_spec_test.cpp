@@ -3,13 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
+
+#include "support/degrees.hpp"
 
 using namespace dgwarp;
-
-namespace {
-constexpr double deg = std::numbers::pi / 180;
-}
+using dgwarp::test::deg;
 
 TEST(MotionSpec, RotationVectorIsAngleTimesUnitAxis) {
     const Vec3 w = rotation_vector(0.3, {0, 0, 2});

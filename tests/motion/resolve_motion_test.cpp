@@ -9,16 +9,16 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "motion/motion_test_meshes.hpp"
+#include "support/degrees.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
 using dgwarp::test::chain;
 using dgwarp::test::cube_faces;
 using dgwarp::test::two_squares;
+using dgwarp::test::deg;
 
 namespace {
-
-constexpr double deg = std::numbers::pi / 180;
 
 /// Parses a motion file whose relative file names are looked up in `dir`.
 MotionSpec spec_in(const std::filesystem::path& dir, const std::string& json) {

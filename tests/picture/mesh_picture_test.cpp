@@ -23,15 +23,11 @@
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/picture/picture_layout.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "support/picture_test_box.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
-
-namespace {
-// The rect-box these tests were written for: the rectangle [-1, 1] × [-0.5, 0.5]
-// in the box [-6, 6]².
-const RectBoxOptions picture_test_box{2.0, 1.0, 6.0, 78, 30, 1.12};
-}  // namespace
+using dgwarp::test::picture_test_box;
 
 namespace {
 

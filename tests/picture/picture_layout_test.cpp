@@ -12,14 +12,10 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/picture/picture_layout.hpp"
 #include "dgwarp/picture/picture_window.hpp"
+#include "support/picture_test_box.hpp"
 
 using namespace dgwarp;
-
-namespace {
-// The rect-box these tests were written for: the rectangle [-1, 1] × [-0.5, 0.5]
-// in the box [-6, 6]².
-const RectBoxOptions picture_test_box{2.0, 1.0, 6.0, 78, 30, 1.12};
-}  // namespace
+using dgwarp::test::picture_test_box;
 
 namespace {
 

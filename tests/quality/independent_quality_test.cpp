@@ -4,7 +4,6 @@
 // dominant orientation rule (docs/QUALITY.md).
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -13,22 +12,12 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "support/mesh_file_test_name.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
 
-namespace {
-
 class QualityIndependent : public ::testing::TestWithParam<std::filesystem::path> {};
-
-std::string test_name(const ::testing::TestParamInfo<std::filesystem::path>& info) {
-    std::string name = info.param.stem().string();
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
-}
-
-}  // namespace
 
 TEST_P(QualityIndependent, SummaryAgreesWithThePythonComputation) {
     const std::filesystem::path& file = GetParam();
@@ -91,5 +80,5 @@ TEST(QualityIndependentTool, ReadsSu2FormsAndComputesTheFigures) {
     EXPECT_EQ(j2.at("inverted").get<int>(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(QualitySu2, QualityIndependent, ::testing::ValuesIn(test::su2_meshes()), test_name);
+INSTANTIATE_TEST_SUITE_P(QualitySu2, QualityIndependent, ::testing::ValuesIn(test::su2_meshes()), test::mesh_file_test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(QualityIndependent);

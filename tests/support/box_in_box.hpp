@@ -3,6 +3,7 @@
 // grid on [0, size]^dim without the inside of an inner box. Nodes on the outer
 // box are static boundary nodes, nodes on the inner box moving ones. No cells:
 // the methods under test only need points and a boundary set.
+#include <algorithm>
 #include <random>
 #include <span>
 #include <vector>
@@ -60,6 +61,12 @@ inline BoxInBox jittered(BoxInBox m, double amount, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-amount, amount);
     for (double& x : m.points) x += u(rng);
+    return m;
+}
+
+/// `m` with every boundary node moving, the outer box's too.
+inline BoxInBox all_moving(BoxInBox m) {
+    std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), std::uint8_t{1});
     return m;
 }
 
