@@ -17,6 +17,7 @@ using namespace dgwarp;
 
 namespace {
 // The coarse size, so the tests take seconds; the paper's size is built by `dgwarp bench`.
+// Generated once per process: ctest runs the CasesWingBody tests in one (tests/CMakeLists.txt).
 const Mesh& coarse() {
     static const Mesh m = make_wing_body(wing_body_size(0));
     return m;
