@@ -8,40 +8,46 @@ namespace dgwarp {
 
 namespace detail {
 
+// Keeps the first exception thrown by the bodies of a parallel loop, to
+// rethrow it after the loop (exceptions must not leave an OpenMP region).
+class FirstError {
+public:
+    template <class F>
+    void run(F&& f) {
+        try {
+            f();
+        } catch (...) {
+            std::lock_guard lock(mutex_);
+            if (!error_) error_ = std::current_exception();
+        }
+    }
+    void rethrow() const {
+        if (error_) std::rethrow_exception(error_);
+    }
+
+private:
+    std::exception_ptr error_;
+    std::mutex mutex_;
+};
+
 // body(i) for i in [0, n) in one OpenMP region, iterations split statically;
 // the first exception is rethrown after the region.
 template <class Body>
 void parallel_region_for(std::int64_t n, Body&& body) {
-    std::exception_ptr error;
-    std::mutex error_mutex;
+    FirstError error;
 #pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < n; ++i) {
-        try {
-            body(i);
-        } catch (...) {
-            std::lock_guard lock(error_mutex);
-            if (!error) error = std::current_exception();
-        }
-    }
-    if (error) std::rethrow_exception(error);
+    for (std::int64_t i = 0; i < n; ++i) error.run([&] { body(i); });
+    error.rethrow();
 }
 
 // The same with blocks handed out to the threads as they finish (dynamic
 // schedule), for bodies whose cost varies along the range.
 template <class Body>
 void parallel_region_for_dynamic(std::int64_t n, Body&& body) {
-    std::exception_ptr error;
-    std::mutex error_mutex;
+    FirstError error;
 #pragma omp parallel for schedule(dynamic)
-    for (std::int64_t i = 0; i < n; ++i) {
-        try {
-            body(i);
-        } catch (...) {
-            std::lock_guard lock(error_mutex);
-            if (!error) error = std::current_exception();
-        }
-    }
-    if (error) std::rethrow_exception(error);
+    for (std::int64_t i = 0; i < n; ++i) error.run([&] { body(i); });
+    error.rethrow();
 }
 
 }  // namespace detail
