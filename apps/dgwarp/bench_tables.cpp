@@ -127,7 +127,7 @@ std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& r
              " | " + num(r.original.min) + " | " + num(r.paper ? r.paper->original_min : std::nullopt) + " | " +
              std::to_string(r.original.inverted) + " | | | | | |\n";
         for (const MethodResult& m : r.methods) {
-            const PaperFigures p = r.paper && m.label == method_name(m.method) ? r.paper->methods[static_cast<int>(m.method)] : PaperFigures{};
+            const PaperFigures p = r.paper && m.label == method_name(m.method) ? paper_figures(*r.paper, m.method) : PaperFigures{};
             s += "| " + m.label + " | " + (m.ran ? num(m.quality.mean) : "") + " | " +
                  paper_quality(p, true) + " | " + (m.ran ? num(m.quality.min) : "") + " | " + paper_quality(p, false) +
                  " | " + (m.ran ? std::to_string(m.quality.inverted) : "") + " | " +
@@ -154,7 +154,7 @@ nlohmann::json bench_json(const BenchInfo& info, const std::vector<BenchRow>& ro
                               {"paper_tables", r.paper ? nlohmann::json(r.paper->tables) : nlohmann::json(nullptr)},
                               {"methods", nlohmann::json::array()}};
         for (const MethodResult& m : r.methods) {
-            const PaperFigures p = r.paper && m.label == method_name(m.method) ? r.paper->methods[static_cast<int>(m.method)] : PaperFigures{};
+            const PaperFigures p = r.paper && m.label == method_name(m.method) ? paper_figures(*r.paper, m.method) : PaperFigures{};
             row["methods"].push_back(
                 {{"method", method_name(m.method)}, {"label", m.label}, {"status", m.status}, {"ran", m.ran},
                  {"quality", m.ran ? quality_json(m.quality) : nlohmann::json(nullptr)},
@@ -177,7 +177,7 @@ std::string bench_text(const BenchRow& r) {
                   "min", "paper", "inv", "prepare", "step", "paper s", "status");
     s += line;
     for (const MethodResult& m : r.methods) {
-        const PaperFigures p = r.paper && m.label == method_name(m.method) ? r.paper->methods[static_cast<int>(m.method)] : PaperFigures{};
+        const PaperFigures p = r.paper && m.label == method_name(m.method) ? paper_figures(*r.paper, m.method) : PaperFigures{};
         std::snprintf(line, sizeof line, "  %-17s %7s %7s  %7s %7s  %6s  %9s %9s  %9s  %s\n",
                       m.label.c_str(), m.ran ? num(m.quality.mean).c_str() : "",
                       paper_quality(p, true).c_str(), m.ran ? num(m.quality.min).c_str() : "",
@@ -187,6 +187,11 @@ std::string bench_text(const BenchRow& r) {
         s += line;
     }
     return s;
+}
+
+PaperFigures paper_figures(const PaperEntry& entry, Method method) {
+    const auto i = static_cast<std::size_t>(method);
+    return i < entry.methods.size() ? entry.methods[i] : PaperFigures{};
 }
 
 }  // namespace dgwarp::cli

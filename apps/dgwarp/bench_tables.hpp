@@ -27,6 +27,9 @@ struct PaperEntry {
     std::optional<double> original_mean, original_min;
 };
 
+/// The paper's figures of `method` in `entry` (unset for a method the paper did not run, e.g. dg-harmonic).
+PaperFigures paper_figures(const PaperEntry& entry, Method method);
+
 /// The paper's entry for (case, size, motion), or nullopt.
 std::optional<PaperEntry> paper_entry(const std::string& case_name, int size, const std::string& motion);
 

@@ -4,6 +4,8 @@
 // renamed, missing or retyped field.
 #include <gtest/gtest.h>
 
+#include "dgwarp/methods/method.hpp"
+
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -77,7 +79,7 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
     const nlohmann::json one = valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "out.su2") + " --json");
     const nlohmann::json all =
         valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "cmp.su2") + " --method all --json");
-    ASSERT_EQ(all.at("methods").size(), 4u);
+    ASSERT_EQ(all.at("methods").size(), std::size(dgwarp::all_methods));
     const nlohmann::json prepared = valid_report(c.dir, "prepare", inputs + " -o " + quoted(c.dir / "m.plan") + " --json");
     valid_report(c.dir, "deform", inputs + " --plan " + quoted(c.dir / "m.plan") + " -o " + quoted(c.dir / "p.su2") + " --json");
     // A time series, and a motion far larger than the mesh (a warning; cells invert: exit 3, report on stdout).

@@ -17,6 +17,7 @@ std::string_view method_name(Method m) {
         case Method::dgm: return "dgm";
         case Method::idw: return "idw";
         case Method::rbf: return "rbf";
+        case Method::dg_harmonic: return "dg-harmonic";
     }
     return "?";
 }
@@ -38,6 +39,7 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
             return plan;
         }
         case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf, progress);
+        case Method::dg_harmonic: return prepare_dg_harmonic(dim, points, boundary, options.dg_harmonic, progress);
     }
     return {};
 }
@@ -75,6 +77,12 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                                      r.rbf_boundary_error = rbf.boundary_error;
                                      r.conflicting_shared_vertices = rbf.conflicting_shared_centres;
                                      return r;
+                                 },
+                                 [&](const DgHarmonicPlan& p) {
+                                     StepReport r;
+                                     r.conflicting_shared_vertices =
+                                         deform_dg_harmonic(p, points, motion, out).conflicting_shared_vertices;
+                                     return done(r);
                                  }},
                       plan);
 }
@@ -83,7 +91,8 @@ Method plan_method(const Plan& plan) {
     return std::visit(overloaded{[](const DgIdwPlan&) { return Method::dg_idw; },
                                  [](const DgmPlan&) { return Method::dgm; },
                                  [](const IdwPlan&) { return Method::idw; },
-                                 [](const RbfPlan&) { return Method::rbf; }},
+                                 [](const RbfPlan&) { return Method::rbf; },
+                                 [](const DgHarmonicPlan&) { return Method::dg_harmonic; }},
                       plan);
 }
 
@@ -115,6 +124,17 @@ PlanSummary plan_summary(const Plan& plan) {
                           [&](const RbfPlan& p) {
                               s.phase_seconds = {{"matrix", p.stats.matrix_seconds},
                                                  {"factorise", p.stats.factor_seconds}};
+                          },
+                          [&](const DgHarmonicPlan& p) {
+                              s.graph_simplices = static_cast<std::int64_t>(p.simplices.size()) / (p.dim + 1);
+                              s.outside_hull = p.stats.outside_count;
+                              s.shared_vertices = p.stats.shared_vertex_count;
+                              s.coarse_points = p.stats.coarse_interior;
+                              if (p.stats.graph_seconds > 0 || p.stats.locate_seconds > 0)
+                                  s.phase_seconds = {{"coarse points", p.stats.select_seconds},
+                                                     {"graph", p.stats.graph_seconds},
+                                                     {"locate", p.stats.locate_seconds},
+                                                     {"factorise", p.stats.factor_seconds}};
                           }},
                plan);
     return s;

@@ -10,7 +10,8 @@
 // gets the fraction done of long calls.
 //
 // Methods (METHODS.md): DG-IDW (the paper's), DGM (Delaunay graph mapping),
-// IDW (global inverse distance weighting), RBF (radial basis functions).
+// IDW (global inverse distance weighting), RBF (radial basis functions), and
+// DG-harmonic (ours: the robust two-level method, docs/dg-harmonic.md).
 // Conventions as everywhere: points num_points × dim row-major, 0-based ids,
 // motions one NodeMotion per boundary node in BoundarySet order.
 #include <cstdint>
@@ -22,6 +23,7 @@
 #include <variant>
 #include <vector>
 
+#include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/idw.hpp"
@@ -30,12 +32,12 @@
 
 namespace dgwarp {
 
-enum class Method { dg_idw, dgm, idw, rbf };
+enum class Method { dg_idw, dgm, idw, rbf, dg_harmonic };
 
 /// All methods, in the order tools list them.
-inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm, Method::idw, Method::rbf};
+inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm, Method::idw, Method::rbf, Method::dg_harmonic};
 
-/// "dg-idw", "dgm", "idw", "rbf".
+/// "dg-idw", "dgm", "idw", "rbf", "dg-harmonic".
 std::string_view method_name(Method m);
 
 /// The method called `name` (as method_name prints it), or nullopt.
@@ -47,10 +49,11 @@ struct MethodOptions {
     DgmOptions dgm;
     IdwOptions idw;
     RbfOptions rbf;  // acts at prepare time (the plan keeps it)
+    DgHarmonicOptions dg_harmonic;  // acts at prepare time (the plan keeps it)
 };
 
 /// A prepared plan of any method.
-using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan>;
+using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan, DgHarmonicPlan>;
 
 /// What one step did, whatever the method (fields a method does not use keep their defaults).
 struct StepReport {
@@ -91,7 +94,8 @@ std::size_t plan_memory_bytes(const Plan& plan);
 struct PlanSummary {
     std::int64_t graph_simplices = 0;   // DG-IDW, DGM: simplices of the Delaunay graph
     std::int64_t outside_hull = 0;      // DG-IDW, DGM: volume nodes outside the graph's hull
-    std::int64_t shared_vertices = 0;   // DG-IDW, DGM: graph vertices standing for several boundary nodes
+    std::int64_t shared_vertices = 0;   // DG-IDW, DGM, DG-harmonic: graph vertices standing for several boundary nodes
+    std::int64_t coarse_points = 0;     // DG-harmonic: volume nodes on the coarse level
     /// Prepare phases in order, e.g. {"graph", 0.01}, {"locate", 0.02}; empty for a loaded plan.
     std::vector<std::pair<std::string, double>> phase_seconds;
 };

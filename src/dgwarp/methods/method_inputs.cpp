@@ -1,10 +1,12 @@
 #include "dgwarp/methods/method_inputs.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 
+#include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 
 namespace dgwarp {
@@ -31,4 +33,30 @@ std::vector<NodeId> split_volume_nodes(std::size_t num_points, const BoundarySet
     return volume;
 }
 
+void check_step_arrays(std::string_view method, std::int64_t num_points, int dim,
+                       std::span<const NodeId> boundary_nodes, std::span<const double> points,
+                       const BoundaryMotion& motion, std::span<const double> out) {
+    const std::string name(method);
+    const auto expected = static_cast<std::size_t>(num_points) * static_cast<std::size_t>(dim);
+    if (points.size() != expected)
+        throw MeshError(name + ": the plan is for " + std::to_string(num_points) + " points (" +
+                        std::to_string(expected) + " coordinates), got " + std::to_string(points.size()) +
+                        " coordinates");
+    if (out.size() != expected)
+        throw MeshError(name + ": the output array holds " + std::to_string(out.size()) + " values, expected " +
+                        std::to_string(expected) + " (" + std::to_string(num_points) + " points)");
+    if (motion.size() != boundary_nodes.size())
+        throw MeshError(name + ": the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
+                        std::to_string(boundary_nodes.size()) + " boundary nodes");
+    for (std::size_t b = 0; b < motion.size(); ++b) {
+        const NodeMotion& m = motion[b];
+        for (int d = 0; d < 3; ++d)
+            if (!std::isfinite(m.translation[d]) || !std::isfinite(m.rotation[d]) || !std::isfinite(m.center[d]))
+                throw MeshError(name + ": the motion of boundary node " + std::to_string(boundary_nodes[b]) +
+                                    " (boundary index " + std::to_string(b) + ") is not finite",
+                                {}, boundary_nodes[b]);
+    }
+}
+
 }  // namespace dgwarp
+

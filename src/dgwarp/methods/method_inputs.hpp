@@ -26,4 +26,12 @@ std::size_t check_points_and_boundary(std::string_view method, int dim, std::spa
 std::vector<NodeId> split_volume_nodes(std::size_t num_points, const BoundarySet& boundary,
                                        std::vector<std::int32_t>& node_simplex);
 
+/// Checks one step's arrays against a plan of `num_points` points of `dim`
+/// coordinates and `boundary_nodes`: points and out hold num_points × dim
+/// values, motion one entry per boundary node, every motion finite. Throws
+/// MeshError naming `method` (and the boundary node of a non-finite motion).
+void check_step_arrays(std::string_view method, std::int64_t num_points, int dim,
+                       std::span<const NodeId> boundary_nodes, std::span<const double> points,
+                       const BoundaryMotion& motion, std::span<const double> out);
+
 }  // namespace dgwarp

@@ -1,0 +1,165 @@
+#pragma once
+// DG-harmonic: the robust method (docs/dg-harmonic.md). Two levels:
+//
+//  * Coarse level, built once: the boundary nodes plus a few volume nodes
+//    chosen with a spacing that grows away from the walls (coarse_points.hpp),
+//    and the Delaunay triangulation of all of them (the "coarse graph"). On
+//    it, two P1 finite-element Laplacians with a conductivity per simplex,
+//    factorised once: one for the translation (conductivity size^-3: stiff
+//    where cells are small, so the strain goes where cells are large), one
+//    for the rotation (conductivity 1, times a rigid-zone factor near the
+//    moving boundary: the rotation angle's drop times the lever arm is the
+//    shear, and it is spread evenly away from the body).
+//  * Every step, the motion (METHODS.md's t, w and centre c) is carried from
+//    the boundary vertices to the coarse interior vertices by the two
+//    harmonic solves (Dirichlet data on the boundary; a forward and a
+//    backward substitution per system for all its components at once), then
+//    to every other volume node by its barycentric coordinates in the coarse
+//    graph, and the node moves to c + R(w)(x0 - c) + t like DG-IDW's nodes.
+//
+// Why it does not fold cells where the one-pass methods do: the Laplacians'
+// off-diagonal weights are kept non-negative, so every interpolated component
+// is a convex combination of the boundary values (discrete maximum principle:
+// no overshoot, no motion larger than the boundary's); the coarse points put
+// interior vertices between a moving and a fixed wall, so the motion decays
+// across the gap instead of inside one sliver; barycentric interpolation is
+// continuous across the coarse graph's faces (DG-IDW's paper weights jump
+// there). The centre is interpolated as (|w| c) / |w|, so a translating
+// body's arbitrary centre does not pull on a rotating one's.
+//
+// Each step is computed from the original points (no drift: a motion that
+// returns to zero returns every node to its original position, to round-off).
+// Results do not depend on the thread count.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dgwarp/core/progress.hpp"
+#include "dgwarp/methods/mesh_fingerprint.hpp"
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp {
+
+struct DgHarmonicOptions {
+    /// Coarse spacing next to a wall, in multiples of the local spacing of
+    /// the boundary nodes (distance from the nearest boundary node to its
+    /// nearest neighbour on the boundary). Prepare time. The defaults were
+    /// chosen by measurement (docs/dg-harmonic.md).
+    double wall_spacing = 6.0;
+    /// Coarse spacing away from the walls, as a fraction of the distance to
+    /// the nearest boundary node: spacing = max(wall_spacing h_b, growth d).
+    /// Prepare time.
+    double growth = 1.0;
+    /// Conductivity of a coarse simplex in the two Laplacians:
+    /// size^-translation_exponent for the translation, size^-rotation_exponent
+    /// for the rotation (times the rigid-zone factor); size is the simplex's
+    /// mean edge length. Prepare time.
+    double translation_exponent = 3.0;
+    double rotation_exponent = 0.0;
+    /// Rigid zone of the rotation: a simplex closer to the moving boundary
+    /// than rho = min(rigid_zone D, rigid_gap d_s) is stiffened by
+    /// 1 + (rho / d_m)^2 (D: the moving boundary's bounding-box diagonal; d_m,
+    /// d_s: the mean distances of its corners to the nearest moving and
+    /// static boundary nodes, d_m at least half its size). Prepare time.
+    double rigid_zone = 0.25;
+    double rigid_gap = 0.5;
+};
+
+/// What prepare_dg_harmonic found, and how long its stages took.
+struct DgHarmonicPrepareStats {
+    std::int64_t coarse_interior = 0;      // volume nodes on the coarse level (unknowns of the solve)
+    std::int64_t graph_vertices = 0;       // vertices of the coarse graph (distinct boundary points + interior)
+    std::int64_t outside_count = 0;        // volume nodes outside the coarse graph's hull
+    std::int64_t shared_vertex_count = 0;  // coarse graph vertices standing for several boundary nodes
+    std::int64_t factor_nonzeros = 0;      // nonzeros of the Cholesky factor L
+    double select_seconds = 0;             // wall distances and coarse point selection
+    double graph_seconds = 0;              // Delaunay triangulation of the coarse points
+    double locate_seconds = 0;             // location of the volume nodes
+    double factor_seconds = 0;             // Laplacian assembly, ordering and factorisation
+};
+
+/// One factorised graph Laplacian on the coarse graph. Unknown u (one per
+/// interior vertex, in the order vertex num_boundary_vertices + i) satisfies
+/// A u = B g, with g the boundary vertices' values. A = P^T L D L^T P:
+/// perm[i] is the position of unknown i in the factor's order; L unit lower
+/// triangular in compressed columns (l_start, l_row, l_value; diagonal not
+/// stored), d its diagonal. B in compressed rows per unknown: coupling_start,
+/// coupling_vertex (a boundary vertex), coupling_weight.
+struct HarmonicSystem {
+    std::vector<std::int32_t> perm;
+    std::vector<std::int64_t> l_start{0};
+    std::vector<std::int32_t> l_row;
+    std::vector<double> l_value;
+    std::vector<double> d;
+    std::vector<std::int64_t> coupling_start{0};
+    std::vector<std::int32_t> coupling_vertex;
+    std::vector<double> coupling_weight;
+
+    std::int64_t num_unknowns() const { return static_cast<std::int64_t>(perm.size()); }
+};
+
+/// Everything deform_dg_harmonic needs, as plain arrays.
+struct DgHarmonicPlan {
+    int dim = 3;
+    MeshFingerprint mesh;
+    DgHarmonicOptions options;                  // as given to prepare (they shape every array below)
+    std::vector<NodeId> boundary_nodes;         // BoundarySet::nodes (sorted)
+    std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
+    /// Per coarse graph vertex: b >= 0 when it is a boundary point that moves
+    /// with the motion of boundary index b; -1 - b when it is a static
+    /// boundary point; for interior (unknown) vertices, ignored (see
+    /// num_boundary_vertices: boundary vertices come first).
+    std::vector<std::int32_t> vertex_motion;
+    std::int32_t num_boundary_vertices = 0;
+    /// Coarse graph vertices standing for several boundary nodes, as in
+    /// DgIdwPlan (rule of graph_vertex_motion.hpp).
+    std::vector<std::int32_t> shared_offsets{0};
+    std::vector<std::int32_t> shared_members;
+    /// num_simplices × (dim + 1) coarse graph vertex ids.
+    std::vector<std::int32_t> simplices;
+    /// Per mesh node: the coarse simplex of a volume node, or -1 - b for the
+    /// boundary node of boundary index b.
+    std::vector<std::int32_t> node_simplex;
+    /// num_volume_nodes × (dim + 1), ascending node-id order of the volume
+    /// nodes: barycentric coordinates in the node's coarse simplex, clamped
+    /// at 0 and scaled to sum 1 (a node outside the hull takes the nearest
+    /// point of its simplex's motion, no extrapolation).
+    std::vector<double> node_barycentric;
+    /// The two harmonic systems: translation components, and rotation
+    /// components (w, |w|, |w| c). See HarmonicSystem.
+    HarmonicSystem translation;
+    HarmonicSystem rotation;
+    DgHarmonicPrepareStats stats;
+
+    std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
+    std::int64_t num_volume_nodes() const { return num_points() - static_cast<std::int64_t>(boundary_nodes.size()); }
+    std::int64_t num_vertices() const { return static_cast<std::int64_t>(vertex_motion.size()); }
+    std::int64_t num_unknowns() const { return translation.num_unknowns(); }
+};
+
+/// Builds the plan for `points` (num_points × dim, the original coordinates)
+/// and `boundary`. Throws MeshError for an inconsistent boundary set or a
+/// degenerate boundary (as DG-IDW), Error for bad options.
+/// `progress` gets the fraction done.
+DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, const BoundarySet& boundary,
+                                   const DgHarmonicOptions& options = {}, const ProgressFn& progress = {});
+
+struct DgHarmonicStepReport {
+    /// Shared graph vertices whose boundary nodes have different motions this step.
+    std::int64_t conflicting_shared_vertices = 0;
+};
+
+/// One step: writes every node's new position to `out` (num_points × dim; may
+/// be `points`). Boundary nodes move exactly as apply_motion says (static
+/// ones are copied). Throws MeshError when an array size does not match the
+/// plan or a motion is not finite.
+DgHarmonicStepReport deform_dg_harmonic(const DgHarmonicPlan& plan, std::span<const double> points,
+                                        const BoundaryMotion& motion, std::span<double> out);
+
+/// Bytes held by the plan's arrays.
+std::size_t plan_bytes(const DgHarmonicPlan& plan);
+
+/// Throws Error when an option is out of range (naming it).
+void check_dg_harmonic_options(const DgHarmonicOptions& options);
+
+}  // namespace dgwarp

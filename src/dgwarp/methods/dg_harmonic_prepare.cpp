@@ -1,0 +1,330 @@
+// prepare_dg_harmonic: coarse points, coarse graph, location, factorised Laplacian.
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/graph/nearest_node.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
+#include "dgwarp/methods/coarse_points.hpp"
+#include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/dgm_detail.hpp"
+#include "dgwarp/methods/graph_vertex_motion.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+// The edges of the coarse graph that touch an unknown, as (u, v) with u < v.
+std::vector<std::pair<std::int32_t, std::int32_t>> unknown_edges(int dim, std::span<const std::int32_t> simplices,
+                                                                 std::int32_t first_unknown) {
+    const int corners = dim + 1;
+    std::vector<std::pair<std::int32_t, std::int32_t>> e;
+    e.reserve(simplices.size() * static_cast<std::size_t>(dim) / 2);
+    for (std::size_t s = 0; s < simplices.size(); s += corners)
+        for (int i = 0; i < corners; ++i)
+            for (int j = i + 1; j < corners; ++j) {
+                std::int32_t u = simplices[s + i], v = simplices[s + j];
+                if (u > v) std::swap(u, v);
+                if (v >= first_unknown) e.emplace_back(u, v);
+            }
+    std::sort(e.begin(), e.end());
+    e.erase(std::unique(e.begin(), e.end()), e.end());
+    return e;
+}
+
+// Assembles the Laplacian of the coarse graph with the given weight per edge
+// (edges as unknown_edges gives them), factorises its unknown block.
+HarmonicSystem factorise(std::span<const std::pair<std::int32_t, std::int32_t>> edges, std::span<const double> weight,
+                         std::int32_t first_unknown, std::int32_t num_unknowns) {
+    const std::int32_t nb = first_unknown, n = num_unknowns;
+    HarmonicSystem sys;
+    std::vector<Eigen::Triplet<double, int>> a;
+    a.reserve(edges.size() + static_cast<std::size_t>(n));
+    std::vector<double> diagonal(n, 0.0);
+    std::vector<std::vector<std::pair<std::int32_t, double>>> coupling(n);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const auto [u, v] = edges[k];
+        const double w = weight[k];
+        diagonal[v - nb] += w;
+        if (u >= nb) {
+            diagonal[u - nb] += w;
+            a.emplace_back(v - nb, u - nb, -w);  // lower triangle only
+        } else {
+            coupling[v - nb].emplace_back(u, w);
+        }
+    }
+    for (std::int32_t i = 0; i < n; ++i) a.emplace_back(i, i, diagonal[i]);
+
+    Eigen::SparseMatrix<double> m(n, n);
+    m.setFromTriplets(a.begin(), a.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+    ldlt.compute(m);
+    if (ldlt.info() != Eigen::Success)
+        throw Error("DG-harmonic: the coarse Laplacian could not be factorised (" + std::to_string(n) + " unknowns)");
+
+    const auto& p = ldlt.permutationP().indices();
+    sys.perm.assign(p.data(), p.data() + p.size());
+    const Eigen::SparseMatrix<double>& l = ldlt.matrixL().nestedExpression();
+    sys.l_start.assign(l.outerIndexPtr(), l.outerIndexPtr() + n + 1);
+    sys.l_row.assign(l.innerIndexPtr(), l.innerIndexPtr() + l.nonZeros());
+    sys.l_value.assign(l.valuePtr(), l.valuePtr() + l.nonZeros());
+    const auto& dv = ldlt.vectorD();
+    sys.d.assign(dv.data(), dv.data() + dv.size());
+    for (const auto& row : coupling) {
+        for (const auto& [v, w] : row) {
+            sys.coupling_vertex.push_back(v);
+            sys.coupling_weight.push_back(w);
+        }
+        sys.coupling_start.push_back(static_cast<std::int64_t>(sys.coupling_vertex.size()));
+    }
+    return sys;
+}
+
+// Per coarse graph vertex, its distances to the nearest moving and the nearest
+// static boundary node (0 for a boundary vertex of that kind).
+struct WallDistances {
+    std::vector<double> moving, fixed;
+};
+
+WallDistances wall_distances(int dim, std::span<const double> points, const BoundarySet& boundary,
+                             std::span<const NodeId> vertex_node) {
+    std::vector<NodeId> moving_nodes, static_nodes;
+    for (std::size_t b = 0; b < boundary.nodes.size(); ++b)
+        (boundary.moving[b] ? moving_nodes : static_nodes).push_back(boundary.nodes[b]);
+    const NearestNode moving(dim, points, moving_nodes), fixed(dim, points, static_nodes);
+    WallDistances w;
+    w.moving.resize(vertex_node.size());
+    w.fixed.resize(vertex_node.size());
+    parallel_for(static_cast<std::int64_t>(vertex_node.size()), [&](std::int64_t v) {
+        const double* x = points.data() + static_cast<std::size_t>(vertex_node[v]) * dim;
+        w.moving[v] = moving.nearest(x).distance;
+        w.fixed[v] = fixed.nearest(x).distance;
+    });
+    return w;
+}
+
+// Rigid-zone factor of the rotation's conductivity at a point with distances
+// dm, ds to the nearest moving and static boundary nodes.
+double rigid_factor(const DgHarmonicOptions& o, double dm, double ds, double moving_diagonal) {
+    const double rho = std::min(o.rigid_zone * moving_diagonal, o.rigid_gap * ds);
+    if (!(rho > 0) || !std::isfinite(rho)) return 1.0;
+    return 1.0 + std::min((rho / dm) * (rho / dm), 1e6);
+}
+
+// The weights of the two systems per edge: the P1 finite-element stiffness
+// of the coarse graph (-K_ij summed over the simplices around edge ij), with
+// conductivity size^-exponent per simplex (size: its mean edge length) and,
+// for the rotation, the rigid-zone factor at its centroid; negative sums
+// (possible on 3D slivers) are set to 0, so that the matrix keeps the
+// discrete maximum principle.
+void edge_weights(const DgHarmonicPlan& plan, std::span<const std::pair<std::int32_t, std::int32_t>> edges,
+                  std::span<const double> vertex_xyz, const WallDistances& wall, double moving_diagonal,
+                  std::vector<double>& translation, std::vector<double>& rotation) {
+    const int dim = plan.dim, corners = dim + 1;
+    const DgHarmonicOptions& o = plan.options;
+    const std::int32_t nb = plan.num_boundary_vertices;
+    translation.assign(edges.size(), 0.0);
+    rotation.assign(edges.size(), 0.0);
+    for (std::size_t s = 0; s < plan.simplices.size(); s += corners) {
+        const std::int32_t* c = plan.simplices.data() + s;
+        bool has_unknown = false;
+        for (int k = 0; k < corners; ++k) has_unknown |= c[k] >= nb;
+        if (!has_unknown) continue;
+        const double* p[4];
+        for (int k = 0; k < corners; ++k) p[k] = vertex_xyz.data() + static_cast<std::size_t>(c[k]) * dim;
+        // Gradients of the barycentric functions: G = J^-1, J = [p1 - p0, ...].
+        double j[3][3] = {}, g[4][3] = {};
+        for (int k = 1; k < corners; ++k)
+            for (int d = 0; d < dim; ++d) j[d][k - 1] = p[k][d] - p[0][d];
+        double det;
+        if (dim == 2) {
+            det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            if (det == 0) continue;
+            // rows of J^-1 are the gradients of phi_1, phi_2
+            g[1][0] = j[1][1] / det, g[1][1] = -j[0][1] / det;
+            g[2][0] = -j[1][0] / det, g[2][1] = j[0][0] / det;
+        } else {
+            const double c00 = j[1][1] * j[2][2] - j[1][2] * j[2][1], c01 = j[1][2] * j[2][0] - j[1][0] * j[2][2],
+                         c02 = j[1][0] * j[2][1] - j[1][1] * j[2][0];
+            det = j[0][0] * c00 + j[0][1] * c01 + j[0][2] * c02;
+            if (det == 0) continue;
+            // (J^-1)_{r,d} = cofactor(d, r) / det
+            const double inv[3][3] = {
+                {c00 / det, (j[0][2] * j[2][1] - j[0][1] * j[2][2]) / det, (j[0][1] * j[1][2] - j[0][2] * j[1][1]) / det},
+                {c01 / det, (j[0][0] * j[2][2] - j[0][2] * j[2][0]) / det, (j[0][2] * j[1][0] - j[0][0] * j[1][2]) / det},
+                {c02 / det, (j[0][1] * j[2][0] - j[0][0] * j[2][1]) / det, (j[0][0] * j[1][1] - j[0][1] * j[1][0]) / det}};
+            for (int k = 1; k < 4; ++k)
+                for (int d = 0; d < 3; ++d) g[k][d] = inv[k - 1][d];
+        }
+        for (int d = 0; d < dim; ++d) {
+            g[0][d] = 0;
+            for (int k = 1; k < corners; ++k) g[0][d] -= g[k][d];
+        }
+        const double volume = std::abs(det) / (dim == 2 ? 2.0 : 6.0);
+        double size = 0, dm = 0, ds = 0;
+        int pairs = 0;
+        for (int a = 0; a < corners; ++a) {
+            dm += wall.moving[c[a]] / corners;
+            ds += wall.fixed[c[a]] / corners;
+            for (int b = a + 1; b < corners; ++b, ++pairs) {
+                double l2 = 0;
+                for (int d = 0; d < dim; ++d) l2 += (p[a][d] - p[b][d]) * (p[a][d] - p[b][d]);
+                size += std::sqrt(l2);
+            }
+        }
+        size /= pairs;
+        dm = std::max(dm, 0.5 * size);
+        const double kt = o.translation_exponent == 0 ? 1.0 : std::pow(size, -o.translation_exponent);
+        const double kr = (o.rotation_exponent == 0 ? 1.0 : std::pow(size, -o.rotation_exponent)) *
+                          rigid_factor(o, dm, ds, moving_diagonal);
+        for (int a = 0; a < corners; ++a)
+            for (int b = a + 1; b < corners; ++b) {
+                std::int32_t u = c[a], v = c[b];
+                if (u > v) std::swap(u, v);
+                if (v < nb) continue;
+                double kab = 0;
+                for (int d = 0; d < dim; ++d) kab += g[a][d] * g[b][d];
+                const double w = -volume * kab;
+                const auto e = std::lower_bound(edges.begin(), edges.end(), std::pair{u, v}) - edges.begin();
+                translation[e] += kt * w;
+                rotation[e] += kr * w;
+            }
+    }
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+        translation[e] = std::max(translation[e], 0.0);
+        rotation[e] = std::max(rotation[e], 0.0);
+    }
+}
+
+// Barycentric coordinates clamped at 0 and scaled to sum 1 (a node outside
+// the hull takes the motion of the nearest point of its simplex).
+void clamp_barycentric(int dim, std::vector<double>& e) {
+    const int corners = dim + 1;
+    for (std::size_t i = 0; i < e.size(); i += corners) {
+        double sum = 0;
+        for (int k = 0; k < corners; ++k) {
+            e[i + k] = std::max(e[i + k], 0.0);
+            sum += e[i + k];
+        }
+        for (int k = 0; k < corners; ++k) e[i + k] /= sum;
+    }
+}
+
+}  // namespace
+
+void check_dg_harmonic_options(const DgHarmonicOptions& options) {
+    if (!std::isfinite(options.wall_spacing) || options.wall_spacing <= 0)
+        throw Error("DG-harmonic: wall_spacing must be finite and positive, got " + std::to_string(options.wall_spacing));
+    if (!std::isfinite(options.growth) || options.growth <= 0)
+        throw Error("DG-harmonic: growth must be finite and positive, got " + std::to_string(options.growth));
+    for (const auto& [name, value] : {std::pair{"translation_exponent", options.translation_exponent},
+                                      std::pair{"rotation_exponent", options.rotation_exponent}})
+        if (!std::isfinite(value) || value < 0 || value > 4)
+            throw Error(std::string("DG-harmonic: ") + name + " must be in [0, 4], got " + std::to_string(value));
+    for (const auto& [name, value] : {std::pair{"rigid_zone", options.rigid_zone}, std::pair{"rigid_gap", options.rigid_gap}})
+        if (!std::isfinite(value) || value < 0)
+            throw Error(std::string("DG-harmonic: ") + name + " must be finite and >= 0, got " + std::to_string(value));
+}
+
+DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, const BoundarySet& boundary,
+                                   const DgHarmonicOptions& options, const ProgressFn& progress) {
+    const std::size_t num_points = check_points_and_boundary("DG-harmonic", dim, points, boundary);
+    check_dg_harmonic_options(options);
+
+    DgHarmonicPlan plan;
+    plan.dim = dim;
+    plan.options = options;
+    plan.mesh = mesh_fingerprint(dim, points, boundary);
+    plan.boundary_nodes = boundary.nodes;
+    plan.boundary_moving = boundary.moving;
+    const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
+
+    auto t0 = Clock::now();
+    const std::vector<NodeId> coarse =
+        select_coarse_points(dim, points, boundary.nodes, volume, {options.wall_spacing, options.growth});
+    plan.stats.select_seconds = seconds_since(t0);
+    if (progress) progress(0.1);
+
+    // Graph points: the boundary nodes (boundary indices 0..nb-1), then the
+    // coarse volume nodes. Graph vertices are numbered by their smallest
+    // index, so the boundary vertices come first.
+    std::vector<NodeId> graph_nodes(boundary.nodes);
+    graph_nodes.insert(graph_nodes.end(), coarse.begin(), coarse.end());
+    LocatedGraph lg = build_located_graph(dim, points, graph_nodes, volume, {}, progress_part(progress, 0.1, 0.8));
+    plan.stats.graph_seconds = lg.timings.triangulate_seconds;
+    plan.stats.locate_seconds = lg.timings.locate_seconds;
+    plan.stats.outside_count = lg.location.outside_count;
+
+    t0 = Clock::now();
+    const DelaunayGraph& g = lg.graph;
+    std::vector<std::uint8_t> moving(boundary.moving);
+    moving.resize(graph_nodes.size(), 0);
+    GraphVertexMotion vm = graph_vertex_motion(g, moving);
+    const auto nb_index = static_cast<std::int32_t>(boundary.nodes.size());
+    plan.num_boundary_vertices = 0;
+    while (static_cast<std::size_t>(plan.num_boundary_vertices) < g.num_vertices() &&
+           g.vertex_nodes[g.vertex_offsets[plan.num_boundary_vertices]] < nb_index)
+        ++plan.num_boundary_vertices;
+    plan.vertex_motion = std::move(vm.vertex_motion);
+    plan.shared_offsets = std::move(vm.shared_offsets);
+    plan.shared_members = std::move(vm.shared_members);
+    plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
+    plan.stats.graph_vertices = static_cast<std::int64_t>(g.num_vertices());
+    plan.stats.coarse_interior = plan.num_vertices() - plan.num_boundary_vertices;
+
+    std::vector<NodeId> vertex_node(g.num_vertices());
+    for (std::size_t v = 0; v < vertex_node.size(); ++v) vertex_node[v] = graph_nodes[g.vertex_nodes[g.vertex_offsets[v]]];
+    plan.node_barycentric =
+        detail::barycentric_coordinates(dim, points, vertex_node, g.simplices, volume, lg.location.simplex);
+    clamp_barycentric(dim, plan.node_barycentric);
+    for (std::size_t i = 0; i < volume.size(); ++i) plan.node_simplex[volume[i]] = lg.location.simplex[i];
+    plan.simplices = std::move(lg.graph.simplices);
+    plan.stats.locate_seconds += seconds_since(t0);
+    if (progress) progress(0.85);
+
+    t0 = Clock::now();
+    std::vector<double> vertex_xyz(vertex_node.size() * static_cast<std::size_t>(dim));
+    for (std::size_t v = 0; v < vertex_node.size(); ++v)
+        for (int d = 0; d < dim; ++d) vertex_xyz[v * dim + d] = points[static_cast<std::size_t>(vertex_node[v]) * dim + d];
+    if (plan.num_vertices() > plan.num_boundary_vertices) {
+        const auto edges = unknown_edges(dim, plan.simplices, plan.num_boundary_vertices);
+        const WallDistances wall = wall_distances(dim, points, boundary, vertex_node);
+        std::vector<double> wt, wr;
+        edge_weights(plan, edges, vertex_xyz, wall, boundary_diagonal(dim, points, boundary, true), wt, wr);
+        const auto n = static_cast<std::int32_t>(plan.num_vertices() - plan.num_boundary_vertices);
+        plan.translation = factorise(edges, wt, plan.num_boundary_vertices, n);
+        plan.rotation = factorise(edges, wr, plan.num_boundary_vertices, n);
+        plan.stats.factor_nonzeros = static_cast<std::int64_t>(plan.translation.l_row.size());
+    }
+    plan.stats.factor_seconds = seconds_since(t0);
+    if (progress) progress(1.0);
+    return plan;
+}
+
+namespace {
+template <class T>
+std::size_t bytes_of(const std::vector<T>& v) {
+    return v.size() * sizeof(T);
+}
+std::size_t system_bytes(const HarmonicSystem& s) {
+    return bytes_of(s.perm) + bytes_of(s.l_start) + bytes_of(s.l_row) + bytes_of(s.l_value) + bytes_of(s.d) +
+           bytes_of(s.coupling_start) + bytes_of(s.coupling_vertex) + bytes_of(s.coupling_weight);
+}
+}  // namespace
+
+std::size_t plan_bytes(const DgHarmonicPlan& p) {
+    return sizeof(DgHarmonicPlan) + bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) +
+           bytes_of(p.vertex_motion) + bytes_of(p.shared_offsets) + bytes_of(p.shared_members) +
+           bytes_of(p.simplices) + bytes_of(p.node_simplex) + bytes_of(p.node_barycentric) + system_bytes(p.translation) +
+           system_bytes(p.rotation);
+}
+
+}  // namespace dgwarp
