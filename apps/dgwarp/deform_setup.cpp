@@ -86,6 +86,15 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
                     "RBF: greedy data reduction to this boundary error (mesh units; 0 = all centres)")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--harmonic-wall-spacing", a.harmonic_wall_spacing,
+                    "DG-harmonic: coarse-level spacing next to a wall, in boundary-node spacings (smaller: a finer "
+                    "coarse level, slower steps; docs/dg-harmonic.md)")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--harmonic-growth", a.harmonic_growth,
+                    "DG-harmonic: coarse-level spacing away from the walls, as a fraction of the wall distance")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
 }
 
 std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
@@ -106,6 +115,8 @@ MethodOptions method_options(const SetupArgs& args) {
     o.idw.exponent_static = args.idw_exponent_static;
     o.rbf.support_radius = args.rbf_radius;
     o.rbf.greedy_tolerance = args.rbf_greedy;
+    o.dg_harmonic.wall_spacing = args.harmonic_wall_spacing;
+    o.dg_harmonic.growth = args.harmonic_growth;
     return o;
 }
 
@@ -230,7 +241,9 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
               {"idw_exponent_moving", o.idw.exponent_moving},
               {"idw_exponent_static", o.idw.exponent_static},
               {"rbf_radius", o.rbf.support_radius},
-              {"rbf_greedy_tolerance", o.rbf.greedy_tolerance}}},
+              {"rbf_greedy_tolerance", o.rbf.greedy_tolerance},
+              {"harmonic_wall_spacing", o.dg_harmonic.wall_spacing},
+              {"harmonic_growth", o.dg_harmonic.growth}}},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
             {"original_quality", quality_json(in.original_quality)},
             {"warnings", in.boundary.warnings}};
@@ -247,6 +260,7 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
             {"graph_simplices", s.graph_simplices},
             {"outside_hull", s.outside_hull},
             {"shared_graph_vertices", s.shared_vertices},
+            {"coarse_points", s.coarse_points},
             {"bytes", plan_memory_bytes(p.plan)},
             {"seconds", p.prepare_seconds},
             {"phase_seconds", phases}};

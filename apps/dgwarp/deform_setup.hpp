@@ -31,6 +31,8 @@ struct SetupArgs {
     double idw_exponent_static = 2.0;
     double rbf_radius = 0;   // 0 = global support
     double rbf_greedy = 0;   // 0 = all boundary nodes are centres
+    double harmonic_wall_spacing = DgHarmonicOptions{}.wall_spacing;
+    double harmonic_growth = DgHarmonicOptions{}.growth;
 };
 
 /// Adds the mesh, --motion, --method, --zone, --threads and method options to `cmd`.
