@@ -78,22 +78,27 @@ struct DgHarmonicPrepareStats {
     double factor_seconds = 0;             // Laplacian assembly, ordering and factorisation
 };
 
-/// One factorised graph Laplacian on the coarse graph. Unknown u (one per
-/// interior vertex, in the order vertex num_boundary_vertices + i) satisfies
-/// A u = B g, with g the boundary vertices' values. A = P^T L D L^T P:
-/// perm[i] is the position of unknown i in the factor's order; L unit lower
-/// triangular in compressed columns (l_start, l_row, l_value; diagonal not
-/// stored), d its diagonal. B in compressed rows per unknown: coupling_start,
-/// coupling_vertex (a boundary vertex), coupling_weight.
-struct HarmonicSystem {
+/// The two factorised Laplacians of the coarse graph (translation and
+/// rotation). They have the same sparsity, so they share the ordering and the
+/// factor's structure. Unknown u (one per interior vertex, in the order vertex
+/// num_boundary_vertices + i) satisfies A u = B g, with g the boundary
+/// vertices' values. A = P^T L D L^T P: perm[i] is the position of unknown i
+/// in the factor's order; L is unit lower triangular in compressed columns
+/// (l_start, l_row, and per system l_value; the diagonal is not stored), d
+/// its diagonal. B in compressed rows per unknown: coupling_start,
+/// coupling_vertex (a boundary vertex), and per system coupling_weight.
+struct HarmonicFactors {
     std::vector<std::int32_t> perm;
     std::vector<std::int64_t> l_start{0};
     std::vector<std::int32_t> l_row;
-    std::vector<double> l_value;
-    std::vector<double> d;
     std::vector<std::int64_t> coupling_start{0};
     std::vector<std::int32_t> coupling_vertex;
-    std::vector<double> coupling_weight;
+    struct System {
+        std::vector<double> l_value;
+        std::vector<double> d;
+        std::vector<double> coupling_weight;
+    };
+    System translation, rotation;
 
     std::int64_t num_unknowns() const { return static_cast<std::int64_t>(perm.size()); }
 };
@@ -126,15 +131,14 @@ struct DgHarmonicPlan {
     /// point of its simplex's motion, no extrapolation).
     std::vector<double> node_barycentric;
     /// The two harmonic systems: translation components, and rotation
-    /// components (w, |w|, |w| c). See HarmonicSystem.
-    HarmonicSystem translation;
-    HarmonicSystem rotation;
+    /// components (w, |w|, |w| c).
+    HarmonicFactors solve;
     DgHarmonicPrepareStats stats;
 
     std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
     std::int64_t num_volume_nodes() const { return num_points() - static_cast<std::int64_t>(boundary_nodes.size()); }
     std::int64_t num_vertices() const { return static_cast<std::int64_t>(vertex_motion.size()); }
-    std::int64_t num_unknowns() const { return translation.num_unknowns(); }
+    std::int64_t num_unknowns() const { return solve.num_unknowns(); }
 };
 
 /// Builds the plan for `points` (num_points × dim, the original coordinates)

@@ -54,25 +54,27 @@ Active boundary_values(const DgHarmonicPlan& plan, const BoundaryMotion& motion,
     return active;
 }
 
-// Solves `sys` for the interior vertices' components [Offset, Offset + C) of
-// `values` (num_vertices × K; the boundary vertices' rows are the data).
+// Solves one system of `f` for the interior vertices' components
+// [Offset, Offset + C) of `values` (num_vertices × K; the boundary vertices'
+// rows are the data).
 template <int K, int Offset, int C>
-void solve_interior(const HarmonicSystem& sys, std::int32_t first_unknown, double* values) {
-    const std::int64_t n = sys.num_unknowns();
+void solve_interior(const HarmonicFactors& f, const HarmonicFactors::System& sys, std::int32_t first_unknown,
+                    double* values) {
+    const std::int64_t n = f.num_unknowns();
     if (n == 0) return;
     std::vector<double> y(static_cast<std::size_t>(n) * C, 0.0);
     // Right-hand side B g, in the factor's order.
     for (std::int64_t i = 0; i < n; ++i) {
-        double* r = y.data() + static_cast<std::size_t>(sys.perm[i]) * C;
-        for (std::int64_t p = sys.coupling_start[i]; p < sys.coupling_start[i + 1]; ++p) {
+        double* r = y.data() + static_cast<std::size_t>(f.perm[i]) * C;
+        for (std::int64_t p = f.coupling_start[i]; p < f.coupling_start[i + 1]; ++p) {
             const double w = sys.coupling_weight[p];
-            const double* g = values + static_cast<std::size_t>(sys.coupling_vertex[p]) * K + Offset;
+            const double* g = values + static_cast<std::size_t>(f.coupling_vertex[p]) * K + Offset;
             for (int k = 0; k < C; ++k) r[k] += w * g[k];
         }
     }
     // L z = y, z /= d, L^T x = z: all components at once, one pass over L each way.
-    const std::int64_t* start = sys.l_start.data();
-    const std::int32_t* row = sys.l_row.data();
+    const std::int64_t* start = f.l_start.data();
+    const std::int32_t* row = f.l_row.data();
     const double* lv = sys.l_value.data();
     for (std::int64_t j = 0; j < n; ++j) {
         const double* yj = y.data() + j * C;
@@ -98,13 +100,14 @@ void solve_interior(const HarmonicSystem& sys, std::int32_t first_unknown, doubl
         for (int k = 0; k < C; ++k) yj[k] = acc[k];
     }
     for (std::int64_t i = 0; i < n; ++i)
-        std::copy_n(y.data() + static_cast<std::size_t>(sys.perm[i]) * C, C,
+        std::copy_n(y.data() + static_cast<std::size_t>(f.perm[i]) * C, C,
                     values + static_cast<std::size_t>(first_unknown + i) * K + Offset);
 }
 
 // Moves nodes [begin, end): boundary nodes by their own motion, volume nodes
-// by the values interpolated in their coarse simplex.
-template <int Dim>
+// by the values interpolated in their coarse simplex. Rotates: whether any
+// boundary node rotates (else only the translation is interpolated).
+template <int Dim, bool Rotates>
 void deform_range(const DgHarmonicPlan& plan, const double* x0, const NodeMotion* motion, const double* values,
                   double* out, std::int64_t begin, std::int64_t end) {
     using L = Layout<Dim>;
@@ -125,6 +128,15 @@ void deform_range(const DgHarmonicPlan& plan, const double* x0, const NodeMotion
         const double* e = plan.node_barycentric.data() + vol * Corners;
         ++vol;
         const std::int32_t* c = plan.simplices.data() + static_cast<std::int64_t>(s) * Corners;
+        if constexpr (!Rotates) {
+            double t[Dim] = {};
+            for (int k = 0; k < Corners; ++k) {
+                const double* vk = values + static_cast<std::size_t>(c[k]) * K + L::t;
+                for (int d = 0; d < Dim; ++d) t[d] += e[k] * vk[d];
+            }
+            for (int d = 0; d < Dim; ++d) y[d] = x[d] + t[d];
+            continue;
+        }
         double v[K] = {};
         for (int k = 0; k < Corners; ++k) {
             const double* vk = values + static_cast<std::size_t>(c[k]) * K;
@@ -157,10 +169,13 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
     using L = Layout<Dim>;
     const Active active = boundary_values<Dim>(plan, motion, values.data());
     // A system whose data are all zero has the solution 0 (values start at 0).
-    if (active.translation) solve_interior<K, L::t, Dim>(plan.translation, plan.num_boundary_vertices, values.data());
-    if (active.rotation) solve_interior<K, L::w, K - Dim>(plan.rotation, plan.num_boundary_vertices, values.data());
+    if (active.translation)
+        solve_interior<K, L::t, Dim>(plan.solve, plan.solve.translation, plan.num_boundary_vertices, values.data());
+    if (active.rotation)
+        solve_interior<K, L::w, K - Dim>(plan.solve, plan.solve.rotation, plan.num_boundary_vertices, values.data());
     parallel_for_blocks(plan.num_points(), deform_block, [&](std::int64_t begin, std::int64_t end) {
-        deform_range<Dim>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);
+        if (active.rotation) deform_range<Dim, true>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);
+        else deform_range<Dim, false>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);
     });
 }
 

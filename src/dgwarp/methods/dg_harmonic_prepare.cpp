@@ -40,52 +40,65 @@ std::vector<std::pair<std::int32_t, std::int32_t>> unknown_edges(int dim, std::s
     return e;
 }
 
-// Assembles the Laplacian of the coarse graph with the given weight per edge
-// (edges as unknown_edges gives them), factorises its unknown block.
-HarmonicSystem factorise(std::span<const std::pair<std::int32_t, std::int32_t>> edges, std::span<const double> weight,
-                         std::int32_t first_unknown, std::int32_t num_unknowns) {
+// Assembles the Laplacians of the coarse graph with the two weights per edge
+// (edges as unknown_edges gives them) and factorises their unknown blocks:
+// one ordering and symbolic analysis, two numeric factorisations.
+HarmonicFactors factorise(std::span<const std::pair<std::int32_t, std::int32_t>> edges,
+                          std::span<const double> translation_weight, std::span<const double> rotation_weight,
+                          std::int32_t first_unknown, std::int32_t num_unknowns) {
     const std::int32_t nb = first_unknown, n = num_unknowns;
-    HarmonicSystem sys;
-    std::vector<Eigen::Triplet<double, int>> a;
-    a.reserve(edges.size() + static_cast<std::size_t>(n));
-    std::vector<double> diagonal(n, 0.0);
-    std::vector<std::vector<std::pair<std::int32_t, double>>> coupling(n);
-    for (std::size_t k = 0; k < edges.size(); ++k) {
-        const auto [u, v] = edges[k];
-        const double w = weight[k];
-        diagonal[v - nb] += w;
-        if (u >= nb) {
-            diagonal[u - nb] += w;
-            a.emplace_back(v - nb, u - nb, -w);  // lower triangle only
-        } else {
-            coupling[v - nb].emplace_back(u, w);
-        }
-    }
-    for (std::int32_t i = 0; i < n; ++i) a.emplace_back(i, i, diagonal[i]);
-
-    Eigen::SparseMatrix<double> m(n, n);
-    m.setFromTriplets(a.begin(), a.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
-    ldlt.compute(m);
-    if (ldlt.info() != Eigen::Success)
-        throw Error("DG-harmonic: the coarse Laplacian could not be factorised (" + std::to_string(n) + " unknowns)");
-
-    const auto& p = ldlt.permutationP().indices();
-    sys.perm.assign(p.data(), p.data() + p.size());
-    const Eigen::SparseMatrix<double>& l = ldlt.matrixL().nestedExpression();
-    sys.l_start.assign(l.outerIndexPtr(), l.outerIndexPtr() + n + 1);
-    sys.l_row.assign(l.innerIndexPtr(), l.innerIndexPtr() + l.nonZeros());
-    sys.l_value.assign(l.valuePtr(), l.valuePtr() + l.nonZeros());
-    const auto& dv = ldlt.vectorD();
-    sys.d.assign(dv.data(), dv.data() + dv.size());
+    HarmonicFactors f;
+    using Ldlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>;
+    Ldlt ldlt;
+    // B's entries grouped by unknown: the edges (to a boundary vertex) of each.
+    std::vector<std::vector<std::size_t>> coupling(n);
+    for (std::size_t k = 0; k < edges.size(); ++k)
+        if (edges[k].first < nb) coupling[edges[k].second - nb].push_back(k);
+    std::vector<std::size_t> coupling_edge;
     for (const auto& row : coupling) {
-        for (const auto& [v, w] : row) {
-            sys.coupling_vertex.push_back(v);
-            sys.coupling_weight.push_back(w);
+        for (std::size_t k : row) {
+            f.coupling_vertex.push_back(edges[k].first);
+            coupling_edge.push_back(k);
         }
-        sys.coupling_start.push_back(static_cast<std::int64_t>(sys.coupling_vertex.size()));
+        f.coupling_start.push_back(static_cast<std::int64_t>(f.coupling_vertex.size()));
     }
-    return sys;
+    bool analysed = false;
+    for (auto [weight, sys] : {std::pair{translation_weight, &f.translation}, std::pair{rotation_weight, &f.rotation}}) {
+        std::vector<Eigen::Triplet<double, int>> a;
+        a.reserve(edges.size() + static_cast<std::size_t>(n));
+        std::vector<double> diagonal(n, 0.0);
+        for (std::size_t k = 0; k < edges.size(); ++k) {
+            const auto [u, v] = edges[k];
+            const double w = weight[k];
+            diagonal[v - nb] += w;
+            if (u >= nb) {
+                diagonal[u - nb] += w;
+                a.emplace_back(v - nb, u - nb, -w);  // lower triangle; zeros kept, so both share one pattern
+            }
+        }
+        for (std::size_t k : coupling_edge) sys->coupling_weight.push_back(weight[k]);
+        for (std::int32_t i = 0; i < n; ++i) a.emplace_back(i, i, diagonal[i]);
+        Eigen::SparseMatrix<double> m(n, n);
+        m.setFromTriplets(a.begin(), a.end());
+        if (!analysed) {
+            ldlt.analyzePattern(m);
+            analysed = true;
+        }
+        ldlt.factorize(m);
+        if (ldlt.info() != Eigen::Success)
+            throw Error("DG-harmonic: the coarse Laplacian could not be factorised (" + std::to_string(n) + " unknowns)");
+        const Eigen::SparseMatrix<double>& l = ldlt.matrixL().nestedExpression();
+        if (f.perm.empty()) {
+            const auto& p = ldlt.permutationP().indices();
+            f.perm.assign(p.data(), p.data() + p.size());
+            f.l_start.assign(l.outerIndexPtr(), l.outerIndexPtr() + n + 1);
+            f.l_row.assign(l.innerIndexPtr(), l.innerIndexPtr() + l.nonZeros());
+        }
+        sys->l_value.assign(l.valuePtr(), l.valuePtr() + l.nonZeros());
+        const Eigen::VectorXd d = ldlt.vectorD();  // a copy: vectorD() returns by value
+        sys->d.assign(d.data(), d.data() + n);
+    }
+    return f;
 }
 
 // Per coarse graph vertex, its distances to the nearest moving and the nearest
@@ -300,9 +313,8 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
         std::vector<double> wt, wr;
         edge_weights(plan, edges, vertex_xyz, wall, boundary_diagonal(dim, points, boundary, true), wt, wr);
         const auto n = static_cast<std::int32_t>(plan.num_vertices() - plan.num_boundary_vertices);
-        plan.translation = factorise(edges, wt, plan.num_boundary_vertices, n);
-        plan.rotation = factorise(edges, wr, plan.num_boundary_vertices, n);
-        plan.stats.factor_nonzeros = static_cast<std::int64_t>(plan.translation.l_row.size());
+        plan.solve = factorise(edges, wt, wr, plan.num_boundary_vertices, n);
+        plan.stats.factor_nonzeros = static_cast<std::int64_t>(plan.solve.l_row.size());
     }
     plan.stats.factor_seconds = seconds_since(t0);
     if (progress) progress(1.0);
@@ -314,17 +326,18 @@ template <class T>
 std::size_t bytes_of(const std::vector<T>& v) {
     return v.size() * sizeof(T);
 }
-std::size_t system_bytes(const HarmonicSystem& s) {
-    return bytes_of(s.perm) + bytes_of(s.l_start) + bytes_of(s.l_row) + bytes_of(s.l_value) + bytes_of(s.d) +
-           bytes_of(s.coupling_start) + bytes_of(s.coupling_vertex) + bytes_of(s.coupling_weight);
+std::size_t factor_bytes(const HarmonicFactors& f) {
+    std::size_t n = bytes_of(f.perm) + bytes_of(f.l_start) + bytes_of(f.l_row) + bytes_of(f.coupling_start) +
+                    bytes_of(f.coupling_vertex);
+    for (const auto* s : {&f.translation, &f.rotation}) n += bytes_of(s->l_value) + bytes_of(s->d) + bytes_of(s->coupling_weight);
+    return n;
 }
 }  // namespace
 
 std::size_t plan_bytes(const DgHarmonicPlan& p) {
     return sizeof(DgHarmonicPlan) + bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) +
            bytes_of(p.vertex_motion) + bytes_of(p.shared_offsets) + bytes_of(p.shared_members) +
-           bytes_of(p.simplices) + bytes_of(p.node_simplex) + bytes_of(p.node_barycentric) + system_bytes(p.translation) +
-           system_bytes(p.rotation);
+           bytes_of(p.simplices) + bytes_of(p.node_simplex) + bytes_of(p.node_barycentric) + factor_bytes(p.solve);
 }
 
 }  // namespace dgwarp
