@@ -4,21 +4,20 @@
 #include <cmath>
 #include <limits>
 #include <nanoflann.hpp>
+#include <vector>
 
 namespace dgwarp {
 
 namespace {
 
-// nanoflann's dataset interface over a list of node ids into row-major points.
+// nanoflann's dataset interface over the nodes' coordinates, copied into one
+// contiguous array (leaf scans then read memory in order).
 struct NodeCloud {
-    std::span<const double> points;
-    std::span<const NodeId> nodes;
+    std::vector<double> xyz;
     int dim = 3;
 
-    std::size_t kdtree_get_point_count() const { return nodes.size(); }
-    double kdtree_get_pt(std::size_t i, std::size_t d) const {
-        return points[static_cast<std::size_t>(nodes[i]) * dim + d];
-    }
+    std::size_t kdtree_get_point_count() const { return xyz.size() / static_cast<std::size_t>(dim); }
+    double kdtree_get_pt(std::size_t i, std::size_t d) const { return xyz[i * dim + d]; }
     template <class Box>
     bool kdtree_get_bbox(Box&) const {
         return false;
@@ -34,7 +33,14 @@ struct NearestNode::Tree {
     NodeCloud cloud;
     NodeTree tree;
     Tree(int dim, std::span<const double> points, std::span<const NodeId> nodes)
-        : cloud{points, nodes, dim}, tree(dim, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}
+        : cloud{coordinates(dim, points, nodes), dim}, tree(dim, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
+
+    static std::vector<double> coordinates(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
+        std::vector<double> xyz(nodes.size() * static_cast<std::size_t>(dim));
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+            for (int d = 0; d < dim; ++d) xyz[i * dim + d] = points[static_cast<std::size_t>(nodes[i]) * dim + d];
+        return xyz;
+    }
 };
 
 NearestNode::NearestNode(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
@@ -43,11 +49,13 @@ NearestNode::NearestNode(int dim, std::span<const double> points, std::span<cons
 
 NearestNode::~NearestNode() = default;
 
-NearestNode::Found NearestNode::nearest(const double* x) const {
+NearestNode::Found NearestNode::nearest(const double* x, double relative_error) const {
     if (!tree_) return {-1, std::numeric_limits<double>::infinity()};
     std::uint32_t j = 0;
     double d2 = 0;
-    tree_->tree.knnSearch(x, 1, &j, &d2);
+    nanoflann::KNNResultSet<double, std::uint32_t> result(1);
+    result.init(&j, &d2);
+    tree_->tree.findNeighbors(result, x, nanoflann::SearchParams(32, static_cast<float>(relative_error)));
     return {static_cast<std::int64_t>(j), std::sqrt(d2)};
 }
 

@@ -5,17 +5,33 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <unordered_map>
 
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/graph/nearest_node.hpp"
 
 namespace dgwarp {
 
 namespace {
 
-struct Candidate {
+// A cell of the nested grids.
+struct CellKey {
     std::int32_t level;
     std::array<std::int64_t, 3> cell;
+    bool operator==(const CellKey&) const = default;
+};
+
+struct CellKeyHash {
+    std::size_t operator()(const CellKey& k) const {
+        std::uint64_t h = static_cast<std::uint64_t>(k.level) * 0x9e3779b97f4a7c15ULL;
+        for (std::int64_t c : k.cell) h = (h ^ static_cast<std::uint64_t>(c)) * 0xff51afd7ed558ccdULL;
+        return static_cast<std::size_t>(h ^ (h >> 32));
+    }
+};
+
+// The best node of a cell so far.
+struct Candidate {
     double centre_dist2;
     NodeId node;
 };
@@ -30,11 +46,15 @@ std::vector<NodeId> select_coarse_points(int dim, std::span<const double> points
     std::vector<double> h(boundary_nodes.size());
     parallel_for(static_cast<std::int64_t>(h.size()), [&](std::int64_t j) { h[j] = tree.spacing(j); });
 
-    // The spacing each volume node wants (0: not a candidate).
+    // The spacing each volume node wants (0: not a candidate). Queried along a
+    // Morton curve: neighbouring queries then walk the same tree branches.
     std::vector<double> want(volume_nodes.size());
-    parallel_for(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t i) {
+    const std::vector<std::uint32_t> order = morton_order(dim, points, volume_nodes);
+    parallel_for(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t k) {
+        const std::uint32_t i = order[k];
         const double* x = points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim;
-        const NearestNode::Found f = tree.nearest(x);
+        // A spacing needs no exact distance: within 50% it is as good.
+        const NearestNode::Found f = tree.nearest(x, 0.5);
         const double d = f.distance;
         const double s = std::max(spacing.wall_spacing * h[f.index], spacing.growth * d);
         want[i] = d > 0 && d >= 0.5 * s ? s : 0.0;
@@ -49,29 +69,29 @@ std::vector<NodeId> select_coarse_points(int dim, std::span<const double> points
     }
     if (!std::isfinite(s_min)) return {};
 
-    std::vector<Candidate> c;
-    c.reserve(volume_nodes.size());
+    // Per (level, cell), the candidate nearest to the cell's centre (lowest id on ties).
+    std::unordered_map<CellKey, Candidate, CellKeyHash> best;
+    best.reserve(volume_nodes.size() / 8);
     for (std::size_t i = 0; i < volume_nodes.size(); ++i) {
         if (want[i] <= 0) continue;
-        Candidate k{};
-        k.level = static_cast<std::int32_t>(std::floor(std::log2(want[i] / s_min)));
-        const double size = std::ldexp(s_min, k.level);
+        CellKey key{};
+        key.level = static_cast<std::int32_t>(std::floor(std::log2(want[i] / s_min)));
+        const double size = std::ldexp(s_min, key.level);
         const double* x = points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim;
+        Candidate k{0.0, volume_nodes[i]};
         for (int d = 0; d < dim; ++d) {
             const double u = (x[d] - lo[d]) / size;
-            k.cell[d] = static_cast<std::int64_t>(std::floor(u));
-            const double off = u - (static_cast<double>(k.cell[d]) + 0.5);
+            key.cell[d] = static_cast<std::int64_t>(std::floor(u));
+            const double off = u - (static_cast<double>(key.cell[d]) + 0.5);
             k.centre_dist2 += off * off;
         }
-        k.node = volume_nodes[i];
-        c.push_back(k);
+        const auto [it, inserted] = best.try_emplace(key, k);
+        if (!inserted && std::tie(k.centre_dist2, k.node) < std::tie(it->second.centre_dist2, it->second.node))
+            it->second = k;
     }
-    std::sort(c.begin(), c.end(), [](const Candidate& a, const Candidate& b) {
-        return std::tie(a.level, a.cell, a.centre_dist2, a.node) < std::tie(b.level, b.cell, b.centre_dist2, b.node);
-    });
     std::vector<NodeId> chosen;
-    for (std::size_t i = 0; i < c.size(); ++i)
-        if (i == 0 || c[i].level != c[i - 1].level || c[i].cell != c[i - 1].cell) chosen.push_back(c[i].node);
+    chosen.reserve(best.size());
+    for (const auto& [key, k] : best) chosen.push_back(k.node);
     std::sort(chosen.begin(), chosen.end());
     return chosen;
 }

@@ -1,0 +1,67 @@
+#include "dgwarp/graph/morton_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "dgwarp/core/parallel_for.hpp"
+
+namespace dgwarp {
+
+namespace {
+
+// The bits of v (21 used) spread to every third bit.
+std::uint64_t spread3(std::uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+}
+
+// The bits of v (32 used) spread to every second bit.
+std::uint64_t spread2(std::uint64_t v) {
+    v &= 0xffffffff;
+    v = (v | v << 16) & 0x0000ffff0000ffffULL;
+    v = (v | v << 8) & 0x00ff00ff00ff00ffULL;
+    v = (v | v << 4) & 0x0f0f0f0f0f0f0f0fULL;
+    v = (v | v << 2) & 0x3333333333333333ULL;
+    v = (v | v << 1) & 0x5555555555555555ULL;
+    return v;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
+    double lo[3], hi[3];
+    std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
+    std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
+    for (NodeId n : nodes)
+        for (int d = 0; d < dim; ++d) {
+            lo[d] = std::min(lo[d], points[static_cast<std::size_t>(n) * dim + d]);
+            hi[d] = std::max(hi[d], points[static_cast<std::size_t>(n) * dim + d]);
+        }
+    const int bits = dim == 3 ? 21 : 32;
+    const double cells = std::ldexp(1.0, bits) - 1;
+    double scale[3] = {};
+    for (int d = 0; d < dim; ++d) scale[d] = hi[d] > lo[d] ? cells / (hi[d] - lo[d]) : 0.0;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> key(nodes.size());
+    parallel_for(static_cast<std::int64_t>(nodes.size()), [&](std::int64_t i) {
+        std::uint64_t code = 0;
+        for (int d = 0; d < dim; ++d) {
+            const double u = (points[static_cast<std::size_t>(nodes[i]) * dim + d] - lo[d]) * scale[d];
+            const auto c = static_cast<std::uint64_t>(std::clamp(u, 0.0, cells));
+            code |= (dim == 3 ? spread3(c) : spread2(c)) << d;
+        }
+        key[i] = {code, static_cast<std::uint32_t>(i)};
+    });
+    std::sort(key.begin(), key.end());
+    std::vector<std::uint32_t> order(key.size());
+    for (std::size_t i = 0; i < key.size(); ++i) order[i] = key[i].second;
+    return order;
+}
+
+}  // namespace dgwarp
