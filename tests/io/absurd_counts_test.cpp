@@ -37,7 +37,7 @@ using namespace dgwarp;
 namespace {
 
 // How the read in the child ended.
-enum Outcome { parse_error = 0, no_error = 1, bad_alloc = 2, other_error = 3, limit_failed = 4 };
+enum class Outcome { parse_error = 0, no_error = 1, bad_alloc = 2, other_error = 3, limit_failed = 4 };
 
 /// Runs `read` in a child process whose address space may grow by at most
 /// 256 MiB; returns how it ended (or -1 when the child crashed).
@@ -49,13 +49,13 @@ int outcome_with_little_memory(const std::function<void()>& read) {
         try {
             read();
         } catch (const ParseError&) {
-            return parse_error;
+            return static_cast<int>(Outcome::parse_error);
         } catch (const std::bad_alloc&) {
-            return bad_alloc;
+            return static_cast<int>(Outcome::bad_alloc);
         } catch (...) {
-            return other_error;
+            return static_cast<int>(Outcome::other_error);
         }
-        return no_error;
+        return static_cast<int>(Outcome::no_error);
     };
 #ifdef DGWARP_TEST_ASAN
     return run();
@@ -69,7 +69,7 @@ int outcome_with_little_memory(const std::function<void()>& read) {
         statm >> pages;
         const auto used = pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
         const rlimit limit{used + headroom, used + headroom};
-        if (pages == 0 || ::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(limit_failed);
+        if (pages == 0 || ::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(static_cast<int>(Outcome::limit_failed));
         ::_exit(run());
     }
     int status = 0;
@@ -79,7 +79,7 @@ int outcome_with_little_memory(const std::function<void()>& read) {
 }
 
 void expect_parse_error_in_little_memory(const std::function<void()>& read, const std::string& what) {
-    EXPECT_EQ(outcome_with_little_memory(read), parse_error)
+    EXPECT_EQ(outcome_with_little_memory(read), static_cast<int>(Outcome::parse_error))
         << what << " (0: ParseError, 1: no error, 2: bad_alloc, 3: another error, 4: setrlimit failed, -1: crash)";
 }
 

@@ -7,6 +7,7 @@
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/cases/sphere_box.hpp"
 #include "dgwarp/cases/twisted_bar.hpp"
+#include "dgwarp/cases/two_element.hpp"
 #include "dgwarp/cases/wing_body.hpp"
 #include "dgwarp/core/error.hpp"
 
@@ -102,7 +103,7 @@ CaseMotion fold(const Mesh& mesh) {
 }  // namespace
 
 std::vector<std::string> case_names() {
-    return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere", "wing-body"};
+    return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere", "wing-body", "two-element"};
 }
 
 int case_size_count(std::string_view name) {
@@ -121,6 +122,7 @@ Mesh make_case(std::string_view name, int size) {
     if (name == "naca0012") return make_naca0012();
     if (name == "twisted-bar") return make_twisted_bar();
     if (name == "wing-body") return make_wing_body(wing_body_size(size));
+    if (name == "two-element") return make_two_element();
     return make_sphere_box(sphere_box_paper_size(size));
 }
 
@@ -140,6 +142,16 @@ std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh) {
                       {0.25, 0, 0}, {0, 0, 0})};
     if (name == "twisted-bar") return {twist(mesh, 0), twist(mesh, 45)};
     if (name == "wing-body") return {fold(mesh)};
+    if (name == "two-element") {
+        const auto h = two_element_hinge();
+        std::vector<CaseMotion> m;
+        for (int a : {10, 20, 30, 40})
+            m.push_back(rigid("flap", "flap-" + std::to_string(a),
+                              "the flap deflects " + std::to_string(a) + "° trailing edge down about its hinge (" +
+                                  std::to_string(h[0]).substr(0, 4) + ", " + std::to_string(h[1]).substr(0, 5) + ")",
+                              -a, {h[0], h[1], 0}, {0, 0, 0}));
+        return m;
+    }
     return {squeeze(mesh)};
 }
 

@@ -11,6 +11,8 @@
 //   twisted-bar      section 4,   Tables 7-8   (make_twisted_bar)
 //   squeezed-sphere  section 5,   Tables 9-10  (make_sphere_box; sizes 0, 1, 2)
 //   wing-body        section 6,   Figs. 23-24  (make_wing_body; size 0 coarse, size 1 the paper's)
+// and ours (issue #12: a body moving next to a fixed one):
+//   two-element      a main airfoil and a slotted flap (make_two_element)
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +52,8 @@ struct CaseMotion {
 ///   squeezed-sphere: squeeze: the sphere's node (x, y, z) moves to (1.1x, 1.1y, 0.8z), an ellipsoid
 ///   wing-body:       fold-20: the outer wing (marker "wing") turns 20° about its hinge line
 ///                    (wing_body_hinge(), along +x), tip up; body, symmetry and far field fixed
+///   two-element:     flap-10, flap-20, flap-30, flap-40: the flap turns trailing edge down
+///                    about two_element_hinge(); main element and far field fixed
 /// Throws Error for an unknown name, MeshError when the mesh lacks the case's markers.
 std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh);
 
