@@ -188,7 +188,8 @@ TEST(DgHarmonic, BadInputIsRefused) {
     const BoxInBox m = harmonic_box(2, 12);
     EXPECT_THROW(prepare_dg_harmonic(2, m.points, m.boundary, {.wall_spacing = 0}), Error);
     EXPECT_THROW(prepare_dg_harmonic(2, m.points, m.boundary, {.growth = std::nan("")}), Error);
-    EXPECT_THROW(prepare_dg_harmonic(2, m.points, m.boundary, {.rigid_zone = -1}), Error);
+    EXPECT_THROW(prepare_dg_harmonic(2, m.points, m.boundary, {.rigid_zone = std::nan("")}), Error);
+    EXPECT_THROW(prepare_dg_harmonic(2, m.points, m.boundary, {.translation_exponent = 5}), Error);
     const DgHarmonicPlan plan = prepare_dg_harmonic(2, m.points, m.boundary, dense);
     std::vector<double> out(m.points.size());
     EXPECT_THROW(deform_dg_harmonic(plan, m.points, BoundaryMotion(3), out), MeshError);

@@ -6,6 +6,7 @@
 #include "dgwarp/cases/naca0012.hpp"
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/cases/sphere_box.hpp"
+#include "dgwarp/cases/store.hpp"
 #include "dgwarp/cases/twisted_bar.hpp"
 #include "dgwarp/cases/two_element.hpp"
 #include "dgwarp/cases/wing_body.hpp"
@@ -103,7 +104,7 @@ CaseMotion fold(const Mesh& mesh) {
 }  // namespace
 
 std::vector<std::string> case_names() {
-    return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere", "wing-body", "two-element"};
+    return {"rect-box", "naca0012", "twisted-bar", "squeezed-sphere", "wing-body", "two-element", "store"};
 }
 
 int case_size_count(std::string_view name) {
@@ -123,6 +124,7 @@ Mesh make_case(std::string_view name, int size) {
     if (name == "twisted-bar") return make_twisted_bar();
     if (name == "wing-body") return make_wing_body(wing_body_size(size));
     if (name == "two-element") return make_two_element();
+    if (name == "store") return make_store();
     return make_sphere_box(sphere_box_paper_size(size));
 }
 
@@ -150,6 +152,22 @@ std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh) {
                               "the flap deflects " + std::to_string(a) + "° trailing edge down about its hinge (" +
                                   std::to_string(h[0]).substr(0, 4) + ", " + std::to_string(h[1]).substr(0, 5) + ")",
                               -a, {h[0], h[1], 0}, {0, 0, 0}));
+        return m;
+    }
+    if (name == "store") {
+        // Nose (+x) down: a positive turn about +y; about the store's centre,
+        // then a drop of one diameter.
+        const StoreOptions o;
+        std::vector<CaseMotion> m;
+        for (int a : {10, 20, 30}) {
+            NodeMotion motion;
+            motion.rotation = {0, a * degree, 0};
+            motion.center = {store_centre()[0], store_centre()[1], store_centre()[2]};
+            motion.translation = {0, 0, -2 * o.store_radius};
+            m.push_back({"drop-pitch-" + std::to_string(a),
+                         "the store drops by its diameter and pitches " + std::to_string(a) + "° nose down",
+                         one_marker("store", RigidMotion{motion})});
+        }
         return m;
     }
     return {squeeze(mesh)};

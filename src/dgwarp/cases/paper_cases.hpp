@@ -13,6 +13,7 @@
 //   wing-body        section 6,   Figs. 23-24  (make_wing_body; size 0 coarse, size 1 the paper's)
 // and ours (issue #12: a body moving next to a fixed one):
 //   two-element      a main airfoil and a slotted flap (make_two_element)
+//   store            a store below a fixed plate (make_store)
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,8 @@ struct CaseMotion {
 ///                    (wing_body_hinge(), along +x), tip up; body, symmetry and far field fixed
 ///   two-element:     flap-10, flap-20, flap-30, flap-40: the flap turns trailing edge down
 ///                    about two_element_hinge(); main element and far field fixed
+///   store:           drop-pitch-10, -20, -30: the store drops by its diameter and pitches nose
+///                    down about its centre; plate and far field fixed
 /// Throws Error for an unknown name, MeshError when the mesh lacks the case's markers.
 std::vector<CaseMotion> case_motions(std::string_view name, const Mesh& mesh);
 

@@ -53,15 +53,18 @@ struct DgHarmonicOptions {
     /// Conductivity of a coarse simplex in the two Laplacians:
     /// size^-translation_exponent for the translation, size^-rotation_exponent
     /// for the rotation (times the rigid-zone factor); size is the simplex's
-    /// mean edge length. Prepare time.
+    /// mean edge length. Prepare time. A negative value takes the
+    /// dimension's default (rotation: 0 in 2D, 3 in 3D; docs/dg-harmonic.md
+    /// has the measurements).
     double translation_exponent = 3.0;
-    double rotation_exponent = 0.0;
+    double rotation_exponent = -1;
     /// Rigid zone of the rotation: a simplex closer to the moving boundary
     /// than rho = min(rigid_zone D, rigid_gap d_s) is stiffened by
     /// 1 + (rho / d_m)^2 (D: the moving boundary's bounding-box diagonal; d_m,
     /// d_s: the mean distances of its corners to the nearest moving and
     /// static boundary nodes, d_m at least half its size). Prepare time.
-    double rigid_zone = 0.25;
+    /// Negative: the dimension's default (0.25 in 2D, 0 in 3D).
+    double rigid_zone = -1;
     double rigid_gap = 0.5;
 };
 
@@ -99,6 +102,9 @@ struct HarmonicFactors {
         std::vector<double> coupling_weight;
     };
     System translation, rotation;
+    /// The two Laplacians are the same (same conductivity, no rigid zone):
+    /// `rotation` is empty and one solve carries every component.
+    bool shared = false;
 
     std::int64_t num_unknowns() const { return static_cast<std::int64_t>(perm.size()); }
 };
@@ -107,7 +113,7 @@ struct HarmonicFactors {
 struct DgHarmonicPlan {
     int dim = 3;
     MeshFingerprint mesh;
-    DgHarmonicOptions options;                  // as given to prepare (they shape every array below)
+    DgHarmonicOptions options;                  // as prepare used them (resolved_options; they shape every array below)
     std::vector<NodeId> boundary_nodes;         // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
     /// Per coarse graph vertex: b >= 0 when it is a boundary point that moves
@@ -165,5 +171,8 @@ std::size_t plan_bytes(const DgHarmonicPlan& plan);
 
 /// Throws Error when an option is out of range (naming it).
 void check_dg_harmonic_options(const DgHarmonicOptions& options);
+
+/// `options` with the dimension's defaults in place of negative values.
+DgHarmonicOptions resolved_options(const DgHarmonicOptions& options, int dim);
 
 }  // namespace dgwarp

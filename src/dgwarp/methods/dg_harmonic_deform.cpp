@@ -169,10 +169,15 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
     using L = Layout<Dim>;
     const Active active = boundary_values<Dim>(plan, motion, values.data());
     // A system whose data are all zero has the solution 0 (values start at 0).
-    if (active.translation)
-        solve_interior<K, L::t, Dim>(plan.solve, plan.solve.translation, plan.num_boundary_vertices, values.data());
-    if (active.rotation)
-        solve_interior<K, L::w, K - Dim>(plan.solve, plan.solve.rotation, plan.num_boundary_vertices, values.data());
+    const HarmonicFactors& f = plan.solve;
+    if (f.shared && active.translation && active.rotation) {
+        solve_interior<K, 0, K>(f, f.translation, plan.num_boundary_vertices, values.data());  // one pass for all
+    } else {
+        if (active.translation) solve_interior<K, L::t, Dim>(f, f.translation, plan.num_boundary_vertices, values.data());
+        if (active.rotation)
+            solve_interior<K, L::w, K - Dim>(f, f.shared ? f.translation : f.rotation, plan.num_boundary_vertices,
+                                             values.data());
+    }
     parallel_for_blocks(plan.num_points(), deform_block, [&](std::int64_t begin, std::int64_t end) {
         if (active.rotation) deform_range<Dim, true>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);
         else deform_range<Dim, false>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);

@@ -63,7 +63,10 @@ HarmonicFactors factorise(std::span<const std::pair<std::int32_t, std::int32_t>>
         f.coupling_start.push_back(static_cast<std::int64_t>(f.coupling_vertex.size()));
     }
     bool analysed = false;
+    f.shared = std::equal(translation_weight.begin(), translation_weight.end(), rotation_weight.begin(),
+                          rotation_weight.end());
     for (auto [weight, sys] : {std::pair{translation_weight, &f.translation}, std::pair{rotation_weight, &f.rotation}}) {
+        if (f.shared && sys == &f.rotation) break;
         std::vector<Eigen::Triplet<double, int>> a;
         a.reserve(edges.size() + static_cast<std::size_t>(n));
         std::vector<double> diagonal(n, 0.0);
@@ -240,11 +243,21 @@ void check_dg_harmonic_options(const DgHarmonicOptions& options) {
         throw Error("DG-harmonic: growth must be finite and positive, got " + std::to_string(options.growth));
     for (const auto& [name, value] : {std::pair{"translation_exponent", options.translation_exponent},
                                       std::pair{"rotation_exponent", options.rotation_exponent}})
-        if (!std::isfinite(value) || value < 0 || value > 4)
-            throw Error(std::string("DG-harmonic: ") + name + " must be in [0, 4], got " + std::to_string(value));
+        if (!std::isfinite(value) || value > 4)
+            throw Error(std::string("DG-harmonic: ") + name + " must be at most 4 (negative: the default), got " +
+                        std::to_string(value));
     for (const auto& [name, value] : {std::pair{"rigid_zone", options.rigid_zone}, std::pair{"rigid_gap", options.rigid_gap}})
-        if (!std::isfinite(value) || value < 0)
-            throw Error(std::string("DG-harmonic: ") + name + " must be finite and >= 0, got " + std::to_string(value));
+        if (!std::isfinite(value))
+            throw Error(std::string("DG-harmonic: ") + name + " must be finite, got " + std::to_string(value));
+}
+
+DgHarmonicOptions resolved_options(const DgHarmonicOptions& options, int dim) {
+    DgHarmonicOptions o = options;
+    if (o.translation_exponent < 0) o.translation_exponent = 3;
+    if (o.rotation_exponent < 0) o.rotation_exponent = dim == 2 ? 0 : 3;
+    if (o.rigid_zone < 0) o.rigid_zone = dim == 2 ? 0.25 : 0;
+    if (o.rigid_gap < 0) o.rigid_gap = 0.5;
+    return o;
 }
 
 DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, const BoundarySet& boundary,
@@ -254,7 +267,7 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
 
     DgHarmonicPlan plan;
     plan.dim = dim;
-    plan.options = options;
+    plan.options = resolved_options(options, dim);
     plan.mesh = mesh_fingerprint(dim, points, boundary);
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
