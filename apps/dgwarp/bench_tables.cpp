@@ -114,7 +114,9 @@ std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& r
          "not the paper's formula: it has no paper column; *dg-idw continuous* is DG-IDW with our continuous weights "
          "(each corner's weight times the node's barycentric coordinate, no multipliers; docs/dg-idw.md), L = 1; "
          "*dg-idw + untangle* is DG-IDW with the paper's formula followed by our local repair of inverted cells "
-         "(docs/UNTANGLE.md; boundary nodes stay, its time is in the step).\n\n";
+         "(docs/UNTANGLE.md; boundary nodes stay, its time is in the step). *dg-harmonic* is our robust "
+         "two-level method (docs/dg-harmonic.md), not in the paper. The cases two-element and store are ours too "
+         "(a body moving next to a fixed one, issue #12): no paper columns.\n\n";
     for (const BenchRow& r : rows) {
         std::string description = r.motion_description;
         if (!description.empty()) description[0] = static_cast<char>(std::toupper(description[0]));
