@@ -280,22 +280,46 @@ void run_deform(const DeformArgs& a) {
         std::cout << j.dump(2) << "\n";
     }
     std::int64_t invalid_runs = 0;
-    std::string what;
+    std::string what, advice;
     for (const MethodRun& r : runs)
         if (r.invalid) {
             ++invalid_runs;
             what += (what.empty() ? "" : "; ") + std::string(method_name(r.planned.method)) + ": " + r.error;
+            advice += (advice.empty() ? "" : "; ") + invalid_result_advice(r.planned.method);
         }
     if (invalid_runs > 0) {
         if (!a.allow_invalid)
-            throw InvalidResultError(what + ". Nothing was written for an invalid frame. The motion is too large "
-                                            "for one step: split it into frames, or use --allow-invalid to write it anyway",
+            throw InvalidResultError(what + ". Nothing was written for an invalid frame. " + advice +
+                                         "; or --allow-invalid to write it anyway",
                                      invalid_runs);
         if (!a.quiet) std::cerr << "warning: " << what << "; written anyway (--allow-invalid)\n";
     }
 }
 
 }  // namespace
+
+std::string invalid_result_advice(Method method) {
+    // Every frame is measured from the original mesh, so splitting a motion
+    // into frames does not help; these do.
+    switch (method) {
+        case Method::dg_idw:
+            return "For dg-idw: try --method dg-harmonic (robust next to fixed walls and for large rotations, "
+                   "docs/dg-harmonic.md), --length-scale auto when a fixed wall is close to the moving one, or "
+                   "--untangle to repair the inverted cells";
+        case Method::dgm:
+            return "For dgm: try --dgm-substep, or --method dg-harmonic";
+        case Method::idw:
+            return "For idw: try --method dg-harmonic, or --untangle to repair the inverted cells";
+        case Method::rbf:
+            return "For rbf: try --method dg-harmonic, a compact support (--rbf-radius), or --untangle to repair "
+                   "the inverted cells";
+        case Method::dg_harmonic:
+            return "For dg-harmonic: try --untangle to repair the inverted cells (a moving face bounded by fixed "
+                   "walls folds cells with every method, docs/dg-harmonic.md), or a finer coarse level "
+                   "(--harmonic-wall-spacing 3)";
+    }
+    return "";
+}
 
 void add_deform_command(CLI::App& app) {
     auto args = std::make_shared<DeformArgs>();

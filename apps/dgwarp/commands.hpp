@@ -2,6 +2,9 @@
 // The dgwarp command-line tool: each subcommand registers itself on the app.
 // Commands are thin: parse options, call the library, print, write.
 #include <CLI/CLI.hpp>
+#include <string>
+
+#include "dgwarp/methods/method.hpp"
 
 namespace dgwarp::cli {
 
@@ -20,6 +23,8 @@ void add_demo_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_picture_command(CLI::App& app);
 void add_deform_command(CLI::App& app);
+/// What to try when `method` gave inverted cells (the options that apply to it).
+std::string invalid_result_advice(Method method);
 void add_prepare_command(CLI::App& app);
 void add_case_command(CLI::App& app);
 void add_bench_command(CLI::App& app);

@@ -246,3 +246,27 @@ TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
     EXPECT_EQ(run_cli(base + quoted(dir / "x.su2") + " --untangle --untangle-target 1.5").exit_code, 1);
     EXPECT_EQ(run_cli(base + quoted(dir / "x.su2") + " --untangle-target 0.1").exit_code, 1);  // needs --untangle
 }
+
+TEST(CliDeform, AFlapNextToItsWingFoldsDgIdwWhichNamesTheFixesAndDgHarmonicStaysValid) {
+    // Issue #12 and #17 item 7: the advice names what helps for the method
+    // (no longer "split the motion into frames": every frame starts from the
+    // original mesh), and dg-harmonic keeps every cell valid.
+    const auto dir = scratch_dir();
+    const auto mesh = dir / "two-element.su2";
+    ASSERT_EQ(run_cli("case two-element -o " + quoted(mesh)).exit_code, 0);
+    const auto motion = write_text(dir / "flap20.json", R"({"markers": {"flap": {"rotate": {"angle_deg": -20,
+        "center": [0.95, -0.049]}}}})");
+    const std::string inputs = quoted(mesh) + " -m " + quoted(motion);
+    const CommandResult folded = run_cli("deform " + inputs + " -o " + quoted(dir / "idw.su2"));
+    EXPECT_EQ(folded.exit_code, 3) << folded.err;
+    EXPECT_NE(folded.err.find("--method dg-harmonic"), std::string::npos) << folded.err;
+    EXPECT_NE(folded.err.find("--untangle"), std::string::npos) << folded.err;
+    EXPECT_EQ(folded.err.find("split it into frames"), std::string::npos) << folded.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "idw.su2"));
+    const CommandResult robust = run_cli("deform " + inputs + " --method dg-harmonic -o " + quoted(dir / "h.su2") + " --json");
+    ASSERT_EQ(robust.exit_code, 0) << robust.err;
+    const auto j = nlohmann::json::parse(robust.out);
+    EXPECT_EQ(j.at("frames").at(0).at("quality").at("inverted"), 0);
+    EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.4);  // measured 0.542
+    EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
+}
