@@ -109,19 +109,25 @@ std::vector<std::byte> with_valid_plan_checksum(std::span<const std::byte> bytes
 
 void check_plan(std::span<const std::uint8_t> data) {
     const auto bytes = std::as_bytes(data);
-    DgIdwPlan plan;
+    Plan plan;
     try {
-        plan = load_dg_idw_plan_bytes(bytes, "fuzz.plan");
+        plan = load_plan_bytes(bytes, "fuzz.plan");
     } catch (const Error&) {
-        plan = load_dg_idw_plan_bytes(with_valid_plan_checksum(bytes), "fuzz-checksum-fixed.plan");
+        plan = load_plan_bytes(with_valid_plan_checksum(bytes), "fuzz-checksum-fixed.plan");
     }
-    // One step over the whole plan: every index it holds is followed.
-    const std::vector<double> points(static_cast<std::size_t>(plan.num_points() * plan.dim), 0.5);
-    BoundaryMotion motion(plan.boundary_nodes.size());
-    for (std::size_t b = 0; b < motion.size(); ++b)
-        if (plan.boundary_moving[b]) motion[b] = {{0.1, 0.2, 0.3}, {0.0, 0.0, 0.1}, {0.5, 0.5, 0.5}};
-    std::vector<double> out(points.size());
-    deform_dg_idw(plan, points, motion, out);
+    // One step over the whole plan (DG-IDW or DG-harmonic): every index it holds is followed.
+    auto step = [](const auto& p, auto&& deform_step) {
+        const std::vector<double> points(static_cast<std::size_t>(p.num_points() * p.dim), 0.5);
+        BoundaryMotion motion(p.boundary_nodes.size());
+        for (std::size_t b = 0; b < motion.size(); ++b)
+            if (p.boundary_moving[b]) motion[b] = {{0.1, 0.2, 0.3}, {0.0, 0.0, 0.1}, {0.5, 0.5, 0.5}};
+        std::vector<double> out(points.size());
+        deform_step(p, points, motion, out);
+    };
+    if (const auto* d = std::get_if<DgIdwPlan>(&plan))
+        step(*d, [](const DgIdwPlan& p, const auto& x, const auto& m, auto& y) { deform_dg_idw(p, x, m, y); });
+    if (const auto* h = std::get_if<DgHarmonicPlan>(&plan))
+        step(*h, [](const DgHarmonicPlan& p, const auto& x, const auto& m, auto& y) { deform_dg_harmonic(p, x, m, y); });
 }
 
 }  // namespace dgwarp::fuzz

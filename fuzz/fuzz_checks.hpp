@@ -35,9 +35,10 @@ void check_gmsh(std::span<const std::uint8_t> data);
 /// such as /dev/zero would make the fuzzer read the machine's files.
 void check_motion(std::span<const std::uint8_t> data);
 
-/// load_dg_idw_plan_bytes on the bytes as they are, then (so mutations get
-/// past the checksum to the index checks) on with_valid_plan_checksum(bytes);
-/// a plan that loads is used for one deform_dg_idw step.
+/// load_plan_bytes (DG-IDW or DG-harmonic) on the bytes as they are, then (so
+/// mutations get past the checksum to the index checks) on
+/// with_valid_plan_checksum(bytes); a plan that loads is used for one step of
+/// its method.
 void check_plan(std::span<const std::uint8_t> data);
 
 /// `bytes` with the trailing checksum recomputed when the array counts in its

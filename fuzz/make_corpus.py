@@ -226,9 +226,14 @@ def main():
             motion_file.write_text(motion)
             big = tmp / f"{stem}.su2"
             big.write_text(quad_grid_2d(6, 5) if stem == "quad_grid_2d" else MIXED_3D)
-            out = tmp / f"{stem}.plan"
-            subprocess.run([cli, "prepare", big, "-m", motion_file, "-o", out, "-q"], check=True)
-            write("plan", out.name, out.read_bytes())
+            for method in ("dg-idw", "dg-harmonic"):
+                suffix = "" if method == "dg-idw" else "_harmonic"
+                out = tmp / f"{stem}{suffix}.plan"
+                # A dense coarse level, so that these small meshes have coarse points and a factor.
+                extra = [] if method == "dg-idw" else ["--harmonic-wall-spacing", "1", "--harmonic-growth", "0.5"]
+                subprocess.run([cli, "prepare", big, "-m", motion_file, "-o", out, "-q", "--method", method, *extra],
+                               check=True)
+                write("plan", out.name, out.read_bytes())
 
     total = sum(p.stat().st_size for p in CORPUS.rglob("*") if p.is_file())
     print(f"wrote {sum(1 for p in CORPUS.rglob('*') if p.is_file())} seeds, {total} bytes, in {CORPUS}")

@@ -19,17 +19,19 @@ struct PrepareArgs {
 };
 
 void run_prepare(const PrepareArgs& a) {
-    if (chosen_methods(a.setup, false).front() != Method::dg_idw)
-        throw CLI::ValidationError("--method", "only DG-IDW plans can be saved");
+    const Method method = chosen_methods(a.setup, false).front();
+    if (method != Method::dg_idw && method != Method::dg_harmonic)
+        throw CLI::ValidationError("--method", "only dg-idw and dg-harmonic plans can be saved, not " +
+                                                   std::string(method_name(method)));
     ProgressLine progress(!a.json && !a.quiet);
     const Inputs in = read_inputs(a.setup, progress);
-    const PlannedMethod p = plan_method(in, Method::dg_idw, "", progress);
+    const PlannedMethod p = plan_method(in, method, "", progress);
     Stopwatch sw;
-    save_dg_idw_plan(a.output, std::get<DgIdwPlan>(p.plan));
+    save_plan(a.output, p.plan);
     const double write_seconds = sw.lap();
     if (a.json) {
         nlohmann::json j = inputs_json(in, "prepare");
-        j["method"] = "dg-idw";
+        j["method"] = method_name(method);
         j["plan"] = plan_json(in, p);
         for (const auto& w : plan_warnings(p)) j["warnings"].push_back(w);
         j["output"] = a.output;
@@ -47,14 +49,15 @@ void run_prepare(const PrepareArgs& a) {
 void add_prepare_command(CLI::App& app) {
     auto args = std::make_shared<PrepareArgs>();
     CLI::App* cmd = app.add_subcommand(
-        "prepare", "Build the DG-IDW plan (Delaunay graph, node location, weights) once and save it");
+        "prepare", "Build a dg-idw or dg-harmonic plan (graph, node location, weights or factor) once and save it");
     add_setup_options(cmd, args->setup);
     cmd->add_option("-o,--output", args->output, "Plan file to write")->required();
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
         "The plan depends on the mesh and on which markers move (from the motion file), not on the\n"
-        "motion's values: reuse it for every step with 'dgwarp deform --plan'. a and L are deform options.\n\n"
+        "motion's values: reuse it for every step with 'dgwarp deform --plan' (the plan's method is used).\n"
+        "Plans can be saved for --method dg-idw (a and L stay deform options) and dg-harmonic.\n\n"
         "Examples:\n"
         "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
         "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");

@@ -53,7 +53,8 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
     cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->each([&a](const std::string&) { a.method_given = true; });
     cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
     cmd->add_option("--threads", a.threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
@@ -148,17 +149,35 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
     p.plan_file = plan_file;
     Stopwatch sw;
     if (!plan_file.empty()) {
-        if (method != Method::dg_idw)
-            throw CLI::ValidationError("--plan", "saved plans are DG-IDW plans; they cannot be used with --method " +
-                                                     std::string(method_name(method)));
         progress.phase("loading " + plan_file);
-        DgIdwPlan loaded = load_dg_idw_plan(plan_file, in.mesh.points, in.boundary.boundary);
-        if (!in.args.weights.empty() && loaded.weighting != p.options.dg_idw.weighting)
-            throw CLI::ValidationError("--dg-idw-weights", plan_file + " was prepared with " +
-                                                               weighting_name(loaded.weighting) +
-                                                               " weights; prepare it again with --dg-idw-weights " +
-                                                               in.args.weights + ", or drop the option");
-        p.options.dg_idw.weighting = loaded.weighting;
+        Plan loaded = load_plan(plan_file, in.mesh.points, in.boundary.boundary);
+        const Method planned = dgwarp::plan_method(loaded);
+        if (in.args.method_given && planned != method)
+            throw CLI::ValidationError("--plan", plan_file + " is a " + std::string(method_name(planned)) +
+                                                     " plan; it cannot be used with --method " +
+                                                     std::string(method_name(method)));
+        p.method = planned;
+        if (const auto* d = std::get_if<DgIdwPlan>(&loaded)) {
+            if (!in.args.weights.empty() && d->weighting != p.options.dg_idw.weighting)
+                throw CLI::ValidationError("--dg-idw-weights", plan_file + " was prepared with " +
+                                                                   weighting_name(d->weighting) +
+                                                                   " weights; prepare it again with --dg-idw-weights " +
+                                                                   in.args.weights + ", or drop the option");
+            p.options.dg_idw.weighting = d->weighting;
+        }
+        if (const auto* h = std::get_if<DgHarmonicPlan>(&loaded)) {
+            // Prepare-time options: the plan's; one given here that differs is a mistake.
+            const DgHarmonicOptions defaults;
+            for (const auto& [flag, given, planned_value, default_value] :
+                 {std::tuple{"--harmonic-wall-spacing", in.args.harmonic_wall_spacing, h->options.wall_spacing,
+                             defaults.wall_spacing},
+                  std::tuple{"--harmonic-growth", in.args.harmonic_growth, h->options.growth, defaults.growth}})
+                if (given != default_value && given != planned_value)
+                    throw CLI::ValidationError(flag, plan_file + " was prepared with " + flag + " " +
+                                                         CLI::detail::to_string(planned_value) +
+                                                         "; prepare it again, or drop the option");
+            p.options.dg_harmonic = h->options;
+        }
         p.plan = std::move(loaded);
     } else {
         const std::string phase = "preparing " + std::string(method_name(method));

@@ -20,6 +20,7 @@ struct SetupArgs {
     std::string mesh;
     std::string motion;
     std::string method = "dg-idw";  // a method name, or "all" where a command allows it
+    bool method_given = false;      // --method was on the command line (else a --plan file decides)
     int zone = 1;
     int threads = 0;
     double a_translation = 7.0;

@@ -270,3 +270,26 @@ TEST(CliDeform, AFlapNextToItsWingFoldsDgIdwWhichNamesTheFixesAndDgHarmonicStays
     EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.4);  // measured 0.542
     EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
 }
+
+TEST(CliDeform, ADgHarmonicPlanIsSavedAndReusedWithIdenticalOutput) {
+    const auto [dir, mesh, motion] = rect_box_files();
+    const std::string inputs = quoted(mesh) + " -m " + quoted(motion);
+    ASSERT_EQ(run_cli("prepare " + inputs + " --method dg-harmonic -o " + quoted(dir / "h.plan") + " -q").exit_code, 0);
+    ASSERT_EQ(run_cli("deform " + inputs + " --method dg-harmonic -o " + quoted(dir / "direct.su2") + " -q").exit_code, 0);
+    // The plan decides the method when --method is not given.
+    const CommandResult planned = run_cli("deform " + inputs + " --plan " + quoted(dir / "h.plan") + " -o " +
+                                          quoted(dir / "planned.su2") + " --json");
+    ASSERT_EQ(planned.exit_code, 0) << planned.err;
+    EXPECT_EQ(nlohmann::json::parse(planned.out).at("method"), "dg-harmonic");
+    EXPECT_EQ(slurp(dir / "direct.su2"), slurp(dir / "planned.su2"));
+    // A conflicting method or prepare-time option is refused.
+    EXPECT_EQ(run_cli("deform " + inputs + " --plan " + quoted(dir / "h.plan") + " --method dg-idw -o " +
+                      quoted(dir / "x.su2"))
+                  .exit_code,
+              1);
+    EXPECT_EQ(run_cli("deform " + inputs + " --plan " + quoted(dir / "h.plan") + " --harmonic-growth 3 -o " +
+                      quoted(dir / "x.su2"))
+                  .exit_code,
+              1);
+    EXPECT_EQ(run_cli("prepare " + inputs + " --method rbf -o " + quoted(dir / "r.plan")).exit_code, 1);
+}

@@ -1,6 +1,10 @@
 #pragma once
-// A DG-IDW plan on disk, so a solver can prepare once and deform in later runs.
+// A plan on disk, so a solver can prepare once and deform in later runs:
+// DG-IDW plans (below) and DG-harmonic plans (magic "DGWHARM", format 1: the
+// same layout of header, arrays and chained checksum with DgHarmonicPlan's
+// fields; dg_harmonic_plan_file.cpp). save_plan / load_plan take either.
 //
+// DG-IDW:
 // Format (version 1, little-endian, no padding):
 //   header:  magic "DGWPLAN\0" (8 bytes), u32 format version, u32 dim,
 //            i64 num_points, u64 points hash, u64 boundary hash (the mesh
@@ -19,6 +23,7 @@
 #include <vector>
 
 #include "dgwarp/methods/dg_idw.hpp"
+#include "dgwarp/methods/method.hpp"
 
 namespace dgwarp {
 
@@ -48,5 +53,16 @@ std::vector<std::byte> with_recomputed_plan_checksum(std::span<const std::byte> 
 /// or another boundary set.
 DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path, std::span<const double> points,
                            const BoundarySet& boundary);
+
+/// Any savable plan (DG-IDW, DG-harmonic), atomically. Throws Error for a
+/// method whose plans cannot be saved, IoError when the file cannot be written.
+void save_plan(const std::filesystem::path& path, const Plan& plan);
+
+/// A plan file of either kind (told apart by its magic), checked as
+/// load_dg_idw_plan checks DG-IDW plans; with points and boundary, also
+/// check_plan_fits (MeshError for another mesh or boundary set).
+Plan load_plan(const std::filesystem::path& path);
+Plan load_plan(const std::filesystem::path& path, std::span<const double> points, const BoundarySet& boundary);
+Plan load_plan_bytes(std::span<const std::byte> bytes, const std::string& name);
 
 }  // namespace dgwarp

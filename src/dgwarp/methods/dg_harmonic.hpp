@@ -169,6 +169,10 @@ DgHarmonicStepReport deform_dg_harmonic(const DgHarmonicPlan& plan, std::span<co
 /// Bytes held by the plan's arrays.
 std::size_t plan_bytes(const DgHarmonicPlan& plan);
 
+/// Throws MeshError when `plan` was not built for these points and boundary
+/// set (as check_plan_fits for DG-IDW plans).
+void check_plan_fits(const DgHarmonicPlan& plan, std::span<const double> points, const BoundarySet& boundary);
+
 /// Throws Error when an option is out of range (naming it).
 void check_dg_harmonic_options(const DgHarmonicOptions& options);
 

@@ -347,6 +347,10 @@ std::size_t factor_bytes(const HarmonicFactors& f) {
 }
 }  // namespace
 
+void check_plan_fits(const DgHarmonicPlan& plan, std::span<const double> points, const BoundarySet& boundary) {
+    check_fingerprint(plan.mesh, plan.dim, plan.boundary_nodes.size(), points, boundary);
+}
+
 std::size_t plan_bytes(const DgHarmonicPlan& p) {
     return sizeof(DgHarmonicPlan) + bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) +
            bytes_of(p.vertex_motion) + bytes_of(p.shared_offsets) + bytes_of(p.shared_members) +

@@ -20,17 +20,7 @@ std::size_t plan_bytes(const DgIdwPlan& plan) {
 }
 
 void check_plan_fits(const DgIdwPlan& plan, std::span<const double> points, const BoundarySet& boundary) {
-    const MeshFingerprint f = mesh_fingerprint(plan.dim, points, boundary);
-    if (f.num_points != plan.mesh.num_points)
-        throw MeshError("the plan was made for another mesh (" + std::to_string(plan.mesh.num_points) +
-                        " points vs " + std::to_string(f.num_points) + " in this mesh)");
-    if (f.points_hash != plan.mesh.points_hash)
-        throw MeshError("the plan was made for another mesh: same number of points (" +
-                        std::to_string(f.num_points) + ") but different coordinates");
-    if (f.boundary_hash != plan.mesh.boundary_hash)
-        throw MeshError("the plan was made for another boundary set: same mesh, but different boundary nodes "
-                        "or moving flags (" + std::to_string(plan.boundary_nodes.size()) + " boundary nodes vs " +
-                        std::to_string(boundary.nodes.size()) + ")");
+    check_fingerprint(plan.mesh, plan.dim, plan.boundary_nodes.size(), points, boundary);
 }
 
 }  // namespace dgwarp

@@ -1,5 +1,8 @@
 #include "dgwarp/methods/mesh_fingerprint.hpp"
 
+#include <string>
+
+#include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
 
 namespace dgwarp {
@@ -11,6 +14,21 @@ MeshFingerprint mesh_fingerprint(int dim, std::span<const double> points, const 
     f.boundary_hash = hash64_of(std::span<const NodeId>(boundary.nodes),
                                 hash64_of(std::span<const std::uint8_t>(boundary.moving)));
     return f;
+}
+
+void check_fingerprint(const MeshFingerprint& made_for, int dim, std::size_t plan_boundary_nodes,
+                       std::span<const double> points, const BoundarySet& boundary) {
+    const MeshFingerprint f = mesh_fingerprint(dim, points, boundary);
+    if (f.num_points != made_for.num_points)
+        throw MeshError("the plan was made for another mesh (" + std::to_string(made_for.num_points) +
+                        " points vs " + std::to_string(f.num_points) + " in this mesh)");
+    if (f.points_hash != made_for.points_hash)
+        throw MeshError("the plan was made for another mesh: same number of points (" +
+                        std::to_string(f.num_points) + ") but different coordinates");
+    if (f.boundary_hash != made_for.boundary_hash)
+        throw MeshError("the plan was made for another boundary set: same mesh, but different boundary nodes "
+                        "or moving flags (" + std::to_string(plan_boundary_nodes) + " boundary nodes vs " +
+                        std::to_string(boundary.nodes.size()) + ")");
 }
 
 }  // namespace dgwarp

@@ -19,4 +19,11 @@ struct MeshFingerprint {
 /// The fingerprint of `points` (num_points × dim, row-major) and `boundary`.
 MeshFingerprint mesh_fingerprint(int dim, std::span<const double> points, const BoundarySet& boundary);
 
+/// Throws MeshError when a plan made for `made_for` (dim-D, with
+/// `plan_boundary_nodes` boundary nodes) does not fit these points and
+/// boundary set ("the plan was made for another mesh (N points vs M)", the
+/// same count with other coordinates, or another boundary set).
+void check_fingerprint(const MeshFingerprint& made_for, int dim, std::size_t plan_boundary_nodes,
+                       std::span<const double> points, const BoundarySet& boundary);
+
 }  // namespace dgwarp
