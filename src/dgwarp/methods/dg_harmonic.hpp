@@ -5,11 +5,12 @@
 //    chosen with a spacing that grows away from the walls (coarse_points.hpp),
 //    and the Delaunay triangulation of all of them (the "coarse graph"). On
 //    it, two P1 finite-element Laplacians with a conductivity per simplex,
-//    factorised once: one for the translation (conductivity size^-3: stiff
-//    where cells are small, so the strain goes where cells are large), one
-//    for the rotation (conductivity 1, times a rigid-zone factor near the
-//    moving boundary: the rotation angle's drop times the lever arm is the
-//    shear, and it is spread evenly away from the body).
+//    factorised once: one for the translation (conductivity size^-3 in 2D,
+//    size^-2.5 in 3D: stiff where cells are small, so the strain goes where
+//    cells are large), one for the rotation (2D: conductivity 1 times a
+//    rigid-zone factor near the moving body, since the rotation angle's drop
+//    times the lever arm is the shear; 3D: the translation's, so one factor
+//    serves both).
 //  * Every step, the motion (METHODS.md's t, w and centre c) is carried from
 //    the boundary vertices to the coarse interior vertices by the two
 //    harmonic solves (Dirichlet data on the boundary; a forward and a
@@ -54,9 +55,9 @@ struct DgHarmonicOptions {
     /// size^-translation_exponent for the translation, size^-rotation_exponent
     /// for the rotation (times the rigid-zone factor); size is the simplex's
     /// mean edge length. Prepare time. A negative value takes the
-    /// dimension's default (rotation: 0 in 2D, 3 in 3D; docs/dg-harmonic.md
-    /// has the measurements).
-    double translation_exponent = 3.0;
+    /// dimension's default (translation: 3 in 2D, 2.5 in 3D; rotation: 0 in
+    /// 2D, 2.5 in 3D; docs/dg-harmonic.md has the measurements).
+    double translation_exponent = -1;
     double rotation_exponent = -1;
     /// Rigid zone of the rotation: a simplex closer to the moving boundary
     /// than rho = min(rigid_zone D, rigid_gap d_s) is stiffened by

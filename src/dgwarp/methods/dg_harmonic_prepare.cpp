@@ -253,8 +253,8 @@ void check_dg_harmonic_options(const DgHarmonicOptions& options) {
 
 DgHarmonicOptions resolved_options(const DgHarmonicOptions& options, int dim) {
     DgHarmonicOptions o = options;
-    if (o.translation_exponent < 0) o.translation_exponent = 3;
-    if (o.rotation_exponent < 0) o.rotation_exponent = dim == 2 ? 0 : 3;
+    if (o.translation_exponent < 0) o.translation_exponent = dim == 2 ? 3 : 2.5;
+    if (o.rotation_exponent < 0) o.rotation_exponent = dim == 2 ? 0 : 2.5;
     if (o.rigid_zone < 0) o.rigid_zone = dim == 2 ? 0.25 : 0;
     if (o.rigid_gap < 0) o.rigid_gap = 0.5;
     return o;
