@@ -335,10 +335,6 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
 }
 
 namespace {
-template <class T>
-std::size_t bytes_of(const std::vector<T>& v) {
-    return v.size() * sizeof(T);
-}
 std::size_t factor_bytes(const HarmonicFactors& f) {
     std::size_t n = bytes_of(f.perm) + bytes_of(f.l_start) + bytes_of(f.l_row) + bytes_of(f.coupling_start) +
                     bytes_of(f.coupling_vertex);

@@ -3,15 +3,9 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
 
 namespace dgwarp {
-
-namespace {
-template <class T>
-std::size_t bytes_of(const std::vector<T>& v) {
-    return v.size() * sizeof(T);
-}
-}  // namespace
 
 std::size_t plan_bytes(const DgIdwPlan& plan) {
     return sizeof(DgIdwPlan) + bytes_of(plan.boundary_nodes) + bytes_of(plan.boundary_moving) +

@@ -75,13 +75,6 @@ DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& 
     return plan;
 }
 
-namespace {
-template <class T>
-std::size_t bytes_of(const std::vector<T>& v) {
-    return v.size() * sizeof(T);
-}
-}  // namespace
-
 std::size_t plan_bytes(const DgmPlan& plan) {
     return sizeof(DgmPlan) + bytes_of(plan.boundary_nodes) + bytes_of(plan.boundary_moving) +
            bytes_of(plan.simplices) + bytes_of(plan.vertex_motion) + bytes_of(plan.shared_offsets) +

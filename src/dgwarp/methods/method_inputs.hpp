@@ -26,6 +26,12 @@ std::size_t check_points_and_boundary(std::string_view method, int dim, std::spa
 std::vector<NodeId> split_volume_nodes(std::size_t num_points, const BoundarySet& boundary,
                                        std::vector<std::int32_t>& node_simplex);
 
+/// Bytes held by a vector's elements (for the plans' memory figures).
+template <class T>
+std::size_t bytes_of(const std::vector<T>& v) {
+    return v.size() * sizeof(T);
+}
+
 /// Checks one step's arrays against a plan of `num_points` points of `dim`
 /// coordinates and `boundary_nodes`: points and out hold num_points × dim
 /// values, motion one entry per boundary node, every motion finite. Throws
