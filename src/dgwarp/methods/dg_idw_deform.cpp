@@ -7,6 +7,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
@@ -146,26 +147,7 @@ void check_dg_idw_options(const DgIdwOptions& options) {
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
                               const BoundaryMotion& motion, std::span<double> out, const DgIdwOptions& options) {
     check_dg_idw_options(options);
-    const auto expected = static_cast<std::size_t>(plan.num_points()) * static_cast<std::size_t>(plan.dim);
-    if (points.size() != expected)
-        throw MeshError("DG-IDW: the plan is for " + std::to_string(plan.num_points()) + " points (" +
-                        std::to_string(expected) + " coordinates), got " + std::to_string(points.size()) +
-                        " coordinates");
-    if (out.size() != expected)
-        throw MeshError("DG-IDW: the output array holds " + std::to_string(out.size()) + " values, expected " +
-                        std::to_string(expected) + " (" + std::to_string(plan.num_points()) + " points)");
-    if (motion.size() != plan.boundary_nodes.size())
-        throw MeshError("DG-IDW: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
-                        std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
-
-    for (std::size_t b = 0; b < motion.size(); ++b) {
-        const NodeMotion& m = motion[b];
-        for (int d = 0; d < 3; ++d)
-            if (!std::isfinite(m.translation[d]) || !std::isfinite(m.rotation[d]) || !std::isfinite(m.center[d]))
-                throw MeshError("DG-IDW: the motion of boundary node " + std::to_string(plan.boundary_nodes[b]) +
-                                    " (boundary index " + std::to_string(b) + ") is not finite",
-                                {}, plan.boundary_nodes[b]);
-    }
+    check_step_arrays("DG-IDW", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
     const double l = options.length_scale > 0 ? options.length_scale : plan.auto_length_scale;
     const StepConstants sc{1.0 / (options.a_translation * l), 1.0 / (options.a_rotation * l)};
     // The interpolated rotation vector is a combination of the moving nodes'

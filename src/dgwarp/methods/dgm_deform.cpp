@@ -6,6 +6,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/graph/simplex_orientation.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/dgm_detail.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
@@ -182,17 +183,7 @@ SubstepResult map_in_increments(const DgmPlan& plan, std::span<const double> poi
 
 void check_sizes(const DgmPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
                  std::span<double> out) {
-    const auto expected = static_cast<std::size_t>(plan.num_points()) * static_cast<std::size_t>(plan.dim);
-    if (points.size() != expected)
-        throw MeshError("DGM: the plan is for " + std::to_string(plan.num_points()) + " points (" +
-                        std::to_string(expected) + " coordinates), got " + std::to_string(points.size()) +
-                        " coordinates");
-    if (out.size() != expected)
-        throw MeshError("DGM: the output array holds " + std::to_string(out.size()) + " values, expected " +
-                        std::to_string(expected) + " (" + std::to_string(plan.num_points()) + " points)");
-    if (motion.size() != plan.boundary_nodes.size())
-        throw MeshError("DGM: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
-                        std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
+    check_step_arrays("DGM", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/progress.hpp"
 #include "dgwarp/core/simd_clones.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/idw.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
@@ -298,17 +299,7 @@ void deform_volume(const IdwPlan& plan, const StepArrays& a, const IdwOptions& o
 void deform_idw(const IdwPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
                 std::span<double> out, const IdwOptions& options, const ProgressFn& progress) {
     check_idw_options(options);
-    const auto expected = static_cast<std::size_t>(plan.num_points) * static_cast<std::size_t>(plan.dim);
-    if (points.size() != expected)
-        throw MeshError("IDW: the plan is for " + std::to_string(plan.num_points) + " points (" +
-                        std::to_string(expected) + " coordinates), got " + std::to_string(points.size()) +
-                        " coordinates");
-    if (out.size() != expected)
-        throw MeshError("IDW: the output array holds " + std::to_string(out.size()) + " values, expected " +
-                        std::to_string(expected) + " (" + std::to_string(plan.num_points) + " points)");
-    if (motion.size() != plan.boundary_nodes.size())
-        throw MeshError("IDW: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
-                        std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
+    check_step_arrays("IDW", plan.num_points, plan.dim, plan.boundary_nodes, points, motion, out);
 
     const double l = options.length_scale > 0 ? options.length_scale : plan.auto_length_scale;
     const StepArrays a = step_arrays(plan, motion, options, l);

@@ -1,4 +1,5 @@
 // prepare_rbf, solve_rbf, deform_rbf: the RBF method's steps (rbf.hpp).
+#include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/rbf.hpp"
 
 #include <unistd.h>
@@ -82,17 +83,7 @@ void make_centres(std::span<const double> points, RbfPlan& plan) {
 
 void check_sizes(const RbfPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
                  std::span<double> out) {
-    const auto expected = static_cast<std::size_t>(plan.num_points) * static_cast<std::size_t>(plan.dim);
-    if (points.size() != expected)
-        throw MeshError("RBF: the plan is for " + std::to_string(plan.num_points) + " points (" +
-                        std::to_string(expected) + " coordinates), got " + std::to_string(points.size()) +
-                        " coordinates");
-    if (out.size() != expected)
-        throw MeshError("RBF: the output array holds " + std::to_string(out.size()) + " values, expected " +
-                        std::to_string(expected) + " (" + std::to_string(plan.num_points) + " points)");
-    if (motion.size() != plan.boundary_nodes.size())
-        throw MeshError("RBF: the motion has " + std::to_string(motion.size()) + " entries but the plan has " +
-                        std::to_string(plan.boundary_nodes.size()) + " boundary nodes");
+    check_step_arrays("RBF", plan.num_points, plan.dim, plan.boundary_nodes, points, motion, out);
 }
 
 // max_b |s(x_b) - d_b| for the coefficients c.
