@@ -52,8 +52,8 @@ void run_demo(const DemoArgs& a) {
     const auto orientation = cell_orientations(mesh);
     const std::vector<double> original_quality = cell_qualities(mesh, orientation);
 
-    std::cout << "\nmethod      prepare     deform     min quality  mean quality  inverted\n";
-    std::printf("%-10s  %9s  %9s  %11.4f  %12.4f  %8d\n", "original", "", "", summarize_quality(original_quality).min,
+    std::cout << "\nmethod       prepare     deform     min quality  mean quality  inverted\n";
+    std::printf("%-11s  %9s  %9s  %11.4f  %12.4f  %8d\n", "original", "", "", summarize_quality(original_quality).min,
                 summarize_quality(original_quality).mean, 0);
     Mesh deformed = mesh;
     std::vector<double> dg_idw_points, dg_idw_quality;
@@ -67,7 +67,7 @@ void run_demo(const DemoArgs& a) {
             const double deform_seconds = sw.lap();
             const std::vector<double> q = cell_qualities(deformed, orientation);
             const QualitySummary s = summarize_quality(q);
-            std::printf("%-10s  %9s  %9s  %11.4f  %12.4f  %8lld\n", std::string(method_name(m)).c_str(),
+            std::printf("%-11s  %9s  %9s  %11.4f  %12.4f  %8lld\n", std::string(method_name(m)).c_str(),
                         milliseconds(prepare_seconds).c_str(), milliseconds(deform_seconds).c_str(), s.min, s.mean,
                         static_cast<long long>(s.inverted));
             if (m == Method::dg_idw) {
@@ -75,7 +75,7 @@ void run_demo(const DemoArgs& a) {
                 dg_idw_quality = q;
             }
         } catch (const InvalidResultError& e) {
-            std::printf("%-10s  %s\n", std::string(method_name(m)).c_str(), e.what());
+            std::printf("%-11s  %s\n", std::string(method_name(m)).c_str(), e.what());
         }
     }
 
