@@ -300,8 +300,15 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
            g.vertex_nodes[g.vertex_offsets[plan.num_boundary_vertices]] < nb_index)
         ++plan.num_boundary_vertices;
     plan.vertex_motion = std::move(vm.vertex_motion);
-    plan.shared_offsets = std::move(vm.shared_offsets);
-    plan.shared_members = std::move(vm.shared_members);
+    // Shared groups of boundary points only: two coarse volume nodes at the
+    // same coordinates are one interior vertex and have no motion to share.
+    for (std::size_t grp = 0; grp + 1 < vm.shared_offsets.size(); ++grp) {
+        const std::int32_t first = vm.shared_members[vm.shared_offsets[grp]];
+        if (first >= nb_index) continue;
+        for (std::int32_t k = vm.shared_offsets[grp]; k < vm.shared_offsets[grp + 1]; ++k)
+            if (vm.shared_members[k] < nb_index) plan.shared_members.push_back(vm.shared_members[k]);
+        plan.shared_offsets.push_back(static_cast<std::int32_t>(plan.shared_members.size()));
+    }
     plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
     plan.stats.graph_vertices = static_cast<std::int64_t>(g.num_vertices());
     plan.stats.coarse_interior = plan.num_vertices() - plan.num_boundary_vertices;
