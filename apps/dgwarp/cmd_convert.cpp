@@ -21,10 +21,16 @@ struct ConvertArgs {
 
 void run_convert(const ConvertArgs& a) {
     ProgressLine progress(!a.quiet);
-    const Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input));
+    MeshExtras extras;
+    const Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input), extras);
     progress.phase("writing " + a.output);
     WriteOptions options;
     options.gmsh_version = a.gmsh_version;
+    options.extras = &extras;  // SU2 to SU2 keeps the other zones, FFD boxes, periodic data
+    if (const std::string w = dropped_extras_warning(extras, a.input, a.output); !w.empty() && !a.quiet) {
+        progress.clear();
+        std::cerr << "warning: " << w << "\n";
+    }
     write_mesh(a.output, mesh, {}, options);
     progress.clear();
     if (!a.quiet) std::cout << a.input << " -> " << a.output << ": " << describe_mesh(mesh) << "\n";

@@ -37,7 +37,8 @@ struct FrameResult {
     QualitySummary quality;
     RatioSummary ratio;
     StepReport step;
-    std::vector<std::int64_t> worst_inverted;
+    std::int64_t inverted_by_motion = 0;       // cells valid in the input and inverted now (what makes a frame invalid)
+    std::vector<std::int64_t> worst_inverted;  // the worst of those
     std::optional<UntangleReport> untangled;  // when --untangle found inverted cells to repair
     double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
     std::vector<std::string> warnings;
@@ -49,6 +50,7 @@ struct MethodRun {
     std::vector<FrameResult> frames;
     std::string error;  // why the method stopped (invalid graph, too large, ...), "" if it ran
     bool invalid = false;  // a frame had inverted cells, or the method could not produce a valid mesh
+    bool failed = false;   // the method stopped with an error before producing a mesh (with --method all)
 };
 
 std::string cell_list(const std::vector<std::int64_t>& cells) {
@@ -74,6 +76,7 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)},
             {"quality", quality_json(f.quality)},
             {"ratio", ratio_json(f.ratio)},
+            {"inverted_by_motion", f.inverted_by_motion},
             {"worst_inverted_cells", f.worst_inverted},
             {"substeps", f.step.substeps},
             {"invalid_graph_simplices", f.step.invalid_graph_simplices},
@@ -102,6 +105,9 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
               << f.quality.mean << "\n";
     std::cout << "  inverted          " << std::setw(10) << in.original_quality.inverted << "  " << std::setw(10)
               << f.quality.inverted << "\n";
+    if (in.original_quality.inverted > 0)
+        std::cout << "  inverted by the motion " << f.inverted_by_motion << " (the other "
+                  << f.quality.inverted - f.inverted_by_motion << " were already inverted or degenerate in the input)\n";
     std::cout << "ratio after/before, per cell: min " << f.ratio.min << " (cell " << f.ratio.worst_cell
               << "), mean " << f.ratio.mean << "\n";
     std::cout.unsetf(std::ios::floatfield);
@@ -147,6 +153,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         if (!several) throw;
         run.planned.method = method;
         run.error = e.what();
+        run.invalid = run.failed = true;  // no mesh: the run is not valid
         return run;
     }
     if (text && !several) print_plan(std::cout, in, run.planned);
@@ -154,6 +161,10 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         for (const auto& w : plan_warnings(run.planned))
             std::cerr << "warning: " << method_name(method) << ": " << w << "\n";
     const auto out = method_output(a.output, method, several);
+    if (const std::string w = dropped_extras_warning(in.extras, in.args.mesh, out); !w.empty() && !a.quiet)
+        std::cerr << "warning: " << w << "\n";
+    WriteOptions write_options;
+    write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
     Mesh deformed = in.mesh;
     for (std::size_t k = 0; k < frames; ++k) {
         FrameResult f;
@@ -173,6 +184,11 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             run.error = e.what();
             run.invalid = true;
             break;
+        } catch (const Error& e) {
+            if (!several) throw;
+            run.error = e.what();
+            run.invalid = run.failed = true;
+            break;
         }
         f.deform_seconds = sw.lap();
         for (auto& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
@@ -180,7 +196,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             progress.phase(std::string(method_name(method)) + ": untangling");
             UntangleOptions options;
             options.target_quality = a.untangle_target;
-            const UntangleReport u = untangle(deformed.dim, deformed.cells, in.orientation, in.boundary.boundary.nodes,
+            const UntangleReport u = untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes,
                                               deformed.points, options);
             if (u.below_target_before > 0) f.untangled = u;
             f.untangle_seconds = sw.lap();
@@ -189,12 +205,15 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
         f.quality = summarize_quality(quality);
         f.ratio = summarize_ratios(ratio);
-        f.worst_inverted = worst_inverted_cells(quality, 10);
+        // Cells already inverted or degenerate in the input are not the motion's doing.
+        const std::vector<std::int64_t> folded = newly_inverted_cells(quality, in.original_cell_quality);
+        f.inverted_by_motion = static_cast<std::int64_t>(folded.size());
+        f.worst_inverted = worst_cells(folded, quality, 10);
         f.quality_seconds = sw.lap();
-        const bool invalid = f.quality.inverted > 0;
+        const bool invalid = f.inverted_by_motion > 0;
         if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, k, frames);
-            write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, quality, ratio));
+            write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, quality, ratio), write_options);
             f.output = path.string();
             f.write_seconds = sw.lap();
         }
@@ -212,7 +231,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         if (invalid) {
             run.invalid = true;
             const FrameResult& bad = run.frames.back();
-            run.error = std::to_string(bad.quality.inverted) + " inverted cell" + (bad.quality.inverted == 1 ? "" : "s") +
+            run.error = std::to_string(bad.inverted_by_motion) + " inverted cell" + (bad.inverted_by_motion == 1 ? "" : "s") +
                         " in frame " + std::to_string(bad.frame) + " (worst: " + cell_list(bad.worst_inverted) + ")";
             if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
         }
@@ -230,21 +249,23 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
     std::cout << line;
     for (const MethodRun& r : runs) {
         const std::string name(method_name(r.planned.method));
+        // The status last and whole: an error message is never cut.
         if (r.frames.empty()) {
-            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11s  %12s  %8s  %9s   %s\n", name.c_str(),
-                          r.error.empty() ? "" : "-", "-", "-", "-", "-", "-", r.error.c_str());
+            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11s  %12s  %8s  %9s   ", name.c_str(),
+                          r.error.empty() ? "" : "-", "-", "-", "-", "-", "-");
+            std::cout << line << (r.failed ? "failed: " : "") << r.error << "\n";
         } else {
             const FrameResult& f = r.frames.back();
             double deform_seconds = 0;
             for (const auto& fr : r.frames) deform_seconds += fr.deform_seconds;
             std::string status = r.error.empty() ? "ok" : r.error;
             if (f.step.substeps > 1) status += " (" + std::to_string(f.step.substeps) + " DGM sub-steps)";
-            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11.4f  %12.4f  %8lld  %9.4f   %s\n", name.c_str(),
+            if (r.failed) status = "failed: " + status;
+            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11.4f  %12.4f  %8lld  %9.4f   ", name.c_str(),
                           milliseconds(r.planned.prepare_seconds).c_str(), milliseconds(deform_seconds).c_str(),
-                          f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted), f.ratio.min,
-                          status.c_str());
+                          f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted), f.ratio.min);
+            std::cout << line << status << "\n";
         }
-        std::cout << line;
     }
 }
 
@@ -265,6 +286,7 @@ void run_deform(const DeformArgs& a) {
 
     if (a.json) {
         nlohmann::json j = inputs_json(in, "deform");
+        if (!runs[0].planned.plan_file.empty()) j["options"] = options_json(runs[0].planned.options, true);
         j["output"] = a.output;
         for (const auto& r : runs)
             for (const auto& w : plan_warnings(r.planned))
@@ -279,19 +301,34 @@ void run_deform(const DeformArgs& a) {
         j["valid"] = std::none_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.invalid; });
         std::cout << j.dump(2) << "\n";
     }
-    std::int64_t invalid_runs = 0;
-    std::string what, advice;
+    // A method that inverted cells or failed makes the run invalid (exit 3);
+    // --allow-invalid writes inverted meshes, but a failed method has none.
+    std::int64_t invalid_runs = 0, failed_runs = 0;
+    std::string what, failed, advice;
     for (const MethodRun& r : runs)
         if (r.invalid) {
             ++invalid_runs;
-            what += (what.empty() ? "" : "; ") + std::string(method_name(r.planned.method)) + ": " + r.error;
-            advice += (advice.empty() ? "" : "; ") + invalid_result_advice(r.planned.method);
+            const std::string line = std::string(method_name(r.planned.method)) + (r.failed ? " failed: " : ": ") + r.error;
+            what += (what.empty() ? "" : "; ") + line;
+            if (r.failed) {
+                ++failed_runs;
+                failed += (failed.empty() ? "" : "; ") + line;
+            } else {
+                advice += (advice.empty() ? "" : "; ") + invalid_result_advice(r.planned.method);
+            }
         }
     if (invalid_runs > 0) {
+        const std::string others = several && invalid_runs < static_cast<std::int64_t>(runs.size())
+                                       ? " (the other methods' files were written)"
+                                       : "";
+        if (failed_runs == invalid_runs)  // nothing inverted: --allow-invalid would not help
+            throw InvalidResultError(what + others, invalid_runs);
         if (!a.allow_invalid)
-            throw InvalidResultError(what + ". Nothing was written for an invalid frame. " + advice +
+            throw InvalidResultError(what + ". Nothing was written for an invalid frame" + others + ". " + advice +
                                          "; or --allow-invalid to write it anyway",
                                      invalid_runs);
+        if (failed_runs > 0)
+            throw InvalidResultError(failed + ". The other methods' files were written (--allow-invalid)", failed_runs);
         if (!a.quiet) std::cerr << "warning: " << what << "; written anyway (--allow-invalid)\n";
     }
 }

@@ -51,13 +51,16 @@ void add_prepare_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "prepare", "Build a dg-idw or dg-harmonic plan (graph, node location, weights or factor) once and save it");
     add_setup_options(cmd, args->setup);
+    cmd->get_option("--method")->description("Method of the plan: dg-idw or dg-harmonic (only these plans can be saved)");
     cmd->add_option("-o,--output", args->output, "Plan file to write")->required();
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
         "The plan depends on the mesh and on which markers move (from the motion file), not on the\n"
         "motion's values: reuse it for every step with 'dgwarp deform --plan' (the plan's method is used).\n"
-        "Plans can be saved for --method dg-idw (a and L stay deform options) and dg-harmonic.\n\n"
+        "Plans can be saved for --method dg-idw and dg-harmonic. The plan keeps the method's options\n"
+        "(--a-translation, --a-rotation, --length-scale, --dg-idw-weights; --harmonic-*): deform --plan uses\n"
+        "them, and refuses a different value given there.\n\n"
         "Examples:\n"
         "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
         "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");

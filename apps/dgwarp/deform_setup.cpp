@@ -7,6 +7,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
@@ -41,6 +42,43 @@ std::string method_list() {
     return s;
 }
 
+// The shortest text that reads back to `value` (as the writers print numbers).
+std::string number(double value) {
+    std::ostringstream s;
+    write_number(s, value);
+    return s.str();
+}
+
+std::string length_scale_text(double l) { return l == 0 ? "auto" : number(l); }
+
+// A loaded plan fixes its method's options: one given on the command line
+// that differs from the plan's is a mistake, not silently dropped.
+void refuse_conflict(const SetupArgs& args, const std::string& plan_file, const std::string& flag, bool differs,
+                     const std::string& planned) {
+    if (args.given.count(flag) && differs)
+        throw CLI::ValidationError(flag, plan_file + " was prepared with " + flag + " " + planned +
+                                             "; prepare it again with the option, or drop it");
+}
+
+// The method each method option belongs to.
+Method option_method(const std::string& flag) {
+    if (flag.starts_with("--dgm-")) return Method::dgm;
+    if (flag.starts_with("--idw-")) return Method::idw;
+    if (flag.starts_with("--rbf-")) return Method::rbf;
+    if (flag.starts_with("--harmonic-")) return Method::dg_harmonic;
+    return Method::dg_idw;  // --a-translation, --a-rotation, --length-scale, --dg-idw-weights
+}
+
+// An option of another method than the one that runs would be silently
+// ignored: a usage error instead (with --method all, every option applies).
+void refuse_other_methods_options(const SetupArgs& args, Method method) {
+    if (args.method == "all") return;
+    for (const std::string& flag : args.given)
+        if (option_method(flag) != method)
+            throw CLI::ValidationError(flag, "is an option of " + std::string(method_name(option_method(flag))) +
+                                                 "; it does nothing with " + std::string(method_name(method)));
+}
+
 std::int64_t moving_count(const BoundarySet& b) {
     std::int64_t n = 0;
     for (auto m : b.moving) n += m;
@@ -50,6 +88,10 @@ std::int64_t moving_count(const BoundarySet& b) {
 }  // namespace
 
 void add_setup_options(CLI::App* cmd, SetupArgs& a) {
+    // Records that a method option was given (a plan file decides the others).
+    const auto given = [&a](std::string flag) {
+        return [&a, flag = std::move(flag)](const std::string&) { a.given.insert(flag); };
+    };
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
     cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
@@ -59,43 +101,54 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("--threads", a.threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::PositiveNumber)
+        ->each(given("--a-translation"));
     cmd->add_option("--a-rotation", a.a_rotation, "DG-IDW weight a of the rotation (paper: 1.4)")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::PositiveNumber)
+        ->each(given("--a-rotation"));
     cmd->add_option("--length-scale", a.length_scale,
                     "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or "
                     "'auto' (the moving boundary's diagonal, reduced so that max(a) L fits in the gap between the "
                     "moving and the static boundary; docs/dg-idw-length-scale.md)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->each(given("--length-scale"));
     cmd->add_option("--dg-idw-weights", a.weights,
                     "DG-IDW corner weights: 'paper' (default; the paper's formula) or 'continuous' (each weight "
                     "times the node's barycentric coordinate: no jump across graph faces; docs/dg-idw.md)")
-        ->check(CLI::IsMember({"paper", "continuous"}));
+        ->check(CLI::IsMember({"paper", "continuous"}))
+        ->each(given("--dg-idw-weights"));
     cmd->add_flag("--dgm-substep", a.dgm_substep,
-                  "DGM: when the moved graph is invalid, split the motion into increments (default: fail)");
+                  "DGM: when the moved graph is invalid, split the motion into increments (default: fail)")
+        ->each(given("--dgm-substep"));
     cmd->add_option("--idw-moving-exponent", a.idw_exponent_moving, "IDW: exponent c_d of the moving nodes' distances")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 16.0));
+        ->check(CLI::Range(0.0, 16.0))
+        ->each(given("--idw-moving-exponent"));
     cmd->add_option("--idw-static-exponent", a.idw_exponent_static, "IDW: exponent c_s of the static nodes' distances")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 16.0));
+        ->check(CLI::Range(0.0, 16.0))
+        ->each(given("--idw-static-exponent"));
     cmd->add_option("--rbf-radius", a.rbf_radius, "RBF: Wendland C2 support radius (0 = global: dense solve)")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::NonNegativeNumber)
+        ->each(given("--rbf-radius"));
     cmd->add_option("--rbf-greedy", a.rbf_greedy,
                     "RBF: greedy data reduction to this boundary error (mesh units; 0 = all centres)")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::NonNegativeNumber)
+        ->each(given("--rbf-greedy"));
     cmd->add_option("--harmonic-wall-spacing", a.harmonic_wall_spacing,
                     "DG-harmonic: coarse-level spacing next to a wall, in boundary-node spacings (smaller: a finer "
                     "coarse level, slower steps; docs/dg-harmonic.md)")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::PositiveNumber)
+        ->each(given("--harmonic-wall-spacing"));
     cmd->add_option("--harmonic-growth", a.harmonic_growth,
                     "DG-harmonic: coarse-level spacing away from the walls, as a fraction of the wall distance")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::PositiveNumber)
+        ->each(given("--harmonic-growth"));
 }
 
 std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
@@ -127,16 +180,25 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
     in.args = args;
     Stopwatch sw;
     progress.phase("reading " + args.mesh);
-    in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh));
+    in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
     in.spec = read_motion_file(args.motion);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     in.boundary = resolve_boundary(in.mesh, in.spec);
     in.resolve_seconds = sw.lap();
     progress.phase("measuring the original mesh's quality");
-    in.orientation = cell_orientations(in.mesh);
+    in.own_orientation = cell_orientations(in.mesh);
+    in.orientation = dominant_orientations(in.mesh);
     in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
     in.original_quality = summarize_quality(in.original_cell_quality);
+    if (const std::int64_t bad = in.original_quality.inverted; bad > 0)
+        in.boundary.warnings.push_back(
+            std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
+            " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
+            std::to_string(in.original_quality.worst_cell) +
+            "): they are counted as inverted before and after, but not blamed on the motion, and do not make a "
+            "step invalid");
+
     in.quality_seconds = sw.lap();
     progress.clear();
     return in;
@@ -157,29 +219,32 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
                                                      " plan; it cannot be used with --method " +
                                                      std::string(method_name(method)));
         p.method = planned;
+        // The plan's options are the ones used; one given here that differs is a mistake.
+        const MethodOptions& asked = p.options;
         if (const auto* d = std::get_if<DgIdwPlan>(&loaded)) {
-            if (!in.args.weights.empty() && d->weighting != p.options.dg_idw.weighting)
-                throw CLI::ValidationError("--dg-idw-weights", plan_file + " was prepared with " +
-                                                                   weighting_name(d->weighting) +
-                                                                   " weights; prepare it again with --dg-idw-weights " +
-                                                                   in.args.weights + ", or drop the option");
-            p.options.dg_idw.weighting = d->weighting;
+            const DgIdwOptions& o = d->options;
+            refuse_conflict(in.args, plan_file, "--a-translation", asked.dg_idw.a_translation != o.a_translation,
+                            number(o.a_translation));
+            refuse_conflict(in.args, plan_file, "--a-rotation", asked.dg_idw.a_rotation != o.a_rotation,
+                            number(o.a_rotation));
+            refuse_conflict(in.args, plan_file, "--length-scale", asked.dg_idw.length_scale != o.length_scale,
+                            length_scale_text(o.length_scale));
+            refuse_conflict(in.args, plan_file, "--dg-idw-weights", asked.dg_idw.weighting != o.weighting,
+                            weighting_name(o.weighting));
+            p.options.dg_idw = o;
         }
         if (const auto* h = std::get_if<DgHarmonicPlan>(&loaded)) {
-            // Prepare-time options: the plan's; one given here that differs is a mistake.
-            const DgHarmonicOptions defaults;
-            for (const auto& [flag, given, planned_value, default_value] :
-                 {std::tuple{"--harmonic-wall-spacing", in.args.harmonic_wall_spacing, h->options.wall_spacing,
-                             defaults.wall_spacing},
-                  std::tuple{"--harmonic-growth", in.args.harmonic_growth, h->options.growth, defaults.growth}})
-                if (given != default_value && given != planned_value)
-                    throw CLI::ValidationError(flag, plan_file + " was prepared with " + flag + " " +
-                                                         CLI::detail::to_string(planned_value) +
-                                                         "; prepare it again, or drop the option");
-            p.options.dg_harmonic = h->options;
+            const DgHarmonicOptions& o = h->options;
+            refuse_conflict(in.args, plan_file, "--harmonic-wall-spacing",
+                            asked.dg_harmonic.wall_spacing != o.wall_spacing, number(o.wall_spacing));
+            refuse_conflict(in.args, plan_file, "--harmonic-growth", asked.dg_harmonic.growth != o.growth,
+                            number(o.growth));
+            p.options.dg_harmonic = o;
         }
+        refuse_other_methods_options(in.args, p.method);
         p.plan = std::move(loaded);
     } else {
+        refuse_other_methods_options(in.args, method);
         const std::string phase = "preparing " + std::string(method_name(method));
         progress.phase(phase);
         p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.boundary.boundary, p.options,
@@ -237,9 +302,22 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p) {
     for (const auto& w : plan_warnings(p)) std::cerr << "warning: " << w << "\n";
 }
 
+nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
+    return {{"a_translation", o.dg_idw.a_translation},
+            {"a_rotation", o.dg_idw.a_rotation},
+            {"length_scale", o.dg_idw.length_scale == 0 ? nlohmann::json("auto") : nlohmann::json(o.dg_idw.length_scale)},
+            {"dg_idw_weights", weights_known ? nlohmann::json(weighting_name(o.dg_idw.weighting)) : nlohmann::json(nullptr)},
+            {"dgm_substep", o.dgm.on_invalid == DgmOptions::OnInvalidGraph::substep},
+            {"idw_exponent_moving", o.idw.exponent_moving},
+            {"idw_exponent_static", o.idw.exponent_static},
+            {"rbf_radius", o.rbf.support_radius},
+            {"rbf_greedy_tolerance", o.rbf.greedy_tolerance},
+            {"harmonic_wall_spacing", o.dg_harmonic.wall_spacing},
+            {"harmonic_growth", o.dg_harmonic.growth}};
+}
+
 nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
     const auto& b = in.boundary.boundary;
-    const MethodOptions o = method_options(in.args);
     return {{"schema_version", json_schema_version},
             {"command", command},
             {"file", in.args.mesh},
@@ -250,19 +328,7 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
               {"moving_nodes", moving_count(b)},
               {"moving_markers", in.boundary.moving_markers},
               {"static_markers", in.boundary.static_markers}}},
-            {"options",
-             {{"a_translation", o.dg_idw.a_translation},
-              {"a_rotation", o.dg_idw.a_rotation},
-              {"length_scale", in.args.length_scale == "auto" ? nlohmann::json("auto")
-                                                               : nlohmann::json(o.dg_idw.length_scale)},
-              {"dg_idw_weights", in.args.weights.empty() ? nlohmann::json(nullptr) : nlohmann::json(in.args.weights)},
-              {"dgm_substep", in.args.dgm_substep},
-              {"idw_exponent_moving", o.idw.exponent_moving},
-              {"idw_exponent_static", o.idw.exponent_static},
-              {"rbf_radius", o.rbf.support_radius},
-              {"rbf_greedy_tolerance", o.rbf.greedy_tolerance},
-              {"harmonic_wall_spacing", o.dg_harmonic.wall_spacing},
-              {"harmonic_growth", o.dg_harmonic.growth}}},
+            {"options", options_json(method_options(in.args), !in.args.weights.empty())},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
             {"original_quality", quality_json(in.original_quality)},
             {"warnings", in.boundary.warnings}};
@@ -275,7 +341,7 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
     const auto* dg_idw = std::get_if<DgIdwPlan>(&p.plan);
     return {{"method", method_name(p.method)},
             {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
-            {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->weighting)) : nlohmann::json(nullptr)},
+            {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->options.weighting)) : nlohmann::json(nullptr)},
             {"graph_simplices", s.graph_simplices},
             {"outside_hull", s.outside_hull},
             {"shared_graph_vertices", s.shared_vertices},

@@ -4,9 +4,11 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
@@ -21,6 +23,7 @@ struct SetupArgs {
     std::string motion;
     std::string method = "dg-idw";  // a method name, or "all" where a command allows it
     bool method_given = false;      // --method was on the command line (else a --plan file decides)
+    std::set<std::string> given;    // the method options given on the command line ("--length-scale", ...)
     int zone = 1;
     int threads = 0;
     double a_translation = 7.0;
@@ -49,9 +52,15 @@ MethodOptions method_options(const SetupArgs& args);
 struct Inputs {
     SetupArgs args;
     Mesh mesh;
+    MeshExtras extras;  // what the mesh file holds besides the mesh (SU2: other zones, FFD boxes)
     MotionSpec spec;
     ResolvedBoundary boundary;
-    std::vector<std::int8_t> orientation;       // per cell, of the original mesh
+    /// Per cell: the orientation cells are judged by, the majority of the
+    /// original's per cell type (dominant_orientations, as `dgwarp info`
+    /// judges a mesh), so that a cell flipped in the input counts as inverted
+    /// before and after, reported as already inverted, never as the motion's.
+    std::vector<std::int8_t> orientation;
+    std::vector<std::int8_t> own_orientation;   // per cell, its own in the original (untangle keeps it)
     std::vector<double> original_cell_quality;  // per cell
     QualitySummary original_quality;
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
@@ -85,7 +94,11 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames);
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
 
 /// The JSON report's common part (docs/JSON.md).
+/// Its `options` are the command line's (options_json); with a loaded plan,
+/// the plan's are the ones used: replace them with options_json(p.options, true).
 nlohmann::json inputs_json(const Inputs& in, const std::string& command);
+/// The `options` object of the JSON reports; dg_idw_weights is null unless `weights_known`.
+nlohmann::json options_json(const MethodOptions& o, bool weights_known);
 nlohmann::json plan_json(const Inputs& in, const PlannedMethod& p);
 
 }  // namespace dgwarp::cli

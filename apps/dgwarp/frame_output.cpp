@@ -30,13 +30,12 @@ MeshFields deformation_fields(const Mesh& original, std::span<const double> new_
     return fields;
 }
 
-std::vector<std::int64_t> worst_inverted_cells(const std::vector<double>& quality, std::size_t count) {
-    std::vector<std::int64_t> bad;
-    for (std::size_t i = 0; i < quality.size(); ++i)
-        if (quality[i] <= 0) bad.push_back(static_cast<std::int64_t>(i));
-    std::stable_sort(bad.begin(), bad.end(), [&](auto a, auto b) { return quality[a] < quality[b]; });
-    if (bad.size() > count) bad.resize(count);
-    return bad;
+std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, const std::vector<double>& quality,
+                                      std::size_t count) {
+    const auto q = [&](std::int64_t c) { return quality[static_cast<std::size_t>(c)]; };
+    std::stable_sort(cells.begin(), cells.end(), [&](auto a, auto b) { return q(a) < q(b); });
+    if (cells.size() > count) cells.resize(count);
+    return cells;
 }
 
 }  // namespace dgwarp::cli

@@ -18,7 +18,8 @@ std::filesystem::path frame_path(const std::filesystem::path& out, std::size_t f
 MeshFields deformation_fields(const Mesh& original, std::span<const double> new_points,
                               const std::vector<double>& quality, const std::vector<double>& ratio);
 
-/// Up to `count` cell ids with the smallest quality among inverted cells (<= 0), worst first.
-std::vector<std::int64_t> worst_inverted_cells(const std::vector<double>& quality, std::size_t count);
+/// Up to `count` of `cells` (ids), those with the smallest quality first (stable).
+std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, const std::vector<double>& quality,
+                                      std::size_t count);
 
 }  // namespace dgwarp::cli

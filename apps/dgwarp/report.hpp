@@ -1,9 +1,11 @@
 #pragma once
 // Printing reports for the CLI, as text for people and JSON for scripts.
 #include <nlohmann/json.hpp>
+#include <filesystem>
 #include <ostream>
 #include <string>
 
+#include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 
@@ -26,6 +28,10 @@ nlohmann::json ratio_json(const RatioSummary& r);
 /// Indented text lines: min (and its cell), mean, inverted; the histogram when asked.
 void print_quality(std::ostream& out, const QualitySummary& q, bool histogram);
 void print_ratio(std::ostream& out, const RatioSummary& r);
+
+/// The warning for an output that cannot hold what the input file has besides
+/// the mesh (dropped_extras; "" when nothing is dropped).
+std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output);
 
 /// A duration for people: "12.3 ms" (two decimals below 10 ms).
 std::string milliseconds(double seconds);

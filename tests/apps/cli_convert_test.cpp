@@ -27,3 +27,34 @@ TEST(CliConvert, RoundTripsThroughEveryFormatAreExactOnRealMeshes) {
         EXPECT_EQ(run_cli("convert -q " + quoted(path) + " " + quoted(vtu)).exit_code, 0) << path;
     }
 }
+
+// #17 item 6: the second zone of SU2's chtPinArray and the FFD box of its
+// bricks pass through deform and convert to SU2, and other formats say what
+// they cannot hold.
+TEST(CliConvert, OtherZonesAndFfdBoxesPassThroughSu2AndAreNamedWhenDropped) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = dgwarp::test::scratch_dir();
+    const auto cht = dgwarp::test::su2_meshes_dir() / "incomp_navierstokes_streamwise_periodic_chtPinArray_3d_3D_chtPinArray_coarse.su2";
+    const auto motion = dgwarp::test::write_text(dir / "pin.json", R"({"markers": {"fluid_pin1": {"translate": [1e-5, 0, 0]}}})");
+    const std::string base = "deform " + quoted(cht) + " -m " + quoted(motion) + " -o ";
+    ASSERT_EQ(run_cli(base + quoted(dir / "out.su2") + " -q").exit_code, 0);
+    const std::string in = slurp(cht), out = slurp(dir / "out.su2");
+    const auto zone2 = in.find("IZONE= 2");
+    ASSERT_NE(zone2, std::string::npos);
+    ASSERT_NE(out.find("IZONE= 2"), std::string::npos);
+    EXPECT_EQ(out.substr(out.find("IZONE= 2")), in.substr(zone2));  // zone 2 byte for byte
+    EXPECT_NE(out, in);                                               // zone 1 moved
+    CommandResult r = run_cli(base + quoted(dir / "out.vtu"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("also has 1 other zone (IZONE=) (an .su2 output keeps them)"), std::string::npos) << r.err;
+
+    const auto brick = dgwarp::test::su2_meshes_dir() / "deformation_brick_hex_mesh_brick_hex_ffd.su2";
+    r = run_cli("convert " + quoted(brick) + " " + quoted(dir / "brick.su2"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    const std::string brick_in = slurp(brick), brick_out = slurp(dir / "brick.su2");
+    EXPECT_EQ(brick_out.substr(brick_out.find("NPERIODIC=")), brick_in.substr(brick_in.find("NPERIODIC=")));
+    r = run_cli("convert " + quoted(brick) + " " + quoted(dir / "brick.msh"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("NPERIODIC= 1, FFD_NBOX= 1"), std::string::npos) << r.err;
+}

@@ -133,9 +133,105 @@ TEST(CliPrepare, APlanKeepsItsWeightsAndRefusesOthers) {
     const CommandResult bad = run_cli("deform " + base + " --plan " + quoted(dir / "c.plan") +
                                       " --dg-idw-weights paper -o " + quoted(dir / "x.su2"));
     EXPECT_EQ(bad.exit_code, 1);
-    EXPECT_NE(bad.err.find("prepared with continuous weights"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("prepared with --dg-idw-weights continuous"), std::string::npos) << bad.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.su2"));
     EXPECT_EQ(run_cli("deform " + base + " --dg-idw-weights smooth -o " + quoted(dir / "y.su2")).exit_code, 1);
+}
+
+// #17 item 5: `prepare --length-scale auto` was shown in the JSON but not kept,
+// and `deform --plan` then used L = 1 and inverted 102 cells of this bump.
+TEST(CliPrepare, APlanKeepsTheLengthScaleAndTheWeightsAsAndDeformUsesThem) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = scratch_dir();
+    const std::string base = quoted(su2_meshes_dir() / "deformation_brick_hex_mesh_brick_hex_ffd.su2") + " -m " +
+                             quoted(source_dir() / "examples/motions/brick_bump_top.json");
+    ASSERT_EQ(run_cli("prepare " + base + " --length-scale auto --a-translation 5 -o " + quoted(dir / "auto.plan") +
+                      " -q")
+                  .exit_code,
+              0);
+    ASSERT_EQ(run_cli("deform " + base + " --length-scale auto --a-translation 5 -o " + quoted(dir / "direct.su2") +
+                      " -q")
+                  .exit_code,
+              0);
+    const CommandResult r = run_cli("deform " + base + " --plan " + quoted(dir / "auto.plan") + " -o " +
+                                    quoted(dir / "planned.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("frames")[0].at("quality").at("inverted"), 0);
+    EXPECT_EQ(j.at("options").at("length_scale"), "auto");  // the options used are the plan's
+    EXPECT_EQ(j.at("options").at("a_translation"), 5.0);
+    EXPECT_EQ(slurp(dir / "direct.su2"), slurp(dir / "planned.su2"));
+    // The same values again are fine; other values are usage errors naming the plan's, and nothing is written.
+    EXPECT_EQ(run_cli("deform " + base + " --plan " + quoted(dir / "auto.plan") + " --length-scale auto -o " +
+                      quoted(dir / "same.su2") + " -q")
+                  .exit_code,
+              0);
+    for (const char* option : {"--length-scale 1", "--a-translation 7", "--a-rotation 2"}) {
+        const CommandResult bad = run_cli("deform " + base + " --plan " + quoted(dir / "auto.plan") + " " + option +
+                                          " -o " + quoted(dir / "x.su2"));
+        EXPECT_EQ(bad.exit_code, 1) << option;
+        EXPECT_NE(bad.err.find("auto.plan was prepared with"), std::string::npos) << option << ": " << bad.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.su2")) << option;
+    }
+}
+
+// An option of another method would be ignored without a word.
+TEST(CliDeform, AnOptionOfAnotherMethodIsAUsageError) {
+    const auto [dir, mesh, motion] = rect_box_files();
+    const std::string base = quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "x.su2");
+    CommandResult r = run_cli("deform " + base + " --method dgm --length-scale auto");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("--length-scale: is an option of dg-idw; it does nothing with dgm"), std::string::npos) << r.err;
+    r = run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "p.plan") +
+                " --rbf-radius 2");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("an option of rbf"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.su2"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "p.plan"));
+    // With --method all every option applies to one of them.
+    EXPECT_EQ(run_cli("deform " + base + " --method all --length-scale auto --rbf-radius 30 -q").exit_code, 0);
+    // prepare --help lists the methods whose plans can be saved, not all of them.
+    r = run_cli("prepare --help");
+    EXPECT_NE(r.out.find("dg-idw or dg-harmonic"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("rbf, dg-harmonic"), std::string::npos) << r.out;
+}
+
+// #17 item 3: RBF failing inside --method all made a "valid" run with exit 0,
+// and the table cut the message mid-word.
+TEST(CliDeform, AMethodThatFailsInMethodAllMakesTheRunInvalid) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "turn5.json",
+                                   R"({"markers": {"airfoil": {"rotate": {"angle_deg": 5, "center": [0.25, 0, 0]}}}})");
+    const std::string base = "deform " + quoted(su2_meshes_dir() / "rans_naca0012_n0012_225-65.su2") + " -m " + quoted(motion) +
+                             " -o " + quoted(dir / "out.su2") + " --method all";
+    CommandResult r = run_cli(base + " --json");
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_FALSE(j.at("valid").get<bool>());
+    bool rbf_seen = false;
+    for (const auto& m : j.at("methods")) {
+        if (m.at("method") != "rbf") {
+            EXPECT_TRUE(m.at("valid").get<bool>()) << m.at("method");
+            continue;
+        }
+        rbf_seen = true;
+        EXPECT_FALSE(m.at("valid").get<bool>());
+        EXPECT_NE(m.at("error").get<std::string>().find("--rbf-radius"), std::string::npos) << m.at("error");
+    }
+    EXPECT_TRUE(rbf_seen);
+    EXPECT_FALSE(std::filesystem::exists(dir / "out_rbf.su2"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "out_dg-idw.su2"));
+    EXPECT_NE(r.err.find("rbf failed"), std::string::npos) << r.err;
+    // The table prints the whole message.
+    r = run_cli(base);
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.out.find("failed: RBF: the 480 x 480 interpolation matrix is numerically not positive definite"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("or greedy reduction (greedy_tolerance, --rbf-greedy)\n"), std::string::npos) << r.out;
+    // --allow-invalid writes inverted meshes, but a method that failed has none: still exit 3.
+    EXPECT_EQ(run_cli(base + " --allow-invalid -q").exit_code, 3);
 }
 
 TEST(CliPrepare, PlanOfAnotherMeshIsRefused) {

@@ -4,6 +4,7 @@
 // collapsed trailing edge).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -241,4 +242,91 @@ TEST(CliDegenerate, VolumeNodesOutsideTheGraphsHullAreAWarning) {
                                          quoted(dir / "out.su2") + " --json");
     ASSERT_EQ(closed.exit_code, 0) << closed.err;
     EXPECT_FALSE(has_warning(nlohmann::json::parse(closed.out).at("warnings"), "hull"));
+}
+
+// #17 item 4: cells that were already bad in the input are reported as such,
+// never blamed on the motion, and do not make a valid step invalid.
+namespace {
+
+/// The rect-box mesh with one extra, zero-area triangle on three consecutive
+/// far-field nodes of its bottom side (y = -20); returns its file.
+std::filesystem::path rect_box_with_degenerate_cell(const RectBoxFiles& files) {
+    Mesh mesh = read_mesh(files.mesh);
+    std::vector<NodeId> bottom;
+    for (NodeId n : marker_nodes(find_marker(mesh, "farfield")))
+        if (mesh.points[2 * static_cast<std::size_t>(n) + 1] == -20) bottom.push_back(n);
+    std::sort(bottom.begin(), bottom.end(), [&](NodeId a, NodeId b) { return mesh.points[2 * a] < mesh.points[2 * b]; });
+    EXPECT_GE(bottom.size(), 3u);
+    const NodeId flat[] = {bottom[0], bottom[1], bottom[2]};
+    mesh.cells.push_back(CellType::triangle, flat);
+    const auto file = files.dir / "degenerate.su2";
+    write_mesh(file, mesh);
+    return file;
+}
+
+/// The rect-box mesh with the node order of cell 0 reversed (the cell flipped).
+std::filesystem::path rect_box_with_flipped_cell(const RectBoxFiles& files) {
+    Mesh mesh = read_mesh(files.mesh);
+    const auto begin = mesh.cells.nodes.begin() + mesh.cells.offsets[0];
+    std::reverse(begin, mesh.cells.nodes.begin() + mesh.cells.offsets[1]);
+    const auto file = files.dir / "flipped.su2";
+    write_mesh(file, mesh);
+    return file;
+}
+
+}  // namespace
+
+TEST(CliDegenerate, ACellDegenerateInTheInputIsReportedAndDoesNotMakeAStepInvalid) {
+    const RectBoxFiles files = rect_box_files();
+    const auto mesh = rect_box_with_degenerate_cell(files);
+    const auto still = write_text(files.dir / "still.json", R"({"markers": {"rectangle": {"translate": [0, 0]}}})");
+    for (const auto& motion : {still, files.motion}) {
+        const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
+                                        quoted(files.dir / "out.su2") + " --json");
+        ASSERT_EQ(r.exit_code, 0) << motion << ": " << r.err;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_TRUE(j.at("valid").get<bool>());
+        EXPECT_EQ(j.at("original_quality").at("inverted"), 1);
+        const auto& frame = j.at("frames")[0];
+        EXPECT_EQ(frame.at("quality").at("inverted"), 1);  // still there, and counted
+        EXPECT_EQ(frame.at("inverted_by_motion"), 0);
+        EXPECT_TRUE(frame.at("worst_inverted_cells").empty());
+        EXPECT_TRUE(has_warning(j.at("warnings"), "already inverted or degenerate in the input mesh")) << j.at("warnings");
+    }
+    // The text report says which cells the motion inverted.
+    const CommandResult text =
+        run_cli("deform " + quoted(mesh) + " -m " + quoted(still) + " -o " + quoted(files.dir / "out.su2"));
+    EXPECT_NE(text.out.find("inverted by the motion 0 (the other 1 were already inverted or degenerate in the input)"),
+              std::string::npos)
+        << text.out;
+    EXPECT_NE(text.err.find("1 cell is already inverted or degenerate in the input mesh"), std::string::npos) << text.err;
+    // A motion that does invert cells is still invalid, and only its own cells are counted.
+    const auto huge = write_text(files.dir / "huge.json", R"({"markers": {"rectangle": {"translate": [18.8, 0]}}})");
+    const CommandResult bad = run_cli("deform " + quoted(mesh) + " -m " + quoted(huge) + " -o " +
+                                      quoted(files.dir / "bad.su2") + " --json");
+    EXPECT_EQ(bad.exit_code, 3);
+    const auto bad_json = nlohmann::json::parse(bad.out);
+    const auto& frame = bad_json.at("frames")[0];
+    EXPECT_GT(frame.at("inverted_by_motion").get<int>(), 0);
+    EXPECT_EQ(frame.at("quality").at("inverted").get<int>(), frame.at("inverted_by_motion").get<int>() + 1);
+    const auto worst = frame.at("worst_inverted_cells").get<std::vector<std::int64_t>>();
+    const auto degenerate_cell = static_cast<std::int64_t>(read_mesh(mesh).cells.size() - 1);
+    EXPECT_EQ(std::count(worst.begin(), worst.end(), degenerate_cell), 0);
+    EXPECT_FALSE(std::filesystem::exists(files.dir / "bad.su2"));
+}
+
+TEST(CliDegenerate, ACellFlippedInTheInputCountsAsInvertedBeforeAndAfterAsInInfo) {
+    const RectBoxFiles files = rect_box_files();
+    const auto mesh = rect_box_with_flipped_cell(files);
+    const CommandResult info = run_cli("info " + quoted(mesh) + " --json");
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_EQ(nlohmann::json::parse(info.out).at("quality").at("inverted"), 1);
+    const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(files.motion) + " -o " +
+                                    quoted(files.dir / "out.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("original_quality").at("inverted"), 1);  // as info says
+    EXPECT_EQ(j.at("frames")[0].at("quality").at("inverted"), 1);
+    EXPECT_EQ(j.at("frames")[0].at("inverted_by_motion"), 0);
+    EXPECT_TRUE(j.at("valid").get<bool>());
 }

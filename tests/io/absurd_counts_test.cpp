@@ -118,8 +118,8 @@ std::vector<std::byte> with_field(std::vector<std::byte> bytes, std::size_t offs
     return bytes;
 }
 
-// Plan header offsets (plan_file.cpp): num_points at 20, the 7 array counts from 84, the arrays from 140.
-constexpr std::size_t num_points_at = 20, counts_at = 84;
+// Plan header offsets (plan_file.cpp): num_points at 20, the 7 array counts from 108, the arrays from 164.
+constexpr std::size_t num_points_at = 20, counts_at = 108;  // plan_file.hpp: format version 3
 
 }  // namespace
 
@@ -205,13 +205,13 @@ TEST(AbsurdCounts, AnElementNamingNodeTenToTheNineIsAParseError) {
     EXPECT_EQ(sparse.num_points(), 4u);
     // A plan naming boundary node 10^9 (checksum made valid, so the index check is reached).
     const auto plan = small_plan_bytes();
-    const auto far_node = fuzz::with_valid_plan_checksum(with_field<std::int32_t>(plan, 140, 1'000'000'000));
+    const auto far_node = fuzz::with_valid_plan_checksum(with_field<std::int32_t>(plan, 164, 1'000'000'000));
     try {
         load_dg_idw_plan_bytes(far_node, "far.plan");
         FAIL() << "no error";
     } catch (const ParseError& e) {
         EXPECT_NE(std::string(e.what()).find("a boundary node id in [0, "), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("byte offset 140"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("byte offset 164"), std::string::npos) << e.what();
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -61,8 +62,10 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         m.boundary.moving.push_back(1);
         for (DgIdwWeighting weighting : {DgIdwWeighting::paper, DgIdwWeighting::continuous}) {
         SCOPED_TRACE(weighting_name(weighting));
-        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary, {.weighting = weighting});
-        ASSERT_EQ(plan.weighting, weighting);
+        // Options that are not the defaults, so the test sees them kept.
+        const DgIdwOptions options{.a_translation = 5.5, .a_rotation = 2.25, .length_scale = 0, .weighting = weighting};
+        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary, options);
+        ASSERT_EQ(plan.options.weighting, weighting);
         ASSERT_EQ(plan.stats.shared_vertex_count, 1);
         ASSERT_EQ(plan.stats.outside_count, 1);
         const auto file = dir / ("plan" + std::to_string(dim) + ".dgwplan");
@@ -70,7 +73,11 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
         const DgIdwPlan loaded = load_dg_idw_plan(file, m.points, m.boundary);
 
         EXPECT_EQ(loaded.dim, plan.dim);
-        EXPECT_EQ(loaded.weighting, weighting);
+        EXPECT_EQ(loaded.options.weighting, weighting);
+        EXPECT_EQ(loaded.options.a_translation, 5.5);
+        EXPECT_EQ(loaded.options.a_rotation, 2.25);
+        EXPECT_EQ(loaded.options.length_scale, 0.0);
+        EXPECT_EQ(loaded.auto_length_scale, plan.auto_length_scale);
         EXPECT_EQ(loaded.mesh, plan.mesh);
         EXPECT_EQ(loaded.auto_length_scale, plan.auto_length_scale);
         EXPECT_EQ(loaded.simplex_motion, plan.simplex_motion);
@@ -82,8 +89,8 @@ TEST(PlanFile, SaveThenLoadDeformsBitIdentically) {
 
         const BoundaryMotion motion = rotating_motion(m);
         std::vector<double> a(m.points.size()), b(m.points.size());
-        deform_dg_idw(plan, m.points, motion, a, {.length_scale = 0});
-        deform_dg_idw(loaded, m.points, motion, b, {.length_scale = 0});
+        deform_dg_idw(plan, m.points, motion, a);
+        deform_dg_idw(loaded, m.points, motion, b);
         EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
         }
     }
@@ -93,12 +100,51 @@ TEST(PlanFile, AnUnknownWeightingIsRefused) {
     const auto dir = dgwarp::test::scratch_dir();
     const BoxInBox m = box_in_box(2, 10);
     DgIdwPlan plan = prepare_dg_idw(2, m.points, m.boundary);
-    plan.weighting = static_cast<DgIdwWeighting>(7);  // saved with a valid checksum
+    plan.options.weighting = static_cast<DgIdwWeighting>(7);  // saved with a valid checksum
     const auto file = dir / "weighting.dgwplan";
     save_dg_idw_plan(file, plan);
     const std::string message = expect_refused(file, "weighting 7");
     EXPECT_NE(message.find("weighting 0 (paper) or 1 (continuous)"), std::string::npos) << message;
     EXPECT_NE(message.find("byte offset 16"), std::string::npos) << message;
+}
+
+TEST(PlanFile, BadOptionsAreRefusedWithTheirOffset) {
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10);
+    const DgIdwPlan good = prepare_dg_idw(2, m.points, m.boundary);
+    struct Case {
+        const char* what;
+        void (*spoil)(DgIdwPlan&);
+        const char* offset;
+    };
+    const Case cases[] = {
+        {"a_translation 0", [](DgIdwPlan& p) { p.options.a_translation = 0; }, "byte offset 84"},
+        {"a_rotation NaN", [](DgIdwPlan& p) { p.options.a_rotation = std::nan(""); }, "byte offset 92"},
+        {"length_scale -1", [](DgIdwPlan& p) { p.options.length_scale = -1; }, "byte offset 100"},
+        {"auto length scale inf", [](DgIdwPlan& p) { p.auto_length_scale = INFINITY; }, "byte offset 44"},
+    };
+    for (const Case& c : cases) {
+        DgIdwPlan plan = good;
+        c.spoil(plan);
+        const auto file = dir / "options.dgwplan";
+        save_dg_idw_plan(file, plan);  // a valid checksum: the value check must catch it
+        const std::string message = expect_refused(file, c.what);
+        EXPECT_NE(message.find(c.offset), std::string::npos) << c.what << ": " << message;
+    }
+}
+
+TEST(PlanFile, AnOlderFormatIsRefusedWithAdvice) {
+    const auto dir = dgwarp::test::scratch_dir();
+    const BoxInBox m = box_in_box(2, 10);
+    const auto file = dir / "old.dgwplan";
+    save_dg_idw_plan(file, prepare_dg_idw(2, m.points, m.boundary));
+    std::vector<std::byte> bytes(std::filesystem::file_size(file));
+    std::ifstream(file, std::ios::binary).read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    bytes[8] = std::byte{2};  // format version 2: before the options were kept
+    bytes = with_recomputed_plan_checksum(bytes);
+    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    const std::string message = expect_refused(file, "version 2");
+    EXPECT_NE(message.find("run dgwarp prepare again"), std::string::npos) << message;
 }
 
 TEST(PlanFile, EveryFlippedByteIsRefused) {

@@ -59,7 +59,7 @@ Deformed deform_brick(const Mesh& mesh, const MotionSpec& spec) {
     const DgIdwPlan plan = prepare_dg_idw(mesh.dim, mesh.points, d.boundary.boundary, options);
     d.motion = resolve_frame(mesh, spec, d.boundary.boundary, 0).motion;
     d.points.assign(mesh.points.size(), std::nan(""));
-    deform_dg_idw(plan, mesh.points, d.motion, d.points, options);
+    deform_dg_idw(plan, mesh.points, d.motion, d.points);
     Mesh moved = mesh;
     moved.points = d.points;
     d.quality = cell_qualities(moved, cell_orientations(mesh));

@@ -23,11 +23,10 @@ namespace {
 
 constexpr DgIdwOptions continuous{.weighting = DgIdwWeighting::continuous};
 
-/// The points deformed by DG-IDW, continuous weights unless `options` say otherwise.
-std::vector<double> run_dg_idw(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion,
-                           const DgIdwOptions& options = continuous) {
+/// The points deformed by DG-IDW with the plan's options.
+std::vector<double> run_dg_idw(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion) {
     std::vector<double> out(points.size(), std::nan(""));
-    deform_dg_idw(plan, points, motion, out, options);
+    deform_dg_idw(plan, points, motion, out);
     return out;
 }
 
@@ -57,8 +56,10 @@ TEST(DgIdwContinuous, OneTriangleTranslationMatchesTheHandFormulaForEveryMovingS
             points.insert(points.end(), x, x + 2);
             BoundarySet boundary{{0, 1, 2}, {}};
             for (int k = 0; k < 3; ++k) boundary.moving.push_back(mask >> k & 1);
-            const DgIdwPlan plan = prepare_dg_idw(2, points, boundary, continuous);
-            EXPECT_EQ(plan.weighting, DgIdwWeighting::continuous);
+            DgIdwOptions options = continuous;
+            options.length_scale = length;
+            const DgIdwPlan plan = prepare_dg_idw(2, points, boundary, options);
+            EXPECT_EQ(plan.options.weighting, DgIdwWeighting::continuous);
             BoundaryMotion motion(3);
             double numerator[2] = {}, moving_sum = 0, static_sum = 0;
             for (int k = 0; k < 3; ++k) {
@@ -71,9 +72,7 @@ TEST(DgIdwContinuous, OneTriangleTranslationMatchesTheHandFormulaForEveryMovingS
                     static_sum += e[k] / r;
                 }
             }
-            DgIdwOptions options = continuous;
-            options.length_scale = length;
-            const auto out = run_dg_idw(plan, points, motion, options);
+            const auto out = run_dg_idw(plan, points, motion);
             for (int d = 0; d < 2; ++d) {
                 const double expected = mask == 0 ? 0.0 : numerator[d] / (moving_sum + static_sum);
                 EXPECT_NEAR(out[6 + d] - x[d], expected, 1e-14) << "mask " << mask << " L " << length;
@@ -126,7 +125,7 @@ double largest_slope_across_faces(int dim, DgIdwWeighting weighting) {
     BoxInBox with_pairs = m;
     with_pairs.points = points;
     const BoundaryMotion motion = random_motion(with_pairs, 3, 0.05);
-    const auto out = run_dg_idw(plan, points, motion, {.weighting = weighting});
+    const auto out = run_dg_idw(plan, points, motion);
     double worst = 0;
     for (NodeId p : pairs) {
         const auto a = static_cast<std::size_t>(p), b = a + 1;
@@ -156,7 +155,7 @@ TEST(DgIdwContinuous, KeepsTheMethodsProperties) {
     for (int dim : {2, 3}) {
         const BoxInBox m = box_in_box(dim, dim == 2 ? 15 : 7);
         const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary, continuous);
-        EXPECT_EQ(plan.weighting, DgIdwWeighting::continuous);
+        EXPECT_EQ(plan.options.weighting, DgIdwWeighting::continuous);
         // Zero motion is the identity, bit for bit.
         const BoundaryMotion zero(m.boundary.nodes.size());
         EXPECT_EQ(run_dg_idw(plan, m.points, zero), m.points);

@@ -20,11 +20,16 @@ using dgwarp::test::random_motion;
 
 namespace {
 
-std::vector<double> deform(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion,
-                           const DgIdwOptions& options = {}) {
+std::vector<double> deform(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion) {
     std::vector<double> out(points.size(), std::nan(""));
-    deform_dg_idw(plan, points, motion, out, options);
+    deform_dg_idw(plan, points, motion, out);
     return out;
+}
+
+/// `plan` with another L (deform uses the plan's options).
+DgIdwPlan with_length_scale(DgIdwPlan plan, double length_scale) {
+    plan.options.length_scale = length_scale;
+    return plan;
 }
 
 }  // namespace
@@ -201,7 +206,7 @@ TEST(DgIdw, OneSimplexTranslationMatchesThePaperFormulaForEveryMovingSet) {
                     for (int d = 0; d < dim; ++d) sq += (x[d] - s.points[k * dim + d]) * (x[d] - s.points[k * dim + d]);
                     r[k] = std::sqrt(sq) / length;  // distances divided by L
                 }
-                const auto out = deform(plan, s.points, motion, {.length_scale = length});
+                const auto out = deform(with_length_scale(plan, length), s.points, motion);
                 const double* y = out.data() + dim * (dim + 1);
                 EXPECT_NEAR(y[0] - x[0], paper_component(dim, 7.0, mask, r, tx), 1e-14) << dim << "D mask " << mask;
                 EXPECT_NEAR(y[1] - x[1], paper_component(dim, 7.0, mask, r, ty), 1e-14) << dim << "D mask " << mask;
@@ -271,8 +276,8 @@ TEST(DgIdw, LengthScaleMakesTheDeformationScaleInvariant) {
         const DgIdwPlan plan_small = prepare_dg_idw(dim, small.points, small.boundary);
         const DgIdwPlan plan_big = prepare_dg_idw(dim, big.points, big.boundary);
         auto max_relative_gap = [&](double l_small, double l_big) {
-            const auto a = deform(plan_small, small.points, motion_small, {.length_scale = l_small});
-            const auto b = deform(plan_big, big.points, motion_big, {.length_scale = l_big});
+            const auto a = deform(with_length_scale(plan_small, l_small), small.points, motion_small);
+            const auto b = deform(with_length_scale(plan_big, l_big), big.points, motion_big);
             double gap = 0;
             for (std::size_t i = 0; i < a.size(); ++i) gap = std::max(gap, std::abs(b[i] / 1000 - a[i]));
             return gap;
@@ -409,8 +414,10 @@ TEST(DgIdw, WrongSizesAndOptionsAreRefused) {
     std::vector<double> short_out(out.size() - 1);
     EXPECT_THROW(deform_dg_idw(plan, m.points, motion, short_out), MeshError);
     EXPECT_THROW(deform_dg_idw(plan, m.points, BoundaryMotion(motion.size() - 1), out), MeshError);
-    EXPECT_THROW(deform_dg_idw(plan, m.points, motion, out, {.a_translation = 0}), Error);
-    EXPECT_THROW(deform_dg_idw(plan, m.points, motion, out, {.length_scale = -1}), Error);
+    DgIdwPlan zero_a = plan;
+    zero_a.options.a_translation = 0;
+    EXPECT_THROW(deform_dg_idw(zero_a, m.points, motion, out), Error);
+    EXPECT_THROW(deform_dg_idw(with_length_scale(plan, -1), m.points, motion, out), Error);
     BoundaryMotion not_finite = motion;
     not_finite[3].translation[1] = std::nan("");
     try {

@@ -190,3 +190,13 @@ TEST(QualityRatios, NonPositiveOriginalGivesZeroAndSummaryFindsTheWorst) {
     EXPECT_EQ(s.worst_cell, 4);
     EXPECT_NEAR(s.mean, 0.2, 1e-15);
 }
+
+TEST(MeshQuality, NewlyInvertedCellsAreTheValidOnesThatInverted) {
+    const double nan = std::nan("");
+    //                                    fine  folds  was 0  was -1  NaN now  fine->0
+    const std::vector<double> original = {0.5, 0.7, 0.0, -0.2, 0.4, 0.9};
+    const std::vector<double> deformed = {0.4, -0.1, -0.3, -0.2, nan, 0.0};
+    EXPECT_EQ(newly_inverted_cells(deformed, original), (std::vector<std::int64_t>{1, 4, 5}));
+    EXPECT_TRUE(newly_inverted_cells(original, original).empty());  // the input's own bad cells are not new
+    EXPECT_TRUE(newly_inverted_cells({}, {}).empty());
+}

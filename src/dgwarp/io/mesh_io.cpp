@@ -37,9 +37,25 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
                       joined(readable_extensions()));
 }
 
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress,
+               MeshExtras& extras) {
+    extras = {};
+    if (lower_extension(path) != ".su2") return read_mesh(path, options, progress);
+    Su2Surroundings surroundings;
+    Mesh mesh = read_su2(path, options.zone, progress, surroundings);
+    extras.su2 = std::move(surroundings);
+    return mesh;
+}
+
+std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path) {
+    if (!extras.su2 || lower_extension(path) == ".su2") return {};
+    return extras.su2->contents;
+}
+
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                 const WriteOptions& options) {
     const std::string ext = lower_extension(path);
+    if (ext == ".su2" && options.extras && options.extras->su2) return write_su2(path, mesh, *options.extras->su2);
     if (ext == ".su2") return write_su2(path, mesh);
     if (ext == ".msh") return write_gmsh(path, mesh, options.gmsh_version);
     if (ext == ".vtu") return write_vtu(path, mesh, fields);

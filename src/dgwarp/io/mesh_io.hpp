@@ -4,10 +4,12 @@
 //   .msh  Gmsh ASCII 4.1 or 2.2 (read both; write 4.1 by default)
 //   .vtu  VTK XML unstructured grid, binary (write only; with point and cell data)
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dgwarp/core/progress.hpp"
+#include "dgwarp/io/su2.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
@@ -29,8 +31,20 @@ struct MeshFields {
     std::vector<Field> cell_data;   // count = mesh.cells.size()
 };
 
+/// What a mesh file holds besides the mesh read from it, kept so that a
+/// deformed copy in the same format keeps it too.
+struct MeshExtras {
+    /// An SU2 file's text around the zone read: other zones, FFD boxes,
+    /// periodic data, comments (read_su2).
+    std::optional<Su2Surroundings> su2;
+};
+
 struct WriteOptions {
     int gmsh_version = 41;  // 41 (MSH 4.1) or 22 (MSH 2.2)
+    /// The input's extras: an SU2 output then keeps them around the mesh
+    /// (write_su2 with surroundings); other formats cannot hold them
+    /// (dropped_extras says what is lost).
+    const MeshExtras* extras = nullptr;
 };
 
 /// Reads a mesh; the format comes from the extension. Throws FormatError for
@@ -41,6 +55,15 @@ struct WriteOptions {
 /// (bytes read / file size, every 1% or 1 MiB, whichever is more), ending at 1.
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options = {},
                const ProgressFn& progress = {});
+
+/// read_mesh, also filling `extras` with what the file holds besides the mesh.
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress,
+               MeshExtras& extras);
+
+/// What of `extras` a write_mesh to `path` (format by extension) with them
+/// does not keep, for a warning: e.g. {"1 other zone (IZONE=)", "FFD_NBOX= 1"}
+/// when an SU2 input's surroundings go to a .vtu; empty when all is kept.
+std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path);
 
 /// Writes a mesh atomically (temporary file, then rename); the format comes
 /// from the extension.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -25,7 +26,8 @@ static_assert(std::endian::native == std::endian::little, "plan files are little
 
 constexpr std::array<char, 8> magic = {'D', 'G', 'W', 'P', 'L', 'A', 'N', '\0'};
 // 2: the DG-IDW weighting (paper / continuous) in the header.
-constexpr std::uint32_t format_version = 2;
+// 3: a_translation, a_rotation and length_scale in the header (deform uses the plan's).
+constexpr std::uint32_t format_version = 3;
 constexpr int num_arrays = 7;
 // Positions of the arrays in the file (and in Header::counts).
 enum ArrayIndex { boundary_nodes_at, boundary_moving_at, simplex_motion_at, shared_offsets_at, shared_members_at,
@@ -44,6 +46,9 @@ struct Header {
     std::int64_t snapped_count = 0;
     std::int64_t shared_vertex_count = 0;
     std::int64_t graph_vertex_count = 0;
+    double a_translation = 0;
+    double a_rotation = 0;
+    double length_scale = 0;  // 0 = auto
     std::array<std::uint64_t, num_arrays> counts{};  // elements of each array
 };
 
@@ -61,6 +66,9 @@ constexpr void visit_header(Header& h, F&& field) {
     field(h.snapped_count);
     field(h.shared_vertex_count);
     field(h.graph_vertex_count);
+    field(h.a_translation);
+    field(h.a_rotation);
+    field(h.length_scale);
     for (auto& c : h.counts) field(c);
 }
 
@@ -71,7 +79,9 @@ constexpr std::size_t header_size() {
     return n;
 }
 constexpr std::size_t header_bytes = header_size();
-static_assert(header_bytes == 8 + 3 * 4 + 8 * 8 + num_arrays * 8);
+static_assert(header_bytes == 8 + 3 * 4 + 11 * 8 + num_arrays * 8);
+// Byte offset of a_translation (the options follow one another).
+constexpr std::size_t options_at = 8 + 3 * 4 + 8 * 8;
 
 // The plan's arrays in file order, as (bytes, element size) views.
 template <class Plan, class F>
@@ -102,7 +112,10 @@ std::array<std::byte, header_bytes> encode_header(Header h) {
 void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) {
     Header h;
     h.dim = static_cast<std::uint32_t>(plan.dim);
-    h.weighting = static_cast<std::uint32_t>(plan.weighting);
+    h.weighting = static_cast<std::uint32_t>(plan.options.weighting);
+    h.a_translation = plan.options.a_translation;
+    h.a_rotation = plan.options.a_rotation;
+    h.length_scale = plan.options.length_scale;
     h.num_points = plan.mesh.num_points;
     h.points_hash = plan.mesh.points_hash;
     h.boundary_hash = plan.mesh.boundary_hash;
@@ -139,14 +152,26 @@ DgIdwPlan load_dg_idw(const PlanSource& source) {
         at += sizeof v;
     });
     if (h.version != format_version)
-        fail(path, 8, "plan format version " + std::to_string(format_version), std::to_string(h.version));
+        fail(path, 8, "plan format version " + std::to_string(format_version),
+             std::to_string(h.version) + (h.version < format_version ? " (an older dgwarp's: run dgwarp prepare again)" : ""));
     if (h.dim != 2 && h.dim != 3) fail(path, 12, "dim 2 or 3", std::to_string(h.dim));
     if (h.weighting > static_cast<std::uint32_t>(DgIdwWeighting::continuous))
         fail(path, 16, "weighting 0 (paper) or 1 (continuous)", std::to_string(h.weighting));
 
+    auto positive = [](double a) { return std::isfinite(a) && a > 0; };
+    if (!positive(h.a_translation)) fail(path, options_at, "a positive a_translation", std::to_string(h.a_translation));
+    if (!positive(h.a_rotation)) fail(path, options_at + 8, "a positive a_rotation", std::to_string(h.a_rotation));
+    if (!std::isfinite(h.length_scale) || h.length_scale < 0)
+        fail(path, options_at + 16, "a length_scale >= 0 (0 = auto)", std::to_string(h.length_scale));
+    if (!std::isfinite(h.auto_length_scale) || h.auto_length_scale < 0)
+        fail(path, options_at - 40, "an auto length scale >= 0", std::to_string(h.auto_length_scale));
+
     DgIdwPlan plan;
     plan.dim = static_cast<int>(h.dim);
-    plan.weighting = static_cast<DgIdwWeighting>(h.weighting);
+    plan.options = {.a_translation = h.a_translation,
+                    .a_rotation = h.a_rotation,
+                    .length_scale = h.length_scale,
+                    .weighting = static_cast<DgIdwWeighting>(h.weighting)};
     const std::vector<std::uint64_t> offsets =
         plan_detail::read_plan_arrays(source, header_raw, h.counts, [&](auto&& f) { visit_arrays(plan, f); });
     const std::uint64_t corners = h.dim + 1;

@@ -5,12 +5,14 @@
 // fields; dg_harmonic_plan_file.cpp). save_plan / load_plan take either.
 //
 // DG-IDW:
-// Format (version 1, little-endian, no padding):
+// Format (version 3, little-endian, no padding):
 //   header:  magic "DGWPLAN\0" (8 bytes), u32 format version, u32 dim,
-//            i64 num_points, u64 points hash, u64 boundary hash (the mesh
-//            fingerprint), f64 auto length scale, i64 outside / snapped /
-//            shared-vertex / graph-vertex counts, then u64 element counts of
-//            the 7 arrays;
+//            u32 weighting (0 paper, 1 continuous), i64 num_points, u64
+//            points hash, u64 boundary hash (the mesh fingerprint), f64 auto
+//            length scale, i64 outside / snapped / shared-vertex /
+//            graph-vertex counts, f64 a_translation, a_rotation and
+//            length_scale (0 = auto: DgIdwPlan::options), then u64 element
+//            counts of the 7 arrays;
 //   arrays:  boundary_nodes i32, boundary_moving u8, simplex_motion i32,
 //            shared_offsets i32, shared_members i32, node_simplex i32,
 //            node_coefficients f64 (DgIdwPlan's fields);

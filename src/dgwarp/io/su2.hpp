@@ -6,9 +6,11 @@
 // lines with trailing index columns (ignored), `NPOIN= n n_domain`, and FFD,
 // periodic or other unknown keyword sections (skipped). Element node order is
 // VTK's, as in the neutral Mesh; node ids are 0-based in both.
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "dgwarp/core/progress.hpp"
 #include "dgwarp/mesh/mesh.hpp"
@@ -28,6 +30,23 @@ namespace dgwarp {
 /// `progress` (core/progress.hpp) gets the fraction of the file parsed.
 Mesh read_su2(const std::filesystem::path& path, int zone = 1, const ProgressFn& progress = {});
 
+/// An SU2 file's text around the four sections of the zone that was read:
+/// what comes before them (comments, NZONE=, earlier zones) and after them
+/// (FFD boxes, periodic data, later zones), byte for byte, so that a deformed
+/// copy of the file keeps them (write_su2 below).
+struct Su2Surroundings {
+    std::string before, after;
+    bool zone_has_ndime = true;    // false when the zone's dimension is given by an NDIME= before NZONE=
+    std::int64_t num_points = 0;   // the zone's: the surroundings may name its nodes (FFD_SURFACE_POINTS)
+    std::int64_t num_cells = 0;
+    /// What before and after hold, for messages: e.g. "zone 2 of 2", "FFD_NBOX= 1", "NPERIODIC= 1";
+    /// empty when they hold nothing but blank lines and comments.
+    std::vector<std::string> contents;
+};
+
+/// read_su2, also returning the zone's surroundings in `surroundings`.
+Mesh read_su2(const std::filesystem::path& path, int zone, const ProgressFn& progress, Su2Surroundings& surroundings);
+
 /// The same, from text in memory; `file_name` is used in error messages.
 Mesh read_su2_text(const std::string& file_name, std::string content, int zone = 1);
 
@@ -43,5 +62,13 @@ void write_su2(std::ostream& out, const Mesh& mesh);
 /// error `path` is left as it was. Throws IoError (e.g. missing folder) or
 /// MeshError as above.
 void write_su2(const std::filesystem::path& path, const Mesh& mesh);
+
+/// Writes `mesh` (e.g. the zone deformed) in place of the zone's sections
+/// within `surroundings`, atomically: every other zone, FFD box, periodic
+/// section and comment of the original file passes through unchanged. Throws
+/// MeshError, before writing anything, when `mesh` has not the zone's number
+/// of points and cells (the surroundings may refer to its node ids), or as
+/// write_su2 above.
+void write_su2(const std::filesystem::path& path, const Mesh& mesh, const Su2Surroundings& surroundings);
 
 }  // namespace dgwarp

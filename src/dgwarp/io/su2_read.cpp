@@ -6,6 +6,7 @@
 // met before that are skipped. Every count is checked against the rest of the file
 // before anything is reserved (a record of k tokens takes at least 2k bytes), so
 // a damaged header cannot make us allocate more than a few times the file size.
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -266,6 +267,7 @@ std::string read_markers(TextReader& r, const Keyword& kw, int dim, std::vector<
 struct ZoneStart {
     int dim = 0;                // from an NDIME= before the zone's own sections (0: none)
     std::size_t dim_line = 0;
+    std::size_t dim_offset = 0;  // byte offset of that NDIME= line
     bool dim_in_zone = false;   // that NDIME= belongs to the zone (single-zone file)
     bool pending = false;       // the current line is the zone's first keyword, still to handle
 };
@@ -282,6 +284,7 @@ ZoneStart locate_zone(TextReader& r, int zone) {
         if (kw->key == "NDIME" && !z.dim) {
             z.dim = parse_dimension(r, *kw);
             z.dim_line = r.line_number();
+            z.dim_offset = r.line_offset();
             continue;
         }
         if (kw->key == "IZONE") r.fail("NZONE= before IZONE=", trim(r.line()));
@@ -312,14 +315,42 @@ ZoneStart locate_zone(TextReader& r, int zone) {
     }
 }
 
-/// Reads the sections of one zone; returns the checked mesh.
-Mesh read_zone(TextReader& r, int zone, ZoneStart start) {
+/// Keyword lines of `text` that say what it holds (for Su2Surroundings::contents):
+/// zones, FFD boxes, periodic data and unknown sections, not the zone sections'
+/// own keywords nor the FFD and periodic sections' inner ones.
+void describe_surroundings(std::string_view text, int zone, std::vector<std::string>& contents, std::int64_t& zones) {
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view line = trim(text.substr(at, end - at));
+        at = end + 1;
+        if (line.empty() || line.front() == '%') continue;
+        const std::optional<Keyword> kw = parse_keyword(line);
+        if (!kw) continue;
+        const std::string_view key = kw->key;
+        if (key == "IZONE") {
+            std::int64_t k = 0;
+            zones += !(parse_int(first_word(kw->value), k) && k == zone);  // another zone than the one read
+            continue;
+        }
+        constexpr std::string_view zone_keys[] = {"NDIME", "NELEM", "NPOIN", "NMARK", "MARKER_TAG", "MARKER_ELEMS", "NZONE"};
+        if (std::find(std::begin(zone_keys), std::end(zone_keys), key) != std::end(zone_keys)) continue;
+        if ((key.starts_with("FFD_") && key != "FFD_NBOX") || key.starts_with("PERIODIC_")) continue;
+        contents.push_back(std::string(key) + "= " + std::string(trim(kw->value)));
+    }
+}
+
+/// Reads the sections of one zone; returns the checked mesh. With
+/// `surroundings`, also the text around the zone's sections.
+Mesh read_zone(TextReader& r, int zone, ZoneStart start, Su2Surroundings* surroundings) {
     Mesh mesh;
     mesh.dim = start.dim;
     std::size_t ndime_line = start.dim_in_zone ? start.dim_line : 0, nelem_line = 0, npoin_line = 0, nmark_line = 0;
     NodeIdRange range;
     std::string after;  // the block read last, to explain a stray data line after it
     bool pending = start.pending;
+    std::size_t first_offset = start.dim_in_zone ? start.dim_offset : std::string::npos;
 
     auto missing = [&] {
         std::string s;
@@ -337,6 +368,7 @@ Mesh read_zone(TextReader& r, int zone, ZoneStart start) {
         if (!kw)
             r.fail(after.empty() ? "a keyword line such as NELEM=" : "a keyword line after " + after, trim(r.line()));
         const std::size_t line = r.line_number();
+        if (first_offset == std::string::npos) first_offset = r.line_offset();
         auto first_time = [&](std::size_t seen_at) {
             if (seen_at)
                 r.fail(missing() + " (" + std::string(kw->key) + "= already appeared on line " +
@@ -374,6 +406,11 @@ Mesh read_zone(TextReader& r, int zone, ZoneStart start) {
         }
     }
 
+    // The zone's sections end with the current line (the last block's last).
+    const std::string_view content = r.content();
+    const std::size_t newline = content.find('\n', r.line_offset());
+    const std::size_t end_offset = newline == std::string_view::npos ? content.size() : newline + 1;
+
     // After the last block, only a keyword line may follow (FFD, periodic data,
     // the next zone): a data line or another marker means a count was too small.
     if (next_content_line(r)) {
@@ -389,15 +426,30 @@ Mesh read_zone(TextReader& r, int zone, ZoneStart start) {
                              str(static_cast<std::int64_t>(npoin_line)) + ")",
                          str(range.max));
     validate(mesh);
+    if (surroundings) {
+        Su2Surroundings& s = *surroundings;
+        s.before = std::string(content.substr(0, first_offset));
+        s.after = std::string(content.substr(end_offset));
+        s.zone_has_ndime = ndime_line != 0;
+        s.num_points = num_points;
+        s.num_cells = static_cast<std::int64_t>(mesh.cells.size());
+        s.contents.clear();
+        std::int64_t other_zones = 0;
+        describe_surroundings(s.before, zone, s.contents, other_zones);
+        describe_surroundings(s.after, zone, s.contents, other_zones);
+        if (other_zones > 0)
+            s.contents.insert(s.contents.begin(), std::to_string(other_zones) + " other zone" +
+                                                      (other_zones == 1 ? "" : "s") + " (IZONE=)");
+    }
     return mesh;
 }
 
 /// Reads zone `zone` (1-based) of the SU2 text in `r`.
-Mesh read_su2_zone(TextReader& r, int zone) {
+Mesh read_su2_zone(TextReader& r, int zone, Su2Surroundings* surroundings = nullptr) {
     if (zone < 1)
         throw ParseError(r.file(), 0, "a zone number >= 1 (zones are numbered from 1)", "requested zone " + str(zone));
     const ZoneStart start = locate_zone(r, zone);
-    return read_zone(r, zone, start);
+    return read_zone(r, zone, start, surroundings);
 }
 
 }  // namespace
@@ -411,6 +463,14 @@ Mesh read_su2(const std::filesystem::path& path, int zone, const ProgressFn& pro
     TextReader r = TextReader::open(path);
     r.set_progress(progress);
     Mesh mesh = read_su2_zone(r, zone);
+    if (progress) progress(1.0);
+    return mesh;
+}
+
+Mesh read_su2(const std::filesystem::path& path, int zone, const ProgressFn& progress, Su2Surroundings& surroundings) {
+    TextReader r = TextReader::open(path);
+    r.set_progress(progress);
+    Mesh mesh = read_su2_zone(r, zone, &surroundings);
     if (progress) progress(1.0);
     return mesh;
 }

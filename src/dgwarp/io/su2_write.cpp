@@ -2,6 +2,8 @@
 // element per line with its index last, one point per line with its index last,
 // tab-separated, numbers in shortest exact form so that reading back is exact.
 #include <ostream>
+#include <sstream>
+#include <string_view>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/atomic_write.hpp"
@@ -76,6 +78,29 @@ void write_su2(std::ostream& out, const Mesh& mesh) {
 
 void write_su2(const std::filesystem::path& path, const Mesh& mesh) {
     write_file_atomically(path, [&mesh](std::ostream& out) { write_su2(out, mesh); });
+}
+
+void write_su2(const std::filesystem::path& path, const Mesh& mesh, const Su2Surroundings& surroundings) {
+    const auto points = static_cast<std::int64_t>(mesh.num_points());
+    const auto cells = static_cast<std::int64_t>(mesh.cells.size());
+    if (points != surroundings.num_points || cells != surroundings.num_cells)
+        throw MeshError("the mesh has " + std::to_string(points) + " points and " + std::to_string(cells) +
+                        " cells, the zone it replaces " + std::to_string(surroundings.num_points) + " and " +
+                        std::to_string(surroundings.num_cells) + ": it is not that zone");
+    validate(mesh);
+    check_marker_names(mesh);
+    write_file_atomically(path, [&](std::ostream& out) {
+        out << surroundings.before;
+        if (surroundings.zone_has_ndime) {
+            write_su2(out, mesh);
+        } else {  // the dimension comes from the file's header: the zone's text without its NDIME= line
+            std::ostringstream zone;
+            write_su2(zone, mesh);
+            const std::string text = std::move(zone).str();
+            out << std::string_view(text).substr(text.find('\n') + 1);
+        }
+        out << surroundings.after;
+    });
 }
 
 }  // namespace dgwarp

@@ -32,6 +32,13 @@ public:
 
     /// The current line without its end-of-line characters.
     std::string_view line() const { return line_; }
+    /// Byte offset of the current line's first character in the content.
+    /// (the content's size at the end of the file).
+    std::size_t line_offset() const {
+        return line_.data() ? static_cast<std::size_t>(line_.data() - content_.data()) : content_.size();
+    }
+    /// The whole content.
+    std::string_view content() const { return content_; }
     /// 1-based number of the current line (0 before the first next_line()).
     std::size_t line_number() const { return line_number_; }
     const std::string& file() const { return file_; }

@@ -59,11 +59,14 @@ struct DgIdwOptions {
     double a_rotation = 1.4;     // a for the rotation-vector components (paper: 1.4)
     /// L, the length distances are divided by. 1 reproduces the paper's
     /// formula (which is not scale invariant); 0 = auto (DgIdwPlan::auto_length_scale),
-    /// computed at prepare time and kept in the plan.
+    /// computed at prepare time.
     double length_scale = 1.0;
-    /// Corner weights (prepare time only; deform uses the plan's).
+    /// Corner weights.
     DgIdwWeighting weighting = DgIdwWeighting::paper;
 };
+// All of them act at prepare time: the plan keeps them (DgIdwPlan::options,
+// also in a saved plan) and deform uses the plan's, so a plan always gives
+// the result it was made for.
 
 /// What prepare_dg_idw found, and how long its stages took.
 struct DgIdwPrepareStats {
@@ -94,7 +97,9 @@ struct DgIdwPlan {
     /// next to the fixed walls would follow the moving face and cross the
     /// walls' nodes (docs/dg-idw-length-scale.md has the measurements).
     double auto_length_scale = 1;
-    DgIdwWeighting weighting = DgIdwWeighting::paper;  // how node_coefficients were made
+    /// The options prepare was given: the weighting node_coefficients were
+    /// made with, and the a's and L that deform uses.
+    DgIdwOptions options;
     std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
     std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
     /// num_simplices × (dim + 1): for each corner of each graph simplex that
@@ -128,10 +133,11 @@ struct DgIdwPlan {
 
 /// Builds the plan for `points` (num_points × dim, the original coordinates)
 /// and `boundary`: the Delaunay graph of the boundary nodes, the graph simplex
-/// of every volume node, and the per-corner coefficients. a and L are applied
-/// at deform time; the options given here only set the auto length scale
-/// (always stored: it uses max(a_translation, a_rotation), see
-/// DgIdwPlan::auto_length_scale); options.weighting chooses the coefficients.
+/// of every volume node, and the per-corner coefficients. The options are
+/// kept in the plan (DgIdwPlan::options): the weighting chooses the
+/// coefficients, a and L are applied by deform (the auto length scale,
+/// always stored, uses max(a_translation, a_rotation), see
+/// DgIdwPlan::auto_length_scale).
 /// Throws MeshError for an inconsistent boundary set (unsorted, duplicate or
 /// out-of-range ids, size mismatch) or a degenerate boundary (fewer than
 /// dim + 1 distinct points, all collinear / coplanar), Error for bad options.
@@ -154,14 +160,13 @@ struct DgIdwStepReport {
 /// entries are ignored). Each volume node x0 gets the weighted translation t
 /// and rotation vector w of its simplex's moving corners and the centre c
 /// (their centres averaged with weights r^-2 normalised over the moving
-/// corners), and moves to x0 + t + (R(w) - I)(x0 - c). Uses
+/// corners), and moves to x0 + t + (R(w) - I)(x0 - c). Uses the plan's
 /// options.a_translation, a_rotation and length_scale (0 = the plan's auto
 /// value). No allocation; results do not depend on the thread count. Throws
 /// MeshError when an array size does not match the plan or a motion is not
-/// finite (naming the node), Error for bad options.
+/// finite (naming the node), Error for bad options in the plan.
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
-                              const BoundaryMotion& motion, std::span<double> out,
-                              const DgIdwOptions& options = {});
+                              const BoundaryMotion& motion, std::span<double> out);
 
 /// Bytes held by the plan's arrays.
 std::size_t plan_bytes(const DgIdwPlan& plan);

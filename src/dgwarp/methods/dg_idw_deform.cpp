@@ -145,7 +145,8 @@ void check_dg_idw_options(const DgIdwOptions& options) {
 }
 
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
-                              const BoundaryMotion& motion, std::span<double> out, const DgIdwOptions& options) {
+                              const BoundaryMotion& motion, std::span<double> out) {
+    const DgIdwOptions& options = plan.options;
     check_dg_idw_options(options);
     check_step_arrays("DG-IDW", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
     const double l = options.length_scale > 0 ? options.length_scale : plan.auto_length_scale;

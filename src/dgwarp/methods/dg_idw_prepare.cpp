@@ -108,7 +108,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
 
     DgIdwPlan plan;
     plan.dim = dim;
-    plan.weighting = options.weighting;
+    plan.options = options;
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
     const double moving_diagonal = boundary_diagonal(dim, points, boundary, true);

@@ -54,7 +54,7 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
     return std::visit(overloaded{[&](const DgIdwPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_idw(p, points, motion, out, options.dg_idw)
+                                         deform_dg_idw(p, points, motion, out)
                                              .conflicting_shared_vertices;
                                      return done(r);
                                  },

@@ -45,7 +45,7 @@ std::optional<Method> method_from_name(std::string_view name);
 
 /// Options of every method, each in its own plain struct with defaults.
 struct MethodOptions {
-    DgIdwOptions dg_idw;
+    DgIdwOptions dg_idw;  // acts at prepare time (the plan keeps it)
     DgmOptions dgm;
     IdwOptions idw;
     RbfOptions rbf;  // acts at prepare time (the plan keeps it)

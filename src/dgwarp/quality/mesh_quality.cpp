@@ -112,6 +112,14 @@ QualitySummary summarize_quality(std::span<const double> qualities) {
     return s;
 }
 
+std::vector<std::int64_t> newly_inverted_cells(std::span<const double> deformed, std::span<const double> original) {
+    assert(deformed.size() == original.size());
+    std::vector<std::int64_t> cells;
+    for (std::size_t i = 0; i < deformed.size(); ++i)
+        if (original[i] > 0 && !(deformed[i] > 0)) cells.push_back(static_cast<std::int64_t>(i));
+    return cells;
+}
+
 std::vector<double> quality_ratios(std::span<const double> deformed, std::span<const double> original) {
     assert(deformed.size() == original.size());
     std::vector<double> ratio(deformed.size());

@@ -47,6 +47,12 @@ struct QualitySummary {
 /// min = mean = 0, worst_cell -1, all counts 0.
 QualitySummary summarize_quality(std::span<const double> qualities);
 
+/// Cells the deformation inverted: quality <= 0 (or NaN) in `deformed` but
+/// > 0 in `original` (same size, one value per cell), in cell order. Cells
+/// that were already inverted or degenerate in the original are not among
+/// them: the motion did not make them so.
+std::vector<std::int64_t> newly_inverted_cells(std::span<const double> deformed, std::span<const double> original);
+
 struct RatioSummary {
     double min = 0;
     double mean = 0;
