@@ -26,6 +26,7 @@ struct DeformArgs {
     bool json = false;
     bool allow_invalid = false;
     bool untangle = false;
+    bool no_untangle = false;  // dg-harmonic without its last resort
     double untangle_target = 0;
     bool quiet = false;
 };
@@ -39,7 +40,8 @@ struct FrameResult {
     StepReport step;
     std::int64_t inverted_by_motion = 0;       // cells valid in the input and inverted now (what makes a frame invalid)
     std::vector<std::int64_t> worst_inverted;  // the worst of those
-    std::optional<UntangleReport> untangled;  // when --untangle found inverted cells to repair
+    std::optional<UntangleReport> untangled;  // when --untangle (or dg-harmonic's last resort) found cells to repair
+    bool last_resort = false;                 // the repair was dg-harmonic's last resort, not --untangle
     double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
     std::vector<std::string> warnings;
 };
@@ -83,6 +85,7 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"rbf_centres", f.step.rbf_centres},
             {"rbf_boundary_error", f.step.rbf_boundary_error},
             {"untangle", f.untangled ? untangle_json(*f.untangled) : nlohmann::json(nullptr)},
+            {"last_resort", f.last_resort},
             {"seconds",
              {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
               {"write", f.write_seconds}}},
@@ -114,7 +117,8 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
               << ", write " << milliseconds(f.write_seconds) << "\n";
     if (const auto& u = f.untangled)
-        std::cout << "untangle  inverted cells " << u->inverted_before << " -> " << u->inverted_after
+        std::cout << "untangle  " << (f.last_resort ? "(dg-harmonic's last resort) " : "") << "inverted cells "
+                  << u->inverted_before << " -> " << u->inverted_after
                   << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
                   << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
                   << milliseconds(f.untangle_seconds) << "\n";
@@ -201,7 +205,20 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             if (u.below_target_before > 0) f.untangled = u;
             f.untangle_seconds = sw.lap();
         }
-        const std::vector<double> quality = cell_qualities(deformed, in.orientation);
+        std::vector<double> quality = cell_qualities(deformed, in.orientation);
+        if (method == Method::dg_harmonic && !a.untangle && !a.no_untangle &&
+            !newly_inverted_cells(quality, in.original_cell_quality).empty()) {
+            // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
+            // folded cells (a moving face bounded by fixed walls), repair them
+            // locally, and say so in the report.
+            f.quality_seconds = sw.lap();  // the first measure; the second counts with the repair
+            progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
+            f.untangled = untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes,
+                                   deformed.points);
+            f.last_resort = true;
+            quality = cell_qualities(deformed, in.orientation);
+            f.untangle_seconds = sw.lap();
+        }
         const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
         f.quality = summarize_quality(quality);
         f.ratio = summarize_ratios(ratio);
@@ -209,7 +226,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         const std::vector<std::int64_t> folded = newly_inverted_cells(quality, in.original_cell_quality);
         f.inverted_by_motion = static_cast<std::int64_t>(folded.size());
         f.worst_inverted = worst_cells(folded, quality, 10);
-        f.quality_seconds = sw.lap();
+        f.quality_seconds += sw.lap();
         const bool invalid = f.inverted_by_motion > 0;
         if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, k, frames);
@@ -351,9 +368,9 @@ std::string invalid_result_advice(Method method) {
             return "For rbf: try --method dg-harmonic, a compact support (--rbf-radius), or --untangle to repair "
                    "the inverted cells";
         case Method::dg_harmonic:
-            return "For dg-harmonic: try --untangle to repair the inverted cells (a moving face bounded by fixed "
-                   "walls folds cells with every method, docs/dg-harmonic.md), or a finer coarse level "
-                   "(--harmonic-wall-spacing 3)";
+            return "For dg-harmonic: its untangle last resort (off with --no-untangle) could not repair every "
+                   "cell: try a finer coarse level (--harmonic-wall-spacing 3), or check that the boundary motion "
+                   "itself does not fold the boundary's faces (docs/dg-harmonic.md)";
     }
     return "";
 }
@@ -376,6 +393,10 @@ void add_deform_command(CLI::App& app) {
                     "With --untangle: also repair the cells of quality at or below this (default 0: inverted only)")
         ->check(CLI::Range(0.0, 0.99))
         ->needs(untangle_flag);
+    cmd->add_flag("--no-untangle", args->no_untangle,
+                  "dg-harmonic: no last resort (by default, cells its step inverts are repaired by the untangle "
+                  "step, reported in the output)")
+        ->excludes(untangle_flag);
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(

@@ -306,6 +306,45 @@ TEST(CliDeform, Naca0012RotationsKeepEveryCellValid) {
 // walls: DG-IDW alone inverts cells next to the rim (exit 3, nothing written);
 // --untangle repairs them, reports what it did, and the file written has no
 // inverted cell by `dgwarp quality`'s own count.
+// #12: the robust method keeps every cell valid on SU2's four bricks with the
+// top face turned 10 degrees inside fixed walls, where its step alone folds
+// 34 to 132 cells: its untangle last resort repairs them, and says so.
+TEST(CliDeform, DgHarmonicsLastResortKeepsTheBricksTopFaceTurnValidAndSaysSo) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = scratch_dir();
+    const auto motion = source_dir() / "examples" / "motions" / "brick_rotate_top.json";
+    for (const char* brick : {"hex", "prism", "pyra", "tets"}) {
+        SCOPED_TRACE(brick);
+        const auto mesh = su2_meshes_dir() / ("deformation_brick_" + std::string(brick) + "_mesh_brick_" + brick + "_ffd.su2");
+        const std::string base = "deform " + quoted(mesh) + " -m " + quoted(motion) + " --method dg-harmonic -o ";
+        CommandResult r = run_cli(base + quoted(dir / "out.su2") + " --json");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const auto frame = nlohmann::json::parse(r.out).at("frames").at(0);
+        EXPECT_EQ(frame.at("quality").at("inverted"), 0);
+        EXPECT_GT(frame.at("quality").at("min").get<double>(), 0.02);
+        EXPECT_TRUE(frame.at("last_resort").get<bool>());
+        EXPECT_GT(frame.at("untangle").at("inverted_before").get<long>(), 0);  // the step alone folds cells
+        EXPECT_EQ(frame.at("untangle").at("inverted_after"), 0);
+        // Without the last resort the step's own result is seen: invalid.
+        r = run_cli(base + quoted(dir / "raw.su2") + " --no-untangle -q");
+        EXPECT_EQ(r.exit_code, 3);
+        EXPECT_FALSE(std::filesystem::exists(dir / "raw.su2"));
+    }
+    // The text report names the repair.
+    const auto hex = su2_meshes_dir() / "deformation_brick_hex_mesh_brick_hex_ffd.su2";
+    const CommandResult text =
+        run_cli("deform " + quoted(hex) + " -m " + quoted(motion) + " --method dg-harmonic -o " + quoted(dir / "t.su2"));
+    EXPECT_NE(text.out.find("untangle  (dg-harmonic's last resort) inverted cells"), std::string::npos) << text.out;
+    // Where nothing folds, there is no repair.
+    const auto [rb_dir, rect_box, rotation] = rect_box_files();
+    const CommandResult plain = run_cli("deform " + quoted(rect_box) + " -m " + quoted(rotation) +
+                                        " --method dg-harmonic --json -o " + quoted(rb_dir / "rb.su2"));
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    const auto rb_frame = nlohmann::json::parse(plain.out).at("frames").at(0);
+    EXPECT_FALSE(rb_frame.at("last_resort").get<bool>());
+    EXPECT_TRUE(rb_frame.at("untangle").is_null());
+}
+
 TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
     DGWARP_REQUIRE_SHARED_MESHES();
     const auto dir = scratch_dir();
