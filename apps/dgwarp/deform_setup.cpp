@@ -188,7 +188,7 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
     in.resolve_seconds = sw.lap();
     progress.phase("measuring the original mesh's quality");
     in.own_orientation = cell_orientations(in.mesh);
-    in.orientation = dominant_orientations(in.mesh);
+    in.orientation = dominant_orientations(in.mesh, in.own_orientation);
     in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
     in.original_quality = summarize_quality(in.original_cell_quality);
     if (const std::int64_t bad = in.original_quality.inverted; bad > 0)

@@ -55,7 +55,11 @@ std::vector<std::int8_t> cell_orientations(const Mesh& reference) {
 }
 
 std::vector<std::int8_t> dominant_orientations(const Mesh& mesh) {
-    std::vector<std::int8_t> orientation = cell_orientations(mesh);
+    return dominant_orientations(mesh, cell_orientations(mesh));
+}
+
+std::vector<std::int8_t> dominant_orientations(const Mesh& mesh, std::vector<std::int8_t> orientation) {
+    assert(orientation.size() == mesh.cells.size());
     // Balance of +1 over -1 cells per cell type: real files mix conventions by
     // type (SU2's square-cylinder test mesh has clockwise triangles and
     // counter-clockwise quadrilaterals), so a per-dimension majority would

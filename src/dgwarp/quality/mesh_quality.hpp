@@ -20,6 +20,8 @@ std::vector<std::int8_t> cell_orientations(const Mesh& reference);
 /// majority of its type (files may write, e.g., triangles clockwise and
 /// quadrilaterals counter-clockwise); size mesh.cells.size().
 std::vector<std::int8_t> dominant_orientations(const Mesh& mesh);
+/// The same from the cells' own orientations (cell_orientations(mesh)), already computed.
+std::vector<std::int8_t> dominant_orientations(const Mesh& mesh, std::vector<std::int8_t> own);
 
 /// Shape quality of every cell (cell_shape_quality; size mesh.cells.size()),
 /// judged against `orientations` (size mesh.cells.size()). Threaded (each cell
