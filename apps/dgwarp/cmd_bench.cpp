@@ -14,12 +14,12 @@
 #include "commands.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/repair/untangle.hpp"
+#include "flag_values.hpp"
 #include "progress_line.hpp"
 #include "stopwatch.hpp"
 
@@ -221,7 +221,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
 
 void run_bench(const BenchArgs& a) {
     Stopwatch total;
-    set_num_threads(a.threads);
+    use_threads(a.threads);
     std::vector<std::string> names = a.cases.empty() ? case_names() : a.cases;
     for (const auto& n : names) case_size_count(n);  // unknown names fail before any work
     const std::filesystem::path cache =
@@ -282,8 +282,7 @@ void add_bench_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("bench", "Run the paper's test cases with every method; print our figures "
                                                 "beside the paper's (Tables 1-10)");
     cmd->add_flag("--quick", args->quick, "Small sizes only, no 3D RBF (a few minutes)");
-    cmd->add_option("--threads", args->threads, "Threads (default 1: the paper's figures are single-core)")
-        ->check(CLI::PositiveNumber);
+    add_threads_option(cmd, args->threads, "1, as the paper's single-core figures");
     cmd->add_option("--case", args->cases, "Run only these cases (repeatable)");
     cmd->add_option("--markdown", args->markdown, "Write the tables as Markdown (e.g. docs/RESULTS.md)");
     cmd->add_option("--json", args->json, "Write the results as JSON");

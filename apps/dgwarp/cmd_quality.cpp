@@ -4,9 +4,9 @@
 
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "flag_values.hpp"
 #include "progress_line.hpp"
 #include "report.hpp"
 
@@ -24,7 +24,7 @@ struct QualityArgs {
 };
 
 void run_quality(const QualityArgs& a) {
-    if (a.threads > 0) set_num_threads(a.threads);
+    use_threads(a.threads);
     ProgressLine progress(!a.json);
     const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh));
     std::vector<std::int8_t> orientation;
@@ -78,7 +78,7 @@ void add_quality_command(CLI::App& app) {
                     "The undeformed mesh: judge orientation against it and report the per-cell ratio "
                     "deformed/original (what matters on boundary-layer meshes)");
     cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", args->threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
+    add_threads_option(cmd, args->threads, "all cores");
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("--histogram", args->histogram, "Also print the quality histogram");
     cmd->footer(

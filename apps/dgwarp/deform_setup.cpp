@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "flag_values.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
 
@@ -56,7 +56,7 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
     cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", a.threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
+    add_threads_option(cmd, a.threads, "all cores");
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
@@ -122,7 +122,7 @@ MethodOptions method_options(const SetupArgs& args) {
 }
 
 Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
-    if (args.threads > 0) set_num_threads(args.threads);
+    use_threads(args.threads);
     Inputs in;
     in.args = args;
     Stopwatch sw;
