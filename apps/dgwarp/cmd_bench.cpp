@@ -20,6 +20,7 @@
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "flag_values.hpp"
+#include "output_files.hpp"
 #include "progress_line.hpp"
 #include "stopwatch.hpp"
 
@@ -220,6 +221,17 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
 }
 
 void run_bench(const BenchArgs& a) {
+    // The outputs, before hours of work.
+    if (!a.markdown.empty()) {
+        require_extension("--markdown", a.markdown, {".md"}, "Markdown");
+        check_output_file(a.markdown, {});
+    }
+    if (!a.json.empty()) {
+        require_extension("--json", a.json, {".json"}, "JSON");
+        check_output_file(a.json, {});
+    }
+    if (!a.pictures.empty()) make_output_folder(a.pictures);
+    if (!a.cache.empty()) make_output_folder(a.cache);
     Stopwatch total;
     use_threads(a.threads);
     std::vector<std::string> names = a.cases.empty() ? case_names() : a.cases;

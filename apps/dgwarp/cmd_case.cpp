@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "output_files.hpp"
 
 namespace dgwarp::cli {
 
@@ -17,6 +18,8 @@ struct CaseArgs {
 };
 
 void run_case(const CaseArgs& a) {
+    require_mesh_extension("--output", a.output);
+    check_output_file(a.output, {});
     const Mesh mesh = make_case(a.name, a.size);
     write_mesh(a.output, mesh);
     std::cout << "wrote " << a.output << ": " << a.name << ", " << mesh.num_points() << " nodes, " << mesh.cells.size()

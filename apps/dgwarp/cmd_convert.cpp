@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "output_files.hpp"
 #include "progress_line.hpp"
 #include "report.hpp"
 
@@ -20,6 +21,8 @@ struct ConvertArgs {
 };
 
 void run_convert(const ConvertArgs& a) {
+    require_mesh_extension("output", a.output);
+    check_output_file(a.output, {a.input});
     ProgressLine progress(!a.quiet);
     const Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input));
     progress.phase("writing " + a.output);
@@ -43,7 +46,7 @@ void add_convert_command(CLI::App& app) {
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     cmd->footer(
         "The output is written to a temporary file and renamed into place, so an existing file is\n"
-        "never left half-written.\n\n"
+        "never left half-written. The output may not be the input, nor a read-only file.\n\n"
         "Examples:\n"
         "  dgwarp convert mesh.su2 mesh.msh\n"
         "  dgwarp convert mesh.msh mesh.su2\n"

@@ -11,7 +11,9 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/untangle.hpp"
+#include "dgwarp/io/atomic_write.hpp"
 #include "frame_output.hpp"
+#include "output_files.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
 
@@ -253,9 +255,19 @@ void run_deform(const DeformArgs& a) {
     const bool several = methods.size() > 1;
     if (several && !a.plan.empty())
         throw CLI::ValidationError("--plan", "a saved plan belongs to one method; it cannot be used with --method all");
+    require_mesh_extension("--output", a.output);
     const bool text = !a.json && !a.quiet;
     ProgressLine progress(text);
-    const Inputs in = read_inputs(a.setup, progress);
+    const Inputs in = read_inputs(a.setup, progress, [&](const MotionSpec& spec) {
+        // Every file this run may write (each method's, each frame's), before any work.
+        std::vector<std::filesystem::path> inputs = motion_files(spec);
+        inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
+        if (!a.plan.empty()) inputs.emplace_back(a.plan);
+        check_folder_writable(std::filesystem::path(a.output).parent_path());
+        const std::size_t frames = frame_count(spec);
+        for (Method m : methods)
+            for (std::size_t k = 0; k < frames; ++k) check_output(frame_path(method_output(a.output, m, several), k, frames), inputs);
+    });
     const std::size_t frames = frame_count(in.spec);
     if (text) print_inputs(std::cout, in, frames);
 
@@ -344,7 +356,8 @@ void add_deform_command(CLI::App& app) {
     cmd->footer(
         "The motion file names each moving marker's motion (docs/MOTION.md); markers not named stay fixed.\n"
         "--method all runs every method and prints a comparison table (as the paper's tables).\n"
-        "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n\n"
+        "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n"
+        "No output (nor a frame's or a method's) may be an input; outputs are checked before the work.\n\n"
         "Examples:\n"
         "  dgwarp deform naca0012.su2 --motion rotate45.json -o deformed.vtu\n"
         "  dgwarp deform naca0012.su2 --motion rotate45.json -o cmp.vtu --method all\n"

@@ -14,6 +14,7 @@
 #include "dgwarp/picture/picture_window.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "frame_output.hpp"
+#include "output_files.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
 
@@ -39,8 +40,11 @@ MotionSpec demo_motion(double angle_deg) {
 }
 
 void run_demo(const DemoArgs& a) {
-    std::filesystem::create_directories(a.folder);
+    make_output_folder(a.folder);
     const std::filesystem::path dir = std::filesystem::absolute(a.folder);
+    for (const char* name : {"rect_box.su2", "rect_box_dg-idw.vtu", "rect_box_dg-idw.png", "rect_box_dg-idw_closeup.png",
+                             "rect_box.png"})
+        check_output(dir / name, {});
 
     std::cout << "dgwarp demo: the paper's first case, a rectangle in a box (structured quadrilaterals),\n"
               << "the rectangle turned by " << a.angle_deg << " degrees and moved by (0.5, 0.25); the box stays.\n";

@@ -8,6 +8,7 @@
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/picture/picture_window.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "output_files.hpp"
 
 namespace dgwarp::cli {
 
@@ -27,6 +28,10 @@ struct PictureArgs {
 };
 
 void run_picture(const PictureArgs& a) {
+    require_extension("--output", a.output, {".png"}, "a PNG picture");
+    std::vector<std::filesystem::path> inputs{a.mesh};
+    if (!a.reference.empty()) inputs.emplace_back(a.reference);
+    check_output_file(a.output, inputs);
     const Mesh mesh = read_mesh(a.mesh, {a.zone});
     std::vector<double> values;
     std::string label = "quality";
@@ -64,7 +69,7 @@ void add_picture_command(CLI::App& app) {
     auto args = std::make_shared<PictureArgs>();
     CLI::App* cmd = app.add_subcommand("picture", "Draw a 2D mesh as a PNG picture, cells coloured by quality");
     cmd->add_option("mesh", args->mesh, "2D mesh file (.su2, .msh)")->required();
-    cmd->add_option("-o,--output", args->output, "PNG file to write")->required();
+    cmd->add_option("-o,--output", args->output, "PNG file to write (NAME.png)")->required();
     cmd->add_option("--reference", args->reference, "The undeformed mesh: orientation (and --ratio) from it");
     cmd->add_flag("--ratio", args->ratio, "Colour by the per-cell quality ratio to --reference");
     cmd->add_option("--around", args->around, "Close-up of this marker (its nodes' bounding box, enlarged by --zoom)");
@@ -75,7 +80,8 @@ void add_picture_command(CLI::App& app) {
     cmd->add_option("--title", args->title, "Title (default: the file name)");
     cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
     cmd->footer(
-        "Inverted cells are red. Examples:\n"
+        "Inverted cells are red. The output's name ends in .png, and it may not be one of the inputs.\n\n"
+        "Examples:\n"
         "  dgwarp picture naca0012.su2 -o mesh.png\n"
         "  dgwarp picture deformed.su2 --reference naca0012.su2 --around airfoil --zoom 1.5 -o te.png\n"
         "  dgwarp picture deformed.su2 --reference naca0012.su2 --ratio -o ratio.png");

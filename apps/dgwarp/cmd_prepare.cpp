@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "deform_setup.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "output_files.hpp"
 #include "stopwatch.hpp"
 
 namespace dgwarp::cli {
@@ -23,8 +24,13 @@ void run_prepare(const PrepareArgs& a) {
     if (method != Method::dg_idw && method != Method::dg_harmonic)
         throw CLI::ValidationError("--method", "only dg-idw and dg-harmonic plans can be saved, not " +
                                                    std::string(method_name(method)));
+    require_extension("--output", a.output, {".plan"}, "a plan file");
     ProgressLine progress(!a.json && !a.quiet);
-    const Inputs in = read_inputs(a.setup, progress);
+    const Inputs in = read_inputs(a.setup, progress, [&a](const MotionSpec& spec) {
+        std::vector<std::filesystem::path> inputs = motion_files(spec);
+        inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
+        check_output_file(a.output, inputs);
+    });
     const PlannedMethod p = plan_method(in, method, "", progress);
     Stopwatch sw;
     save_plan(a.output, p.plan);
@@ -51,13 +57,14 @@ void add_prepare_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "prepare", "Build a dg-idw or dg-harmonic plan (graph, node location, weights or factor) once and save it");
     add_setup_options(cmd, args->setup);
-    cmd->add_option("-o,--output", args->output, "Plan file to write")->required();
+    cmd->add_option("-o,--output", args->output, "Plan file to write (NAME.plan)")->required();
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
         "The plan depends on the mesh and on which markers move (from the motion file), not on the\n"
         "motion's values: reuse it for every step with 'dgwarp deform --plan' (the plan's method is used).\n"
-        "Plans can be saved for --method dg-idw (a and L stay deform options) and dg-harmonic.\n\n"
+        "Plans can be saved for --method dg-idw (a and L stay deform options) and dg-harmonic.\n"
+        "The plan file's name must end in .plan, and it may not be one of the inputs.\n\n"
         "Examples:\n"
         "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
         "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");

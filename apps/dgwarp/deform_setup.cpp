@@ -121,14 +121,16 @@ MethodOptions method_options(const SetupArgs& args) {
     return o;
 }
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
+                   const std::function<void(const MotionSpec&)>& check_outputs) {
     use_threads(args.threads);
     Inputs in;
     in.args = args;
     Stopwatch sw;
+    in.spec = read_motion_file(args.motion);
+    check_outputs(in.spec);
     progress.phase("reading " + args.mesh);
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh));
-    in.spec = read_motion_file(args.motion);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     in.boundary = resolve_boundary(in.mesh, in.spec);

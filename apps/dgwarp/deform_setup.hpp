@@ -2,6 +2,7 @@
 // What `dgwarp deform` and `dgwarp prepare` share: reading the mesh and the
 // motion, classifying the boundary, and building (or loading) a method's plan.
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
@@ -57,7 +58,11 @@ struct Inputs {
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress);
+/// Reads the motion file, calls `check_outputs` with it (so that outputs are
+/// checked before the long work: their names may depend on its frames, and
+/// none may be a file it names), then reads the mesh and classifies the boundary.
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
+                   const std::function<void(const MotionSpec&)>& check_outputs);
 
 /// A method's plan for the inputs: built, or loaded from `plan_file` (DG-IDW
 /// only) and checked to fit the mesh and boundary.
