@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "flag_values.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "output_files.hpp"
 #include "progress_line.hpp"
@@ -40,7 +41,7 @@ void add_convert_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("convert", "Convert a mesh between formats (chosen by file extension)");
     cmd->add_option("input", args->input, "Input mesh (.su2, .msh)")->required();
     cmd->add_option("output", args->output, "Output mesh (.su2, .msh, .vtu)")->required();
-    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 input (1-based)")->check(CLI::PositiveNumber);
+    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 input (1-based)")->check(positive_whole_number());
     cmd->add_option("--gmsh-version", args->gmsh_version, "MSH version to write: 41 (4.1) or 22 (2.2)")
         ->check(CLI::IsMember({41, 22}));
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

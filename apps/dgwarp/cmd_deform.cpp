@@ -12,6 +12,7 @@
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "dgwarp/io/atomic_write.hpp"
+#include "flag_values.hpp"
 #include "frame_output.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
@@ -135,7 +136,7 @@ std::filesystem::path method_output(const std::filesystem::path& out, Method met
 }
 
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
-                     ProgressLine& progress) {
+                     ProgressLine& progress, WarningPrinter& warnings) {
     MethodRun run;
     const std::size_t frames = frame_count(in.spec);
     try {
@@ -151,18 +152,20 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         run.error = e.what();
         return run;
     }
-    if (text && !several) print_plan(std::cout, in, run.planned);
+    if (text && !several) print_plan(std::cout, in, run.planned, warnings);
     if (text && several)
-        for (const auto& w : plan_warnings(run.planned))
-            std::cerr << "warning: " << method_name(method) << ": " << w << "\n";
+        for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w);
     const auto out = method_output(a.output, method, several);
     Mesh deformed = in.mesh;
     for (std::size_t k = 0; k < frames; ++k) {
         FrameResult f;
         f.frame = k;
         f.time = frame_time(in.spec, k);
+        // Frame k as in the rows, the JSON and the file names (0-based), and how far the series is.
         const std::string phase = std::string(method_name(method)) + ": deforming" +
-                                  (frames > 1 ? " frame " + std::to_string(k + 1) + "/" + std::to_string(frames) : "");
+                                  (frames > 1 ? " frame " + std::to_string(k) + " (" + std::to_string(k + 1) + " of " +
+                                                    std::to_string(frames) + ")"
+                                              : "");
         progress.phase(phase);
         const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
         f.warnings = motion.warnings;
@@ -177,7 +180,8 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             break;
         }
         f.deform_seconds = sw.lap();
-        for (auto& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
+        const std::vector<std::string> step_warning_texts = step_warnings(f.step);
+        f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
         if (a.untangle) {
             progress.phase(std::string(method_name(method)) + ": untangling");
             UntangleOptions options;
@@ -202,7 +206,8 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         }
         if (text && !several) {
             progress.clear();
-            for (const auto& w : f.warnings) std::cerr << "warning: frame " << k << ": " << w << "\n";
+            for (const auto& w : motion.warnings) warnings.print(w);  // they name the frame
+            for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(k) + ": ");
             if (frames == 1) {
                 print_single_frame(in, f);
                 if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
@@ -269,10 +274,11 @@ void run_deform(const DeformArgs& a) {
             for (std::size_t k = 0; k < frames; ++k) check_output(frame_path(method_output(a.output, m, several), k, frames), inputs);
     });
     const std::size_t frames = frame_count(in.spec);
-    if (text) print_inputs(std::cout, in, frames);
+    WarningPrinter warnings(text);
+    if (text) print_inputs(std::cout, in, frames, warnings);
 
     std::vector<MethodRun> runs;
-    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress));
+    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress, warnings));
     if (text && several) print_table(in, runs);
 
     if (a.json) {
@@ -349,7 +355,7 @@ void add_deform_command(CLI::App& app) {
                       "(boundary nodes stay; docs/UNTANGLE.md)");
     cmd->add_option("--untangle-target", args->untangle_target,
                     "With --untangle: also repair the cells of quality at or below this (default 0: inverted only)")
-        ->check(CLI::Range(0.0, 0.99))
+        ->check(number_between(0, 0.99))
         ->needs(untangle_flag);
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");

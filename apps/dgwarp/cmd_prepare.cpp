@@ -44,8 +44,9 @@ void run_prepare(const PrepareArgs& a) {
         j["seconds"]["write"] = write_seconds;
         std::cout << j.dump(2) << "\n";
     } else if (!a.quiet) {
-        print_inputs(std::cout, in, frame_count(in.spec));
-        print_plan(std::cout, in, p);
+        WarningPrinter warnings(true);
+        print_inputs(std::cout, in, frame_count(in.spec), warnings);
+        print_plan(std::cout, in, p, warnings);
         std::cout << "wrote " << a.output << "\n";
     }
 }

@@ -14,6 +14,7 @@
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "progress_line.hpp"
+#include "warning_printer.hpp"
 
 namespace dgwarp::cli {
 
@@ -84,10 +85,10 @@ std::vector<std::string> plan_warnings(const PlannedMethod& p);
 /// given different motions.
 std::vector<std::string> step_warnings(const StepReport& step);
 
-/// Lines about the mesh, motion and boundary.
-void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames);
-/// Lines about the plan and its prepare time; its warnings on standard error.
-void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
+/// Lines about the mesh, motion and boundary; the boundary's warnings through `warnings`.
+void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings);
+/// Lines about the plan and its prepare time; its warnings through `warnings`.
+void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings);
 
 /// The JSON report's common part (docs/JSON.md).
 nlohmann::json inputs_json(const Inputs& in, const std::string& command);

@@ -1,5 +1,6 @@
 #include "flag_values.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -42,6 +43,25 @@ CLI::Validator non_negative_number() {
 CLI::Validator number_between(double low, double high) {
     return real_validator("a number from " + flag_number_text(low) + " to " + flag_number_text(high),
                           [low, high](double x) { return x >= low && x <= high; });
+}
+
+CLI::Validator positive_number_up_to(double high) {
+    return real_validator("a number > 0 and <= " + flag_number_text(high), [high](double x) { return x > 0 && x <= high; });
+}
+
+CLI::Validator finite_number() {
+    return real_validator("a finite number", [](double) { return true; });
+}
+
+CLI::Validator one_of(const std::vector<std::string>& names, const std::string& what) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    return CLI::Validator(
+        [names, what, list](std::string& text) -> std::string {
+            if (std::find(names.begin(), names.end(), text) != names.end()) return {};
+            return "expected " + what + ": one of " + list + "; got '" + text + "'";
+        },
+        "", "");
 }
 
 CLI::Validator whole_number_between(long long low, long long high) {

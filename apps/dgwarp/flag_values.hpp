@@ -5,6 +5,7 @@
 // DBL_MAX in full, and its PositiveNumber lets nan through).
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 namespace dgwarp::cli {
 
@@ -14,6 +15,12 @@ CLI::Validator positive_number();
 CLI::Validator non_negative_number();
 /// A finite number in [low, high].
 CLI::Validator number_between(double low, double high);
+/// A finite number in (0, high].
+CLI::Validator positive_number_up_to(double high);
+/// Any finite number.
+CLI::Validator finite_number();
+/// One of `names` ("expected one of a, b, c; got d"); `what` names them ("a case").
+CLI::Validator one_of(const std::vector<std::string>& names, const std::string& what);
 /// A whole number in [low, high].
 CLI::Validator whole_number_between(long long low, long long high);
 /// A whole number >= 1 (counts, 1-based zones).
