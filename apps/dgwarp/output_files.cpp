@@ -2,7 +2,6 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
 #include <variant>
 
 #include "dgwarp/core/error.hpp"
@@ -12,12 +11,6 @@
 namespace dgwarp::cli {
 
 namespace {
-
-std::string lower_case_extension(const std::filesystem::path& p) {
-    std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
 
 void add_table_source(std::vector<std::filesystem::path>& files, const std::string& source) {
     if (!source.empty() && std::find(files.begin(), files.end(), source) == files.end()) files.emplace_back(source);

@@ -12,12 +12,6 @@ namespace dgwarp {
 
 namespace {
 
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
 std::string joined(const std::vector<std::string>& v) {
     std::string s;
     for (const auto& e : v) s += (s.empty() ? "" : ", ") + e;
@@ -26,11 +20,17 @@ std::string joined(const std::vector<std::string>& v) {
 
 }  // namespace
 
+std::string lower_case_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
 std::vector<std::string> readable_extensions() { return {".su2", ".msh"}; }
 std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
 
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower_case_extension(path);
     if (ext == ".su2") return read_su2(path, options.zone, progress);
     if (ext == ".msh") return read_gmsh(path, progress);
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
@@ -39,7 +39,7 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                 const WriteOptions& options) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower_case_extension(path);
     if (ext == ".su2") return write_su2(path, mesh);
     if (ext == ".msh") return write_gmsh(path, mesh, options.gmsh_version);
     if (ext == ".vtu") return write_vtu(path, mesh, fields);
