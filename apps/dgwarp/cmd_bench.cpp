@@ -14,12 +14,13 @@
 #include "commands.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/repair/untangle.hpp"
+#include "flag_values.hpp"
+#include "output_files.hpp"
 #include "progress_line.hpp"
 #include "stopwatch.hpp"
 
@@ -29,6 +30,7 @@ namespace {
 
 struct BenchArgs {
     bool quick = false;
+    bool quiet = false;  // nothing but errors on the terminal; the files are written
     int threads = 1;
     std::string markdown, json, pictures, commit, cache;
     std::vector<std::string> cases;  // empty: all
@@ -59,7 +61,7 @@ std::string utc_now() {
 /// `timeout` seconds, through a .msh file in `dir` (kept there as a cache).
 /// Must run before this process starts OpenMP threads (fork).
 Mesh generate_with_timeout(const std::string& name, int size, const std::filesystem::path& dir, int timeout,
-                           ProgressLine& progress) {
+                           bool quiet, ProgressLine& progress) {
     std::filesystem::create_directories(dir);
     const auto file = dir / (name + "-" + std::to_string(size) + ".msh");
     const auto read = [&] {
@@ -68,7 +70,7 @@ Mesh generate_with_timeout(const std::string& name, int size, const std::filesys
         return mesh;
     };
     if (std::filesystem::exists(file)) return read();
-    std::cerr << "bench: generating " << name << " size " << size << " with Gmsh ..." << std::endl;
+    if (!quiet) std::cerr << "bench: generating " << name << " size " << size << " with Gmsh ..." << std::endl;
     const pid_t child = ::fork();
     if (child < 0) throw Error("bench: fork failed");
     if (child == 0) {
@@ -192,7 +194,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             continue;
         }
         const std::string what = "bench: " + name + " " + std::to_string(size) + " " + cm.name + " " + v.label;
-        std::cerr << what << " ..." << std::endl;
+        if (!a.quiet) std::cerr << what << " ..." << std::endl;
         const MethodOptions& options = v.options;
         try {
             Stopwatch sw;
@@ -220,8 +222,19 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
 }
 
 void run_bench(const BenchArgs& a) {
+    // The outputs, before hours of work.
+    if (!a.markdown.empty()) {
+        require_extension("--markdown", a.markdown, {".md"}, "Markdown");
+        check_output_file(a.markdown, {});
+    }
+    if (!a.json.empty()) {
+        require_extension("--json", a.json, {".json"}, "JSON");
+        check_output_file(a.json, {});
+    }
+    if (!a.pictures.empty()) make_output_folder(a.pictures);
+    if (!a.cache.empty()) make_output_folder(a.cache);
     Stopwatch total;
-    set_num_threads(a.threads);
+    use_threads(a.threads);
     std::vector<std::string> names = a.cases.empty() ? case_names() : a.cases;
     for (const auto& n : names) case_size_count(n);  // unknown names fail before any work
     const std::filesystem::path cache =
@@ -234,13 +247,13 @@ void run_bench(const BenchArgs& a) {
         std::optional<Mesh> mesh;
         std::string error;
     };
-    ProgressLine progress(true);  // on a terminal only; the results go to standard output and files
+    ProgressLine progress(!a.quiet);  // on a terminal only; the results go to standard output and files
     std::vector<Job> jobs;
     for (const auto& n : names)
         for (int s = 0; s < (a.quick ? 1 : case_size_count(n)); ++s) jobs.push_back({n, s, std::nullopt, ""});
     for (Job& j : jobs)
         if (case_size_count(j.name) > 1) try {
-                j.mesh = generate_with_timeout(j.name, j.size, cache, a.mesh_timeout, progress);
+                j.mesh = generate_with_timeout(j.name, j.size, cache, a.mesh_timeout, a.quiet, progress);
             } catch (const Error& e) {
                 j.error = e.what();
             }
@@ -263,7 +276,7 @@ void run_bench(const BenchArgs& a) {
             rows.push_back(run_motion(a, j.name, j.size, *j.mesh, cm, progress));
             auto& pictures = rows.back().pictures;
             pictures.insert(pictures.begin(), original_pictures.begin(), original_pictures.end());
-            std::cout << bench_text(rows.back()) << std::flush;
+            if (!a.quiet) std::cout << bench_text(rows.back()) << std::flush;
         }
         j.mesh.reset();
     }
@@ -282,16 +295,17 @@ void add_bench_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("bench", "Run the paper's test cases with every method; print our figures "
                                                 "beside the paper's (Tables 1-10)");
     cmd->add_flag("--quick", args->quick, "Small sizes only, no 3D RBF (a few minutes)");
-    cmd->add_option("--threads", args->threads, "Threads (default 1: the paper's figures are single-core)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--case", args->cases, "Run only these cases (repeatable)");
+    cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (the --markdown and --json files are written)");
+    add_threads_option(cmd, args->threads, "1, as the paper's single-core figures");
+    cmd->add_option("--case", args->cases, "Run only these cases (repeatable)")->check(one_of(case_names(), "a case"));
     cmd->add_option("--markdown", args->markdown, "Write the tables as Markdown (e.g. docs/RESULTS.md)");
     cmd->add_option("--json", args->json, "Write the results as JSON");
     cmd->add_option("--pictures", args->pictures, "Write PNG pictures of the 2D meshes here");
     cmd->add_option("--commit", args->commit, "The git commit to print in the report (the program runs no git)");
     cmd->add_option("--cache", args->cache, "Keep generated 3D meshes (NAME-SIZE.msh) here and reuse them (keyed by name and size only: "
                                     "empty it when the generators change)");
-    cmd->add_option("--mesh-timeout", args->mesh_timeout, "Seconds allowed to Gmsh per 3D mesh (default 1200)");
+    cmd->add_option("--mesh-timeout", args->mesh_timeout, "Seconds allowed to Gmsh per 3D mesh (default 1200)")
+        ->check(positive_whole_number());
     cmd->footer("Examples:\n  dgwarp bench --quick\n"
                 "  dgwarp bench --markdown docs/RESULTS.md --json results.json --pictures docs/results "
                 "--commit $(git rev-parse --short HEAD)");

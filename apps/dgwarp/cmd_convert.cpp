@@ -3,7 +3,9 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "flag_values.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "output_files.hpp"
 #include "progress_line.hpp"
 #include "report.hpp"
 
@@ -20,6 +22,8 @@ struct ConvertArgs {
 };
 
 void run_convert(const ConvertArgs& a) {
+    require_mesh_extension("output", a.output);
+    check_output_file(a.output, {a.input});
     ProgressLine progress(!a.quiet);
     MeshExtras extras;
     const Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input), extras);
@@ -43,13 +47,13 @@ void add_convert_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("convert", "Convert a mesh between formats (chosen by file extension)");
     cmd->add_option("input", args->input, "Input mesh (.su2, .msh)")->required();
     cmd->add_option("output", args->output, "Output mesh (.su2, .msh, .vtu)")->required();
-    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 input (1-based)")->check(CLI::PositiveNumber);
+    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 input (1-based)")->check(positive_whole_number());
     cmd->add_option("--gmsh-version", args->gmsh_version, "MSH version to write: 41 (4.1) or 22 (2.2)")
         ->check(CLI::IsMember({41, 22}));
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     cmd->footer(
         "The output is written to a temporary file and renamed into place, so an existing file is\n"
-        "never left half-written.\n\n"
+        "never left half-written. The output may not be the input, nor a read-only file.\n\n"
         "Examples:\n"
         "  dgwarp convert mesh.su2 mesh.msh\n"
         "  dgwarp convert mesh.msh mesh.su2\n"

@@ -11,7 +11,10 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/untangle.hpp"
+#include "dgwarp/io/atomic_write.hpp"
+#include "flag_values.hpp"
 #include "frame_output.hpp"
+#include "output_files.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
 
@@ -143,7 +146,7 @@ std::filesystem::path method_output(const std::filesystem::path& out, Method met
 }
 
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
-                     ProgressLine& progress) {
+                     ProgressLine& progress, WarningPrinter& warnings) {
     MethodRun run;
     const std::size_t frames = frame_count(in.spec);
     try {
@@ -160,10 +163,9 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         run.invalid = run.failed = true;  // no mesh: the run is not valid
         return run;
     }
-    if (text && !several) print_plan(std::cout, in, run.planned);
+    if (text && !several) print_plan(std::cout, in, run.planned, warnings);
     if (text && several)
-        for (const auto& w : plan_warnings(run.planned))
-            std::cerr << "warning: " << method_name(method) << ": " << w << "\n";
+        for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w);
     const auto out = method_output(a.output, method, several);
     if (const std::string w = dropped_extras_warning(in.extras, in.args.mesh, out); !w.empty() && !a.quiet)
         std::cerr << "warning: " << w << "\n";
@@ -174,8 +176,11 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         FrameResult f;
         f.frame = k;
         f.time = frame_time(in.spec, k);
+        // Frame k as in the rows, the JSON and the file names (0-based), and how far the series is.
         const std::string phase = std::string(method_name(method)) + ": deforming" +
-                                  (frames > 1 ? " frame " + std::to_string(k + 1) + "/" + std::to_string(frames) : "");
+                                  (frames > 1 ? " frame " + std::to_string(k) + " (" + std::to_string(k + 1) + " of " +
+                                                    std::to_string(frames) + ")"
+                                              : "");
         progress.phase(phase);
         const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
         f.warnings = motion.warnings;
@@ -195,7 +200,8 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             break;
         }
         f.deform_seconds = sw.lap();
-        for (auto& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
+        const std::vector<std::string> step_warning_texts = step_warnings(f.step);
+        f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
         if (a.untangle) {
             progress.phase(std::string(method_name(method)) + ": untangling");
             UntangleOptions options;
@@ -236,7 +242,8 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         }
         if (text && !several) {
             progress.clear();
-            for (const auto& w : f.warnings) std::cerr << "warning: frame " << k << ": " << w << "\n";
+            for (const auto& w : motion.warnings) warnings.print(w);  // they name the frame
+            for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(k) + ": ");
             if (frames == 1) {
                 print_single_frame(in, f);
                 if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
@@ -291,14 +298,25 @@ void run_deform(const DeformArgs& a) {
     const bool several = methods.size() > 1;
     if (several && !a.plan.empty())
         throw CLI::ValidationError("--plan", "a saved plan belongs to one method; it cannot be used with --method all");
+    require_mesh_extension("--output", a.output);
     const bool text = !a.json && !a.quiet;
     ProgressLine progress(text);
-    const Inputs in = read_inputs(a.setup, progress);
+    const Inputs in = read_inputs(a.setup, progress, [&](const MotionSpec& spec) {
+        // Every file this run may write (each method's, each frame's), before any work.
+        std::vector<std::filesystem::path> inputs = motion_files(spec);
+        inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
+        if (!a.plan.empty()) inputs.emplace_back(a.plan);
+        check_folder_writable(std::filesystem::path(a.output).parent_path());
+        const std::size_t frames = frame_count(spec);
+        for (Method m : methods)
+            for (std::size_t k = 0; k < frames; ++k) check_output(frame_path(method_output(a.output, m, several), k, frames), inputs);
+    });
     const std::size_t frames = frame_count(in.spec);
-    if (text) print_inputs(std::cout, in, frames);
+    WarningPrinter warnings(text);
+    if (text) print_inputs(std::cout, in, frames, warnings);
 
     std::vector<MethodRun> runs;
-    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress));
+    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress, warnings));
     if (text && several) print_table(in, runs);
 
     if (a.json) {
@@ -391,7 +409,7 @@ void add_deform_command(CLI::App& app) {
                       "(boundary nodes stay; docs/UNTANGLE.md)");
     cmd->add_option("--untangle-target", args->untangle_target,
                     "With --untangle: also repair the cells of quality at or below this (default 0: inverted only)")
-        ->check(CLI::Range(0.0, 0.99))
+        ->check(number_between(0, 0.99))
         ->needs(untangle_flag);
     cmd->add_flag("--no-untangle", args->no_untangle,
                   "dg-harmonic: no last resort (by default, cells its step inverts are repaired by the untangle "
@@ -402,7 +420,8 @@ void add_deform_command(CLI::App& app) {
     cmd->footer(
         "The motion file names each moving marker's motion (docs/MOTION.md); markers not named stay fixed.\n"
         "--method all runs every method and prints a comparison table (as the paper's tables).\n"
-        "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n\n"
+        "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n"
+        "No output (nor a frame's or a method's) may be an input; outputs are checked before the work.\n\n"
         "Examples:\n"
         "  dgwarp deform naca0012.su2 --motion rotate45.json -o deformed.vtu\n"
         "  dgwarp deform naca0012.su2 --motion rotate45.json -o cmp.vtu --method all\n"

@@ -13,7 +13,9 @@
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/picture/picture_window.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "flag_values.hpp"
 #include "frame_output.hpp"
+#include "output_files.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
 
@@ -24,6 +26,7 @@ namespace {
 struct DemoArgs {
     std::string folder = "dgwarp-demo";
     double angle_deg = 30;
+    bool quiet = false;
 };
 
 // The rectangle turned about its centre and moved a little; the far field stays.
@@ -39,22 +42,29 @@ MotionSpec demo_motion(double angle_deg) {
 }
 
 void run_demo(const DemoArgs& a) {
-    std::filesystem::create_directories(a.folder);
+    make_output_folder(a.folder);
     const std::filesystem::path dir = std::filesystem::absolute(a.folder);
+    for (const char* name : {"rect_box.su2", "rect_box_dg-idw.vtu", "rect_box_dg-idw.png", "rect_box_dg-idw_closeup.png",
+                             "rect_box.png"})
+        check_output(dir / name, {});
+    std::ostream discard(nullptr);  // -q: the report goes nowhere
+    std::ostream& out = a.quiet ? discard : std::cout;
+    char line[256];
 
-    std::cout << "dgwarp demo: the paper's first case, a rectangle in a box (structured quadrilaterals),\n"
+    out << "dgwarp demo: the paper's first case, a rectangle in a box (structured quadrilaterals),\n"
               << "the rectangle turned by " << a.angle_deg << " degrees and moved by (0.5, 0.25); the box stays.\n";
     const Mesh mesh = make_rect_box();
-    std::cout << "  mesh: " << describe_mesh(mesh) << "\n";
+    out << "  mesh: " << describe_mesh(mesh) << "\n";
     const MotionSpec spec = demo_motion(a.angle_deg);
     const ResolvedBoundary boundary = resolve_boundary(mesh, spec);
     const BoundaryMotion motion = resolve_frame(mesh, spec, boundary.boundary, 0).motion;
     const auto orientation = cell_orientations(mesh);
     const std::vector<double> original_quality = cell_qualities(mesh, orientation);
 
-    std::cout << "\nmethod       prepare     deform     min quality  mean quality  inverted\n";
-    std::printf("%-11s  %9s  %9s  %11.4f  %12.4f  %8d\n", "original", "", "", summarize_quality(original_quality).min,
-                summarize_quality(original_quality).mean, 0);
+    out << "\nmethod       prepare     deform     min quality  mean quality  inverted\n";
+    std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11.4f  %12.4f  %8d\n", "original", "", "",
+                  summarize_quality(original_quality).min, summarize_quality(original_quality).mean, 0);
+    out << line;
     Mesh deformed = mesh;
     std::vector<double> dg_idw_points, dg_idw_quality;
     for (Method m : all_methods) {
@@ -67,15 +77,17 @@ void run_demo(const DemoArgs& a) {
             const double deform_seconds = sw.lap();
             const std::vector<double> q = cell_qualities(deformed, orientation);
             const QualitySummary s = summarize_quality(q);
-            std::printf("%-11s  %9s  %9s  %11.4f  %12.4f  %8lld\n", std::string(method_name(m)).c_str(),
-                        milliseconds(prepare_seconds).c_str(), milliseconds(deform_seconds).c_str(), s.min, s.mean,
-                        static_cast<long long>(s.inverted));
+            std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11.4f  %12.4f  %8lld\n",
+                          std::string(method_name(m)).c_str(), milliseconds(prepare_seconds).c_str(),
+                          milliseconds(deform_seconds).c_str(), s.min, s.mean, static_cast<long long>(s.inverted));
+            out << line;
             if (m == Method::dg_idw) {
                 dg_idw_points = deformed.points;
                 dg_idw_quality = q;
             }
         } catch (const InvalidResultError& e) {
-            std::printf("%-11s  %s\n", std::string(method_name(m)).c_str(), e.what());
+            std::snprintf(line, sizeof line, "%-11s  ", std::string(method_name(m)).c_str());
+            out << line << e.what() << "\n";
         }
     }
 
@@ -94,7 +106,7 @@ void run_demo(const DemoArgs& a) {
     picture.window.reset();
     picture.title = "original mesh";
     write_mesh_picture(dir / "rect_box.png", mesh, original_quality, picture);
-    std::cout << "\nwrote\n  " << (dir / "rect_box.su2").string() << "  (original mesh, SU2)\n  "
+    out << "\nwrote\n  " << (dir / "rect_box.su2").string() << "  (original mesh, SU2)\n  "
               << (dir / "rect_box_dg-idw.vtu").string()
               << "  (DG-IDW result: open in ParaView; displacement, quality, quality_ratio)\n  "
               << (dir / "rect_box_dg-idw.png").string() << "  (DG-IDW result, coloured by quality)\n  "
@@ -109,7 +121,10 @@ void add_demo_command(CLI::App& app) {
     auto args = std::make_shared<DemoArgs>();
     CLI::App* cmd = app.add_subcommand("demo", "Run the built-in example and write its results to a folder");
     cmd->add_option("-o,--output", args->folder, "Folder for the results (created if needed)")->capture_default_str();
-    cmd->add_option("--angle", args->angle_deg, "Rotation of the rectangle, degrees")->capture_default_str();
+    cmd->add_option("--angle", args->angle_deg, "Rotation of the rectangle, degrees")
+        ->capture_default_str()
+        ->check(number_between(-360, 360));
+    cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer("Examples:\n  dgwarp demo\n  dgwarp demo -o /tmp/dgwarp-demo --angle 20");
     cmd->callback([args] { run_demo(*args); });
 }

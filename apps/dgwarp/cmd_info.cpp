@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "flag_values.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "progress_line.hpp"
@@ -17,10 +18,11 @@ struct InfoArgs {
     std::string mesh;
     int zone = 1;
     bool json = false;
+    bool quiet = false;
 };
 
 void run_info(const InfoArgs& a) {
-    ProgressLine progress(!a.json);
+    ProgressLine progress(!a.json && !a.quiet);
     const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh));
     progress.phase("measuring quality");
     const BoundingBox box = bounding_box(mesh);
@@ -39,6 +41,7 @@ void run_info(const InfoArgs& a) {
         std::cout << j.dump(2) << "\n";
         return;
     }
+    if (a.quiet) return;
     std::cout << a.mesh << "\n  " << describe_mesh(mesh) << "\n";
     std::cout << "markers\n";
     for (const Marker& m : mesh.markers)
@@ -58,8 +61,9 @@ void add_info_command(CLI::App& app) {
     auto args = std::make_shared<InfoArgs>();
     CLI::App* cmd = app.add_subcommand("info", "Show what a mesh holds: counts, markers, bounding box, quality");
     cmd->add_option("mesh", args->mesh, "Mesh file (.su2, .msh)")->required();
-    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
+    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
+    cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (the exit code says whether the mesh reads)");
     cmd->footer("Examples:\n  dgwarp info wing.su2\n  dgwarp info wing.msh --json");
     cmd->callback([args] { run_info(*args); });
 }

@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "deform_setup.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "output_files.hpp"
 #include "stopwatch.hpp"
 
 namespace dgwarp::cli {
@@ -23,8 +24,13 @@ void run_prepare(const PrepareArgs& a) {
     if (method != Method::dg_idw && method != Method::dg_harmonic)
         throw CLI::ValidationError("--method", "only dg-idw and dg-harmonic plans can be saved, not " +
                                                    std::string(method_name(method)));
+    require_extension("--output", a.output, {".plan"}, "a plan file");
     ProgressLine progress(!a.json && !a.quiet);
-    const Inputs in = read_inputs(a.setup, progress);
+    const Inputs in = read_inputs(a.setup, progress, [&a](const MotionSpec& spec) {
+        std::vector<std::filesystem::path> inputs = motion_files(spec);
+        inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
+        check_output_file(a.output, inputs);
+    });
     const PlannedMethod p = plan_method(in, method, "", progress);
     Stopwatch sw;
     save_plan(a.output, p.plan);
@@ -38,8 +44,9 @@ void run_prepare(const PrepareArgs& a) {
         j["seconds"]["write"] = write_seconds;
         std::cout << j.dump(2) << "\n";
     } else if (!a.quiet) {
-        print_inputs(std::cout, in, frame_count(in.spec));
-        print_plan(std::cout, in, p);
+        WarningPrinter warnings(true);
+        print_inputs(std::cout, in, frame_count(in.spec), warnings);
+        print_plan(std::cout, in, p, warnings);
         std::cout << "wrote " << a.output << "\n";
     }
 }
@@ -52,7 +59,7 @@ void add_prepare_command(CLI::App& app) {
         "prepare", "Build a dg-idw or dg-harmonic plan (graph, node location, weights or factor) once and save it");
     add_setup_options(cmd, args->setup);
     cmd->get_option("--method")->description("Method of the plan: dg-idw or dg-harmonic (only these plans can be saved)");
-    cmd->add_option("-o,--output", args->output, "Plan file to write")->required();
+    cmd->add_option("-o,--output", args->output, "Plan file to write (NAME.plan)")->required();
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
@@ -60,7 +67,8 @@ void add_prepare_command(CLI::App& app) {
         "motion's values: reuse it for every step with 'dgwarp deform --plan' (the plan's method is used).\n"
         "Plans can be saved for --method dg-idw and dg-harmonic. The plan keeps the method's options\n"
         "(--a-translation, --a-rotation, --length-scale, --dg-idw-weights; --harmonic-*): deform --plan uses\n"
-        "them, and refuses a different value given there.\n\n"
+        "them, and refuses a different value given there.\n"
+        "The plan file's name must end in .plan, and it may not be one of the inputs.\n\n"
         "Examples:\n"
         "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
         "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");

@@ -4,9 +4,9 @@
 
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "flag_values.hpp"
 #include "progress_line.hpp"
 #include "report.hpp"
 
@@ -21,11 +21,12 @@ struct QualityArgs {
     int threads = 0;
     bool json = false;
     bool histogram = false;
+    bool quiet = false;
 };
 
 void run_quality(const QualityArgs& a) {
-    if (a.threads > 0) set_num_threads(a.threads);
-    ProgressLine progress(!a.json);
+    use_threads(a.threads);
+    ProgressLine progress(!a.json && !a.quiet);
     const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh));
     std::vector<std::int8_t> orientation;
     std::vector<double> original_quality;
@@ -58,6 +59,7 @@ void run_quality(const QualityArgs& a) {
         std::cout << j.dump(2) << "\n";
         return;
     }
+    if (a.quiet) return;
     std::cout << a.mesh << ": " << describe_mesh(mesh) << "\n";
     std::cout << "Knupp shape quality (1 = ideal, <= 0 = inverted)"
               << (a.reference.empty() ? "" : ", orientation from " + a.reference) << "\n";
@@ -77,10 +79,11 @@ void add_quality_command(CLI::App& app) {
     cmd->add_option("--reference", args->reference,
                     "The undeformed mesh: judge orientation against it and report the per-cell ratio "
                     "deformed/original (what matters on boundary-layer meshes)");
-    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", args->threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
+    cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
+    add_threads_option(cmd, args->threads, "all cores");
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("--histogram", args->histogram, "Also print the quality histogram");
+    cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
         "Quality is Knupp's shape metric: 1 for the ideal cell, 0 for a degenerate one, <= 0 for an\n"
         "inverted one. Without --reference, a cell is inverted when it is oriented against most cells.\n\n"

@@ -1,14 +1,15 @@
 #include "deform_setup.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "flag_values.hpp"
 #include "report.hpp"
 #include "stopwatch.hpp"
 
@@ -16,17 +17,11 @@ namespace dgwarp::cli {
 
 namespace {
 
+/// --length-scale: a positive number, or 0 for "auto"; -1 when it is neither.
 double parse_length_scale(const std::string& text) {
     if (text == "auto") return 0.0;
-    std::size_t used = 0;
     double value = 0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || !(value > 0))
-        throw CLI::ValidationError("--length-scale", "expected a positive number or 'auto', got '" + text + "'");
+    if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0)) return -1;
     return value;
 }
 
@@ -97,21 +92,26 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
-    cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", a.threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
+    cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
+    add_threads_option(cmd, a.threads, "all cores");
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber)
+        ->check(positive_number())
         ->each(given("--a-translation"));
     cmd->add_option("--a-rotation", a.a_rotation, "DG-IDW weight a of the rotation (paper: 1.4)")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber)
+        ->check(positive_number())
         ->each(given("--a-rotation"));
     cmd->add_option("--length-scale", a.length_scale,
                     "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or "
                     "'auto' (the moving boundary's diagonal, reduced so that max(a) L fits in the gap between the "
                     "moving and the static boundary; docs/dg-idw-length-scale.md)")
         ->capture_default_str()
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                return parse_length_scale(text) < 0 ? "expected a positive number or 'auto', got " + text : "";
+            },
+            "", ""))
         ->each(given("--length-scale"));
     cmd->add_option("--dg-idw-weights", a.weights,
                     "DG-IDW corner weights: 'paper' (default; the paper's formula) or 'continuous' (each weight "
@@ -123,31 +123,31 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->each(given("--dgm-substep"));
     cmd->add_option("--idw-moving-exponent", a.idw_exponent_moving, "IDW: exponent c_d of the moving nodes' distances")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 16.0))
+        ->check(positive_number_up_to(16))
         ->each(given("--idw-moving-exponent"));
     cmd->add_option("--idw-static-exponent", a.idw_exponent_static, "IDW: exponent c_s of the static nodes' distances")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 16.0))
+        ->check(positive_number_up_to(16))
         ->each(given("--idw-static-exponent"));
     cmd->add_option("--rbf-radius", a.rbf_radius, "RBF: Wendland C2 support radius (0 = global: dense solve)")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber)
+        ->check(non_negative_number())
         ->each(given("--rbf-radius"));
     cmd->add_option("--rbf-greedy", a.rbf_greedy,
                     "RBF: greedy data reduction to this boundary error (mesh units; 0 = all centres)")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber)
+        ->check(non_negative_number())
         ->each(given("--rbf-greedy"));
     cmd->add_option("--harmonic-wall-spacing", a.harmonic_wall_spacing,
                     "DG-harmonic: coarse-level spacing next to a wall, in boundary-node spacings (smaller: a finer "
                     "coarse level, slower steps; docs/dg-harmonic.md)")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber)
+        ->check(positive_number())
         ->each(given("--harmonic-wall-spacing"));
     cmd->add_option("--harmonic-growth", a.harmonic_growth,
                     "DG-harmonic: coarse-level spacing away from the walls, as a fraction of the wall distance")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber)
+        ->check(positive_number())
         ->each(given("--harmonic-growth"));
 }
 
@@ -174,14 +174,16 @@ MethodOptions method_options(const SetupArgs& args) {
     return o;
 }
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
-    if (args.threads > 0) set_num_threads(args.threads);
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
+                   const std::function<void(const MotionSpec&)>& check_outputs) {
+    use_threads(args.threads);
     Inputs in;
     in.args = args;
     Stopwatch sw;
+    in.spec = read_motion_file(args.motion);
+    check_outputs(in.spec);
     progress.phase("reading " + args.mesh);
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
-    in.spec = read_motion_file(args.motion);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     in.boundary = resolve_boundary(in.mesh, in.spec);
@@ -274,17 +276,17 @@ std::vector<std::string> step_warnings(const StepReport& step) {
             "volume nodes follow the first moving node of each group"};
 }
 
-void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames) {
+void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings) {
     const auto& b = in.boundary.boundary;
     out << "mesh      " << in.args.mesh << ": " << describe_mesh(in.mesh) << "\n";
     out << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
         << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers)
         << "\n";
     out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving)\n";
-    for (const auto& w : in.boundary.warnings) std::cerr << "warning: " << w << "\n";
+    for (const auto& w : in.boundary.warnings) warnings.print(w);
 }
 
-void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p) {
+void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
     const PlanSummary s = plan_summary(p.plan);
     out << "plan      " << method_name(p.method);
     if (s.graph_simplices > 0)
@@ -299,7 +301,7 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p) {
         out << ")";
     }
     out << "\n";
-    for (const auto& w : plan_warnings(p)) std::cerr << "warning: " << w << "\n";
+    for (const auto& w : plan_warnings(p)) warnings.print(w);
 }
 
 nlohmann::json options_json(const MethodOptions& o, bool weights_known) {

@@ -2,6 +2,7 @@
 // What `dgwarp deform` and `dgwarp prepare` share: reading the mesh and the
 // motion, classifying the boundary, and building (or loading) a method's plan.
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
@@ -15,6 +16,7 @@
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "progress_line.hpp"
+#include "warning_printer.hpp"
 
 namespace dgwarp::cli {
 
@@ -66,7 +68,11 @@ struct Inputs {
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress);
+/// Reads the motion file, calls `check_outputs` with it (so that outputs are
+/// checked before the long work: their names may depend on its frames, and
+/// none may be a file it names), then reads the mesh and classifies the boundary.
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
+                   const std::function<void(const MotionSpec&)>& check_outputs);
 
 /// A method's plan for the inputs: built, or loaded from `plan_file` (DG-IDW
 /// only) and checked to fit the mesh and boundary.
@@ -88,10 +94,10 @@ std::vector<std::string> plan_warnings(const PlannedMethod& p);
 /// given different motions.
 std::vector<std::string> step_warnings(const StepReport& step);
 
-/// Lines about the mesh, motion and boundary.
-void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames);
-/// Lines about the plan and its prepare time; its warnings on standard error.
-void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
+/// Lines about the mesh, motion and boundary; the boundary's warnings through `warnings`.
+void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings);
+/// Lines about the plan and its prepare time; its warnings through `warnings`.
+void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings);
 
 /// The JSON report's common part (docs/JSON.md).
 /// Its `options` are the command line's (options_json); with a loaded plan,

@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
+#include "flag_values.hpp"
 
 int main(int argc, char** argv) {
     using namespace dgwarp::cli;
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
     add_bench_command(app);
 
     try {
+        use_threads(0);  // OMP_NUM_THREADS too large would crash OpenMP; --threads sets it again
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);

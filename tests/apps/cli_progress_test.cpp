@@ -62,3 +62,19 @@ TEST(CliProgress, FractionsOnATerminalButNotWithQuiet) {
         EXPECT_FALSE(shows_progress(r.out)) << quiet << "\n" << r.out;
     }
 }
+
+TEST(CliProgress, FramesAreCountedAsInTheResultRows) {
+    // The rows, the JSON and the file names number frames from 0; the
+    // progress line names the same frame (and how far the series is).
+    if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "script(1) not installed";
+    const RectBoxFiles f = rect_box_files();
+    const auto frames = write_text(f.dir / "frames.json", R"({"frames": [{"markers": {"rectangle": {"translate": [0.1, 0]}}},
+                                                                         {"markers": {"rectangle": {"translate": [0.2, 0]}}}]})");
+    const CommandResult r = run_cli_on_terminal("deform " + quoted(f.mesh) + " -m " + quoted(frames) + " -o " +
+                                                quoted(f.dir / "s.su2"));
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    for (const char* shown : {"frame    0", "frame    1", "s_0000.su2", "s_0001.su2", "deforming frame 0 (1 of 2)",
+                              "deforming frame 1 (2 of 2)"})
+        EXPECT_NE(r.out.find(shown), std::string::npos) << shown << "\n" << r.out;
+    EXPECT_EQ(r.out.find("frame 2"), std::string::npos) << r.out;
+}

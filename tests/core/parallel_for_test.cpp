@@ -101,3 +101,17 @@ TEST(ParallelFor, BlocksCoverTheRangeOnceInBlocksOfTheGivenSize) {
                  }),
                  std::runtime_error);
 }
+
+TEST(ParallelFor, ThreadCountsAreClampedToWhatOpenMpCanStart) {
+    ThreadCount keep;
+    EXPECT_GE(max_threads(), 64);
+    set_num_threads(100000);  // OpenMP crashed starting this many (issue #17)
+    EXPECT_EQ(num_threads(), max_threads());
+    std::vector<int> hits(static_cast<std::size_t>(parallel_grain * 2), 0);
+    parallel_for(parallel_grain * 2, [&](std::int64_t i) { ++hits[static_cast<std::size_t>(i)]; });
+    EXPECT_TRUE(std::all_of(hits.begin(), hits.end(), [](int h) { return h == 1; }));
+    set_num_threads(0);
+    EXPECT_EQ(num_threads(), 1);
+    set_num_threads(-5);
+    EXPECT_EQ(num_threads(), 1);
+}

@@ -223,6 +223,71 @@ TEST(AtomicWrite, WriteIntoAMissingFolderIsAnIoError) {
     EXPECT_TRUE(entries(dir).empty());
 }
 
+TEST(AtomicWrite, ErrorsGiveTheOperatingSystemsReason) {
+    const auto dir = test::scratch_dir();
+    try {
+        write_file_atomically(dir / "missing" / "out.su2", [](std::ostream& out) { out << "x"; });
+        FAIL() << "no error";
+    } catch (const IoError& e) {
+        EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).find("does the folder exist"), std::string::npos) << e.what();
+    }
+    write_plain(dir / "file", "x");
+    try {
+        check_folder_writable(dir / "file");
+        FAIL() << "no error";
+    } catch (const IoError& e) {
+        EXPECT_EQ(e.file(), (dir / "file").string());
+        EXPECT_NE(std::string(e.what()).find("Not a directory"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(check_folder_writable(dir / "missing"), IoError);
+    check_folder_writable(dir);  // writable: no error, and no file left behind
+    check_folder_writable("");   // the current folder
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"file"});
+    if (::geteuid() != 0) {  // root may write anywhere
+        std::filesystem::create_directory(dir / "locked");
+        std::filesystem::permissions(dir / "locked", std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+        try {
+            check_folder_writable(dir / "locked");
+            ADD_FAILURE() << "no error";
+        } catch (const IoError& e) {
+            EXPECT_NE(std::string(e.what()).find("Permission denied"), std::string::npos) << e.what();
+        }
+        std::filesystem::permissions(dir / "locked", std::filesystem::perms::owner_all);
+    }
+}
+
+TEST(AtomicWrite, ReadOnlyFilesFoldersAndDevicesAreNotReplaced) {
+    const auto dir = test::scratch_dir();
+    const auto kept = dir / "kept.su2";
+    write_plain(kept, "keep me\n");
+    std::filesystem::permissions(kept, std::filesystem::perms::owner_read | std::filesystem::perms::group_read);
+    for (const auto& path : {kept, dir, std::filesystem::path("/dev/null")}) {
+        EXPECT_THROW(check_replaceable(path), IoError) << path;
+        EXPECT_THROW(write_file_atomically(path, [](std::ostream& out) { out << "new"; }), IoError) << path;
+    }
+    try {
+        write_file_atomically(kept, [](std::ostream& out) { out << "new"; });
+    } catch (const IoError& e) {
+        EXPECT_NE(std::string(e.what()).find("read-only"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(read_file(kept), "keep me\n");
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"kept.su2"});
+    check_replaceable(dir / "absent.su2");  // nothing to replace: fine
+}
+
+TEST(AtomicWrite, AReplacedFileKeepsItsPermissions) {
+    const auto dir = test::scratch_dir();
+    const auto path = dir / "private.su2";
+    write_plain(path, "old\n");
+    const auto mode = std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                      std::filesystem::perms::group_read;
+    std::filesystem::permissions(path, mode);
+    write_file_atomically(path, [](std::ostream& out) { out << "new\n"; });
+    EXPECT_EQ(read_file(path), "new\n");
+    EXPECT_EQ(std::filesystem::status(path).permissions(), mode);
+}
+
 TEST(AtomicWrite, AFullDiskIsAnIoErrorAndLeavesTheOldFile) {
     // A file size limit makes every write past 64 KiB fail as on a full disk
     // (EFBIG); in a child process, so the limit does not outlive the test.

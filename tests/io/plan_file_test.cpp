@@ -17,7 +17,7 @@ using dgwarp::test::BoxInBox;
 
 namespace {
 
-std::vector<char> read_bytes(const std::filesystem::path& p) {
+std::vector<char> plan_test_read_bytes(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
 }
@@ -152,7 +152,7 @@ TEST(PlanFile, EveryFlippedByteIsRefused) {
     const BoxInBox m = box_in_box(2, 10);
     const auto file = dir / "good.dgwplan";
     save_dg_idw_plan(file, prepare_dg_idw(2, m.points, m.boundary));
-    const std::vector<char> good = read_bytes(file);
+    const std::vector<char> good = plan_test_read_bytes(file);
     const auto bad = dir / "bad.dgwplan";
     // Every byte of the header and the trailer, and a stride through the arrays.
     for (std::size_t i = 0; i < good.size(); i += (i < 160 || i + 16 > good.size()) ? 1 : 37) {
@@ -168,7 +168,7 @@ TEST(PlanFile, TruncatedOrExtendedFilesAreRefused) {
     const BoxInBox m = box_in_box(3, 6);
     const auto file = dir / "good.dgwplan";
     save_dg_idw_plan(file, prepare_dg_idw(3, m.points, m.boundary));
-    const std::vector<char> good = read_bytes(file);
+    const std::vector<char> good = plan_test_read_bytes(file);
     const auto bad = dir / "bad.dgwplan";
     for (std::size_t size : {std::size_t{0}, std::size_t{7}, std::size_t{100}, good.size() / 2, good.size() - 1}) {
         write_bytes(bad, std::vector<char>(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(size)));

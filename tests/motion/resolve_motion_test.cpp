@@ -409,6 +409,18 @@ TEST(MotionResolve, AMotionForAnEmptyMarkerIsAWarningAndMovesNothing) {
     EXPECT_EQ(e.index(), 4);
 }
 
+TEST(MotionResolve, AnEmptyOrAllFixedMotionWarnsThatNothingMoves) {
+    const Mesh mesh = two_squares();
+    for (const char* json : {R"({"markers": {}})", R"({"markers": {"airfoil": "fixed", "farfield": "fixed"}})",
+                             R"({"frames": [{"markers": {}}, {"markers": {"airfoil": "fixed"}}]})"}) {
+        const ResolvedBoundary rb = resolve_boundary(mesh, spec_of(json));
+        ASSERT_EQ(rb.warnings.size(), 1u) << json;
+        EXPECT_TRUE(contains(rb.warnings[0], "m.json: nothing moves")) << rb.warnings[0];
+    }
+    // A marker given a motion, even zero, moves: no warning.
+    EXPECT_TRUE(resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0, 0]}}})")).warnings.empty());
+}
+
 TEST(MotionResolve, BoundaryNodesAtTheSameCoordinatesAreAWarning) {
     // A zero-length boundary edge: node 9 is at node 6's coordinates, and the line 6-9 is on the airfoil.
     Mesh mesh = two_squares();
@@ -427,7 +439,8 @@ TEST(MotionResolve, BoundaryNodesAtTheSameCoordinatesAreAWarning) {
     Mesh same_id = two_squares();
     const NodeId loop[] = {6, 6};
     same_id.markers[0].elements.push_back(CellType::line, loop);
-    EXPECT_TRUE(resolve_boundary(same_id, spec_of(R"({"markers": {"airfoil": "fixed"}})")).warnings.empty());
+    EXPECT_TRUE(
+        resolve_boundary(same_id, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})")).warnings.empty());
 }
 
 TEST(MotionResolve, ATurnOver180DegreesInOneStepIsAWarning) {

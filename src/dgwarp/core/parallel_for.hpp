@@ -15,7 +15,17 @@ inline constexpr std::int64_t parallel_grain = 4096;
 /// Number of threads parallel_for uses (OpenMP's current setting; 1 without OpenMP).
 int num_threads();
 
-/// Sets the number of threads for later parallel_for calls (n >= 1).
+/// The cores this process may run on (OpenMP's count, which honours the CPU
+/// affinity mask; at least 1).
+int available_cores();
+
+/// The most threads set_num_threads sets: 4 × available_cores(), and at least 64. More threads than cores never make a loop faster (a
+/// few times more can check that results do not depend on the thread count);
+/// tens of thousands make OpenMP fail to start them, which ends the program.
+int max_threads();
+
+/// Sets the number of threads for later parallel_for calls: n clamped to
+/// [1, max_threads()].
 void set_num_threads(int n);
 
 /// Calls body(i) for every i in [0, n), in parallel. body must only write data

@@ -1,8 +1,11 @@
 #include "dgwarp/io/atomic_write.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <string>
@@ -13,42 +16,95 @@ namespace dgwarp {
 
 namespace {
 
-std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
+/// A hidden name in the folder of `path`: ".NAME.TAG.PID.RANDOM".
+std::filesystem::path hidden_sibling(const std::filesystem::path& path, const std::string& name, const char* tag) {
     std::random_device rd;
-    std::string name = ".";
-    name += path.filename().string();
-    name += ".tmp.";
-    name += std::to_string(::getpid());
-    name += '.';
-    name += std::to_string(rd() % 1000000);
-    std::filesystem::path tmp = path;
-    tmp.replace_filename(name);
-    return tmp;
+    std::filesystem::path p = path;
+    p.replace_filename("." + name + "." + tag + "." + std::to_string(::getpid()) + "." +
+                       std::to_string(rd() % 1000000));
+    return p;
+}
+
+std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
+    return hidden_sibling(path, path.filename().string(), "tmp");
+}
+
+/// The folder a file named `path` goes into, for messages and checks.
+std::filesystem::path folder_of(const std::filesystem::path& path) {
+    return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+}
+
+/// Creates `file` (which must not exist), empty, readable and writable as
+/// the umask allows. Throws IoError naming `target` with errno's reason.
+void create_new_file(const std::filesystem::path& file, const std::filesystem::path& target) {
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        const int err = errno;
+        throw IoError(target.string(), "cannot create a file in folder '" + folder_of(target).string() +
+                                           "': " + std::strerror(err));
+    }
+    ::close(fd);
 }
 
 void sync_file(const std::filesystem::path& path) {
     int fd = ::open(path.c_str(), O_RDONLY);
-    if (fd < 0) throw IoError(path.string(), "cannot reopen temporary file to sync it");
+    if (fd < 0) throw IoError(path.string(), std::string("cannot reopen temporary file to sync it: ") + std::strerror(errno));
     const int rc = ::fsync(fd);
+    const int err = errno;
     ::close(fd);
-    if (rc != 0) throw IoError(path.string(), "fsync failed (disk full?)");
+    if (rc != 0) throw IoError(path.string(), std::string("fsync failed: ") + std::strerror(err));
 }
 
 }  // namespace
 
+void check_replaceable(const std::filesystem::path& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return;  // nothing to replace (or the folder check will say why)
+    if (S_ISDIR(st.st_mode)) throw IoError(path.string(), "is a folder, not a file");
+    if (!S_ISREG(st.st_mode))
+        throw IoError(path.string(), "is not a regular file (a device, a pipe or a socket): dgwarp writes files only");
+    if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 || ::access(path.c_str(), W_OK) != 0)
+        throw IoError(path.string(), "is read-only: dgwarp does not replace a read-only file (make it writable, or "
+                                     "write to another name)");
+}
+
+void check_folder_writable(const std::filesystem::path& folder) {
+    const std::filesystem::path dir = folder.empty() ? std::filesystem::path(".") : folder;
+    struct stat st {};
+    if (::stat(dir.c_str(), &st) != 0) {
+        const int err = errno;
+        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(err));
+    }
+    if (!S_ISDIR(st.st_mode))
+        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(ENOTDIR));
+    const std::filesystem::path probe = hidden_sibling(dir / "x", "dgwarp", "check");
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) {
+        const int err = errno;
+        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(err));
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
     if (path.empty()) throw IoError("", "empty output file name");
+    check_replaceable(path);
     const std::filesystem::path tmp = temporary_path_for(path);
+    create_new_file(tmp, path);
     try {
         {
             std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-            if (!out) throw IoError(path.string(), "cannot create file for writing (does the folder exist?)");
+            if (!out) throw IoError(path.string(), std::string("cannot open the temporary file ") + tmp.string() +
+                                                       ": " + std::strerror(errno));
             write(out);
             out.flush();
             if (!out) throw IoError(path.string(), "write failed (disk full?)");
         }
         sync_file(tmp);
+        struct stat old {};
+        if (::stat(path.c_str(), &old) == 0) ::chmod(tmp.c_str(), old.st_mode & 07777);  // keep its permissions
         std::error_code ec;
         std::filesystem::rename(tmp, path, ec);
         if (ec) throw IoError(path.string(), "cannot rename temporary file into place: " + ec.message());

@@ -10,10 +10,27 @@
 namespace dgwarp {
 
 /// Calls `write(stream)` on a temporary file beside `path`, flushes and syncs
-/// it, then renames it to `path`. On any error (from `write` or the disk) the
-/// temporary file is removed, `path` is left as it was, and the error is
-/// rethrown (IoError for disk errors).
+/// it, then renames it to `path`. A file already at `path` is replaced and
+/// its permissions are kept; one that check_replaceable refuses (a folder, a
+/// device or other non-regular file, a read-only file) is not touched. On any
+/// error (from `write` or the disk) the temporary file is removed, `path` is
+/// left as it was, and the error is rethrown (IoError for disk errors, with
+/// the operating system's reason: "Permission denied", "No such file or
+/// directory", ...).
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
+
+/// Throws IoError when `path` exists and write_file_atomically would not
+/// replace it: a folder, not a regular file (a device, a pipe), or read-only
+/// (no write permission for anyone, or none for this user). A read-only file
+/// is refused rather than replaced: its mode says someone meant to keep it.
+void check_replaceable(const std::filesystem::path& path);
+
+/// Throws IoError, with the operating system's reason, when files cannot be
+/// created in `folder` ("" is the current folder): it is missing, not a
+/// folder, not writable, or on a read-only file system. Checked by creating
+/// and removing an empty file there. With check_replaceable, this lets a
+/// program check its outputs before long work rather than fail at its end.
+void check_folder_writable(const std::filesystem::path& folder);
 
 }  // namespace dgwarp

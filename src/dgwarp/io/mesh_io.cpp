@@ -12,12 +12,6 @@ namespace dgwarp {
 
 namespace {
 
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
 std::string joined(const std::vector<std::string>& v) {
     std::string s;
     for (const auto& e : v) s += (s.empty() ? "" : ", ") + e;
@@ -26,11 +20,17 @@ std::string joined(const std::vector<std::string>& v) {
 
 }  // namespace
 
+std::string lower_case_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
 std::vector<std::string> readable_extensions() { return {".su2", ".msh"}; }
 std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
 
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower_case_extension(path);
     if (ext == ".su2") return read_su2(path, options.zone, progress);
     if (ext == ".msh") return read_gmsh(path, progress);
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
@@ -40,7 +40,7 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress,
                MeshExtras& extras) {
     extras = {};
-    if (lower_extension(path) != ".su2") return read_mesh(path, options, progress);
+    if (lower_case_extension(path) != ".su2") return read_mesh(path, options, progress);
     Su2Surroundings surroundings;
     Mesh mesh = read_su2(path, options.zone, progress, surroundings);
     extras.su2 = std::move(surroundings);
@@ -48,13 +48,13 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
 }
 
 std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path) {
-    if (!extras.su2 || lower_extension(path) == ".su2") return {};
+    if (!extras.su2 || lower_case_extension(path) == ".su2") return {};
     return extras.su2->contents;
 }
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                 const WriteOptions& options) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower_case_extension(path);
     if (ext == ".su2" && options.extras && options.extras->su2) return write_su2(path, mesh, *options.extras->su2);
     if (ext == ".su2") return write_su2(path, mesh);
     if (ext == ".msh") return write_gmsh(path, mesh, options.gmsh_version);

@@ -70,6 +70,10 @@ std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::fil
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields = {},
                 const WriteOptions& options = {});
 
+/// The extension of `path` in lower case (".su2" for "WING.SU2"): formats
+/// are chosen by it without regard to case.
+std::string lower_case_extension(const std::filesystem::path& path);
+
 /// The extensions read_mesh / write_mesh accept, for help texts.
 std::vector<std::string> readable_extensions();
 std::vector<std::string> writable_extensions();

@@ -1,15 +1,14 @@
 #include "dgwarp/io/motion_file.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <utility>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/json_fields.hpp"
 #include "dgwarp/io/node_table_read.hpp"
+#include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp {
 
@@ -234,12 +233,7 @@ MotionSpec parse_motion_file(const std::string& text, const std::string& file_na
 }
 
 MotionSpec read_motion_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), "cannot open file for reading");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw IoError(path.string(), "read error");
-    return parse_motion_file(std::move(text).str(), path.string(), path.parent_path());
+    return parse_motion_file(read_file_text(path), path.string(), path.parent_path());
 }
 
 }  // namespace dgwarp

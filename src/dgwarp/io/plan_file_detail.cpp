@@ -1,6 +1,8 @@
 #include "dgwarp/io/plan_file_detail.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 
 namespace dgwarp::plan_detail {
 
@@ -9,7 +11,7 @@ PlanSource file_source(const std::filesystem::path& path, std::ifstream& in) {
     const std::uint64_t file_size = std::filesystem::file_size(path, ec);
     if (ec) throw IoError(path.string(), "cannot read plan file: " + ec.message());
     in.open(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), "cannot open plan file for reading");
+    if (!in) throw IoError(path.string(), std::string("cannot open plan file for reading: ") + std::strerror(errno));
     // Arrays are read straight into the plan's vectors: no copy of the whole file.
     return {path.string(), file_size, [&in, name = path.string()](void* to, std::size_t n, std::uint64_t offset) {
                 in.seekg(static_cast<std::streamoff>(offset));

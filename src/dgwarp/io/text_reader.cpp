@@ -1,8 +1,10 @@
 #include "dgwarp/io/text_reader.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -25,13 +27,21 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-TextReader TextReader::open(const std::filesystem::path& path) {
+std::string read_file_text(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), "cannot open file for reading");
+    if (!in) throw IoError(path.string(), std::string("cannot open file for reading: ") + std::strerror(errno));
+    // Opening a folder succeeds; reading it does not (and would look like an empty file).
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw IoError(path.string(), std::string("cannot read it: ") + std::strerror(EISDIR));
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    if (in.bad()) throw IoError(path.string(), "read error");
-    return TextReader(path.string(), std::move(buffer).str());
+    if (in.bad()) throw IoError(path.string(), std::string("read error: ") + std::strerror(errno));
+    return std::move(buffer).str();
+}
+
+TextReader TextReader::open(const std::filesystem::path& path) {
+    return TextReader(path.string(), read_file_text(path));
 }
 
 TextReader::TextReader(std::string file_name, std::string content)

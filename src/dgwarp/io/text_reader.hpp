@@ -11,6 +11,11 @@
 
 namespace dgwarp {
 
+/// The whole content of the file at `path`. Throws IoError with the operating
+/// system's reason ("No such file or directory", "Permission denied", "Is a
+/// directory") when it cannot be read.
+std::string read_file_text(const std::filesystem::path& path);
+
 class TextReader {
 public:
     /// Reads the whole file into memory; throws IoError when it cannot be read.

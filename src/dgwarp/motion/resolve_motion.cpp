@@ -284,6 +284,10 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
                             ". Every method moves the mesh from its boundary: give the mesh its boundary markers",
                         mesh.markers.empty() ? std::string() : mesh.markers.front().name);
     }
+    if (out.moving_markers.empty())
+        out.warnings.push_back((spec.source.empty() ? std::string("motion") : spec.source) +
+                               ": nothing moves: the motion gives no marker a motion (an empty motion, or every "
+                               "marker fixed), so the deformed mesh is the input mesh");
     warn_coincident_boundary_nodes(c, out.warnings);
     warn_empty_named_markers(c, out.warnings);
 

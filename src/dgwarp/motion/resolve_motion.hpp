@@ -18,7 +18,8 @@
 //  - warnings (strings, nothing here prints): a marker moving a node farther
 //    than the mesh's bounding-box diagonal, nodes on moving and static
 //    markers, boundary nodes at the same coordinates (zero-length boundary
-//    edges), a marker the motion names that has no elements.
+//    edges), a marker the motion names that has no elements, no moving
+//    marker at all (an empty or all-fixed motion: nothing moves).
 #include <cstddef>
 #include <string>
 #include <vector>

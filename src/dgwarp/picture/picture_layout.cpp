@@ -27,9 +27,10 @@ std::array<double, 4> default_window(const Mesh& mesh) {
 }  // namespace
 
 PictureLayout picture_layout(const Mesh& mesh, std::span<const double> cell_values, const PictureOptions& o) {
-    constexpr int min_size = 16, max_size = 32767;  // cairo image surfaces are at most 32767 pixels wide
-    if (o.width < min_size || o.width > max_size || o.height < min_size || o.height > max_size)
-        throw Error("picture: image size must be 16 .. 32767 pixels, got " + std::to_string(o.width) + " x " +
+    if (o.width < min_picture_size || o.width > max_picture_size || o.height < min_picture_size ||
+        o.height > max_picture_size)
+        throw Error("picture: image size must be " + std::to_string(min_picture_size) + " .. " +
+                    std::to_string(max_picture_size) + " pixels, got " + std::to_string(o.width) + " x " +
                     std::to_string(o.height));
     if (o.window) {
         const auto& w = *o.window;

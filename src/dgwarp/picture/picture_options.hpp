@@ -6,8 +6,12 @@
 
 namespace dgwarp {
 
+/// The image sizes a picture may have, in pixels (Cairo's image surfaces are
+/// at most 32767 pixels wide).
+inline constexpr int min_picture_size = 16, max_picture_size = 32767;
+
 struct PictureOptions {
-    int width = 1600;   // image size in pixels (16 .. 32767)
+    int width = 1600;   // image size in pixels (min_picture_size .. max_picture_size)
     int height = 1200;
     /// View window in mesh coordinates: xmin, xmax, ymin, ymax. Default: the
     /// mesh's bounding box with a small margin. Either way the window is

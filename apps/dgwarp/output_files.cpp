@@ -1,0 +1,75 @@
+#include "output_files.hpp"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <variant>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/atomic_write.hpp"
+#include "dgwarp/io/mesh_io.hpp"
+
+namespace dgwarp::cli {
+
+namespace {
+
+void add_table_source(std::vector<std::filesystem::path>& files, const std::string& source) {
+    if (!source.empty() && std::find(files.begin(), files.end(), source) == files.end()) files.emplace_back(source);
+}
+
+void add_marker_files(std::vector<std::filesystem::path>& files, const MarkerMotion& motion) {
+    if (const auto* d = std::get_if<PrescribedDisplacements>(&motion)) add_table_source(files, d->displacements.source);
+    if (const auto* p = std::get_if<PrescribedPositions>(&motion)) add_table_source(files, p->positions.source);
+    if (const auto* n = std::get_if<PrescribedNodeMotions>(&motion)) add_table_source(files, n->motions.source);
+}
+
+}  // namespace
+
+void require_extension(const std::string& flag, const std::filesystem::path& output,
+                       const std::vector<std::string>& extensions, const std::string& what) {
+    const std::string ext = lower_case_extension(output);
+    if (std::find(extensions.begin(), extensions.end(), ext) != extensions.end()) return;
+    std::string list;
+    for (const auto& e : extensions) list += (list.empty() ? "" : ", ") + e;
+    throw CLI::ValidationError(flag, output.string() + ": this command writes " + what + ", so the name must end in " +
+                                         list + (ext.empty() ? std::string(" (it has no extension)")
+                                                             : " (not " + output.extension().string() + ")"));
+}
+
+void require_mesh_extension(const std::string& flag, const std::filesystem::path& output) {
+    require_extension(flag, output, writable_extensions(), "a mesh (the format is chosen by the extension)");
+}
+
+void check_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs) {
+    std::error_code ec;
+    if (std::filesystem::exists(output, ec)) {
+        for (const auto& in : inputs)
+            if (std::filesystem::equivalent(output, in, ec))
+                throw CLI::ValidationError(output.string() + " is " +
+                                           (output == in ? std::string("an input of this command")
+                                                         : "the same file as the input " + in.string()) +
+                                           ": it would be overwritten; write the output to another name");
+        check_replaceable(output);
+    }
+}
+
+void check_output_file(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs) {
+    check_output(output, inputs);
+    check_folder_writable(output.parent_path());
+}
+
+void make_output_folder(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw IoError(folder.string(), "cannot create this folder: " + ec.message());
+    check_folder_writable(folder);
+}
+
+std::vector<std::filesystem::path> motion_files(const MotionSpec& spec) {
+    std::vector<std::filesystem::path> files;
+    add_marker_files(files, spec.default_motion);
+    for (const MotionFrame& frame : spec.frames)
+        for (const auto& [marker, motion] : frame.markers) add_marker_files(files, motion);
+    return files;
+}
+
+}  // namespace dgwarp::cli
