@@ -145,24 +145,87 @@ std::filesystem::path method_output(const std::filesystem::path& out, Method met
     return p;
 }
 
+/// A frame's per-cell quality and ratio to the original (the output's fields).
+struct FrameQuality {
+    std::vector<double> quality, ratio;
+};
+
+/// After a frame's step: --untangle, or dg-harmonic's last resort, then the
+/// frame's quality. Fills f's repair, quality and timing fields.
+FrameQuality repair_and_measure(const Inputs& in, Method method, const DeformArgs& a, Mesh& deformed, FrameResult& f,
+                                Stopwatch& sw, ProgressLine& progress) {
+    if (a.untangle) {
+        progress.phase(std::string(method_name(method)) + ": untangling");
+        UntangleOptions options;
+        options.target_quality = a.untangle_target;
+        const UntangleReport u =
+            untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes, deformed.points, options);
+        if (u.below_target_before > 0) f.untangled = u;
+        f.untangle_seconds = sw.lap();
+    }
+    FrameQuality q;
+    q.quality = cell_qualities(deformed, in.orientation);
+    if (method == Method::dg_harmonic && !a.untangle && !a.no_untangle &&
+        !newly_inverted_cells(q.quality, in.original_cell_quality).empty()) {
+        // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
+        // folded cells (a moving face bounded by fixed walls), repair them
+        // locally, and say so in the report.
+        f.quality_seconds = sw.lap();  // the first measure; the second counts with the repair
+        progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
+        f.untangled =
+            untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes, deformed.points);
+        f.last_resort = true;
+        q.quality = cell_qualities(deformed, in.orientation);
+        f.untangle_seconds = sw.lap();
+    }
+    q.ratio = quality_ratios(q.quality, in.original_cell_quality);
+    f.quality = summarize_quality(q.quality);
+    f.ratio = summarize_ratios(q.ratio);
+    // Cells already inverted or degenerate in the input are not the motion's doing.
+    const std::vector<std::int64_t> folded = newly_inverted_cells(q.quality, in.original_cell_quality);
+    f.inverted_by_motion = static_cast<std::int64_t>(folded.size());
+    f.worst_inverted = worst_cells(folded, q.quality, 10);
+    f.quality_seconds += sw.lap();
+    return q;
+}
+
+/// A frame's text report: its warnings, then the single-frame table or the frame's line.
+void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,
+                 const std::vector<std::string>& step_warning_texts, std::size_t frames, WarningPrinter& warnings) {
+    for (const auto& w : motion_warnings) warnings.print(w);  // they name the frame
+    for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(f.frame) + ": ");
+    if (frames == 1) {
+        print_single_frame(in, f);
+        if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
+    } else {
+        print_frame_line(f);
+    }
+}
+
+/// The run's plan (built or loaded); false, with the run's error set, when
+/// the method failed and the run goes on with the other methods.
+bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several, ProgressLine& progress,
+              MethodRun& run) {
+    try {
+        run.planned = plan_method(in, method, a.plan, progress);
+        return true;
+    } catch (const InvalidResultError& e) {
+        run.error = e.what();
+        run.invalid = true;
+    } catch (const Error& e) {
+        if (!several) throw;
+        run.error = e.what();
+        run.invalid = run.failed = true;  // no mesh: the run is not valid
+    }
+    run.planned.method = method;
+    return false;
+}
+
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
                      ProgressLine& progress, WarningPrinter& warnings) {
     MethodRun run;
     const std::size_t frames = frame_count(in.spec);
-    try {
-        run.planned = plan_method(in, method, a.plan, progress);
-    } catch (const InvalidResultError& e) {
-        run.planned.method = method;
-        run.error = e.what();
-        run.invalid = true;
-        return run;
-    } catch (const Error& e) {
-        if (!several) throw;
-        run.planned.method = method;
-        run.error = e.what();
-        run.invalid = run.failed = true;  // no mesh: the run is not valid
-        return run;
-    }
+    if (!plan_run(in, method, a, several, progress, run)) return run;
     if (text && !several) print_plan(std::cout, in, run.planned, warnings);
     if (text && several)
         for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w);
@@ -202,54 +265,18 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         f.deform_seconds = sw.lap();
         const std::vector<std::string> step_warning_texts = step_warnings(f.step);
         f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
-        if (a.untangle) {
-            progress.phase(std::string(method_name(method)) + ": untangling");
-            UntangleOptions options;
-            options.target_quality = a.untangle_target;
-            const UntangleReport u = untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes,
-                                              deformed.points, options);
-            if (u.below_target_before > 0) f.untangled = u;
-            f.untangle_seconds = sw.lap();
-        }
-        std::vector<double> quality = cell_qualities(deformed, in.orientation);
-        if (method == Method::dg_harmonic && !a.untangle && !a.no_untangle &&
-            !newly_inverted_cells(quality, in.original_cell_quality).empty()) {
-            // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
-            // folded cells (a moving face bounded by fixed walls), repair them
-            // locally, and say so in the report.
-            f.quality_seconds = sw.lap();  // the first measure; the second counts with the repair
-            progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
-            f.untangled = untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes,
-                                   deformed.points);
-            f.last_resort = true;
-            quality = cell_qualities(deformed, in.orientation);
-            f.untangle_seconds = sw.lap();
-        }
-        const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
-        f.quality = summarize_quality(quality);
-        f.ratio = summarize_ratios(ratio);
-        // Cells already inverted or degenerate in the input are not the motion's doing.
-        const std::vector<std::int64_t> folded = newly_inverted_cells(quality, in.original_cell_quality);
-        f.inverted_by_motion = static_cast<std::int64_t>(folded.size());
-        f.worst_inverted = worst_cells(folded, quality, 10);
-        f.quality_seconds += sw.lap();
+        const FrameQuality measured = repair_and_measure(in, method, a, deformed, f, sw, progress);
         const bool invalid = f.inverted_by_motion > 0;
         if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, k, frames);
-            write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, quality, ratio), write_options);
+            write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, measured.quality, measured.ratio),
+                       write_options);
             f.output = path.string();
             f.write_seconds = sw.lap();
         }
         if (text && !several) {
             progress.clear();
-            for (const auto& w : motion.warnings) warnings.print(w);  // they name the frame
-            for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(k) + ": ");
-            if (frames == 1) {
-                print_single_frame(in, f);
-                if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
-            } else {
-                print_frame_line(f);
-            }
+            print_frame(in, f, motion.warnings, step_warning_texts, frames, warnings);
         }
         run.frames.push_back(std::move(f));
         if (invalid) {
