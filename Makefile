@@ -17,7 +17,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # the wing-body case) by tests/lsan.supp.
 SANITIZER_ENV = ASAN_OPTIONS=exitcode=86:detect_leaks=1:check_initialization_order=1:strict_init_order=1 \
   UBSAN_OPTIONS=exitcode=86:print_stacktrace=1:halt_on_error=1 \
-  LSAN_OPTIONS=exitcode=86:suppressions=$(CURDIR)/tests/lsan.supp
+  LSAN_OPTIONS=exitcode=86:print_suppressions=0:suppressions=$(CURDIR)/tests/lsan.supp
 
 .PHONY: all deps build demo test build-sanitize test-sanitize clean
 
