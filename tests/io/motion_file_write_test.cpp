@@ -10,7 +10,6 @@
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "support/test_paths.hpp"
-#include "support/unit_square.hpp"
 
 using namespace dgwarp;
 
@@ -29,9 +28,14 @@ void expect_round_trip(const Mesh& mesh, const MotionSpec& spec, const std::file
             << file << " frame " << k;
 }
 
-/// The unit square with markers "wall" (its bottom edge) and "far field/outer" (the other three).
+/// A 2D square of two triangles with markers "wall" (bottom edge) and "far" (the rest).
 Mesh writer_square() {
-    Mesh m = test::unit_square_two_triangles();
+    Mesh m;
+    m.dim = 2;
+    m.points = {0, 0, 1, 0, 1, 1, 0, 1};
+    const NodeId t0[] = {0, 1, 2}, t1[] = {0, 2, 3};
+    m.cells.push_back(CellType::triangle, t0);
+    m.cells.push_back(CellType::triangle, t1);
     Marker wall{"wall", {}}, far{"far field/outer", {}};
     const NodeId e0[] = {0, 1}, e1[] = {1, 2}, e2[] = {2, 3}, e3[] = {3, 0};
     wall.elements.push_back(CellType::line, e0);
