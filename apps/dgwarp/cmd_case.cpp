@@ -5,7 +5,6 @@
 #include "commands.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/motion_file.hpp"
 #include "flag_values.hpp"
 #include "output_files.hpp"
 
@@ -16,7 +15,6 @@ namespace {
 struct CaseArgs {
     std::string name;
     std::string output;
-    std::string motions;  // folder for the case's motion files ("" = none)
     int size = 0;
     bool quiet = false;
 };
@@ -30,26 +28,13 @@ void run_case(const CaseArgs& a) {
                                                  ", got " + std::to_string(a.size));
     require_mesh_extension("--output", a.output);
     check_output_file(a.output, {});
-    if (!a.motions.empty()) make_output_folder(a.motions);
     const Mesh mesh = make_case(a.name, a.size);
     write_mesh(a.output, mesh);
-    const std::vector<CaseMotion> motions = case_motions(a.name, mesh);
-    // Each motion as a motion file (and its node tables beside it), the same
-    // per-node motions as `dgwarp bench` uses, bit for bit.
-    std::vector<std::string> written;
-    for (const CaseMotion& m : motions) {
-        if (a.motions.empty()) break;
-        const std::filesystem::path file = std::filesystem::path(a.motions) / (m.name + ".json");
-        check_output(file, {a.output});
-        write_motion_file(file, m.spec, mesh);
-        written.push_back(file.string());
-    }
     if (a.quiet) return;
     std::cout << "wrote " << a.output << ": " << a.name << ", " << mesh.num_points() << " nodes, " << mesh.cells.size()
               << " cells; motions:";
-    for (const CaseMotion& m : motions) std::cout << " " << m.name;
+    for (const CaseMotion& m : case_motions(a.name, mesh)) std::cout << " " << m.name;
     std::cout << "\n";
-    for (const std::string& w : written) std::cout << "wrote " << w << "\n";
 }
 
 }  // namespace
@@ -61,15 +46,10 @@ void add_case_command(CLI::App& app) {
     for (const auto& n : case_names()) names += (names.empty() ? "" : ", ") + n;
     cmd->add_option("name", args->name, "The case: " + names)->required()->check(one_of(case_names(), "a case"));
     cmd->add_option("-o,--output", args->output, "Output mesh (.su2, .msh, .vtu)")->required();
-    cmd->add_option("--motions", args->motions,
-                    "Also write the case's motions (the paper's) as motion files DIR/NAME.json, with their node "
-                    "tables beside them, for 'dgwarp deform'");
     cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~404k), 2 (~826k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer("Examples:\n  dgwarp case naca0012 -o naca0012.su2\n  dgwarp case squeezed-sphere --size 1 -o sphere.msh\n"
-                "  dgwarp case wing-body --size 1 -o wing-body.su2\n"
-                "  dgwarp case rect-box -o rect-box.su2 --motions motions    then: dgwarp deform rect-box.su2 -m "
-                "motions/rotate-30.json -o out.vtu");
+                "  dgwarp case wing-body --size 1 -o wing-body.su2");
     cmd->callback([args] { run_case(*args); });
 }
 

@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <string>
 
-#include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/motion/motion_spec.hpp"
 
 namespace dgwarp {
@@ -24,16 +23,5 @@ MotionSpec read_motion_file(const std::filesystem::path& path);
 /// `base_dir` is where relative file names in it are looked up.
 MotionSpec parse_motion_file(const std::string& text, const std::string& file_name,
                              const std::filesystem::path& base_dir);
-
-/// Writes `spec` (for `mesh`: its dimension, and the nodes of a marker whose
-/// rigid motion needs a node file) as the motion file `path`, atomically,
-/// with each per-node table as a CSV file beside it (the motion file's stem,
-/// "_", the marker's name, ".csv"; with the frame's number in a list of
-/// frames). read_motion_file then gives the same per-node motions bit for
-/// bit: rotations about a coordinate axis as angle_deg (the exact double),
-/// other rigid motions as node_motion_file tables, numbers in shortest exact
-/// form. Throws Error for what it cannot write (periodic motions, new
-/// positions per node), MeshError for a marker the mesh lacks, IoError.
-void write_motion_file(const std::filesystem::path& path, const MotionSpec& spec, const Mesh& mesh);
 
 }  // namespace dgwarp
