@@ -235,7 +235,6 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
     WriteOptions write_options;
     write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
     Mesh deformed = in.mesh;
-    const MotionContext motion_context = make_motion_context(in.mesh, in.spec);  // once: each frame then O(boundary)
     for (std::size_t k = 0; k < frames; ++k) {
         FrameResult f;
         f.frame = k;
@@ -246,7 +245,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
                                                     std::to_string(frames) + ")"
                                               : "");
         progress.phase(phase);
-        const ResolvedFrame motion = resolve_frame(motion_context, k);
+        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
         f.warnings = motion.warnings;
         Stopwatch sw;  // the deform time is the method's step alone
         try {

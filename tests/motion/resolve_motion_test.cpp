@@ -240,34 +240,6 @@ TEST(MotionResolve, FramesListGivesOneMotionPerFrame) {
     EXPECT_EQ(p[6], 3.0);  // node 3, the centre, stays
 }
 
-// #17 item 8: a series used to rebuild the whole context (a pass over every
-// frame) for each frame: O(frames²). With the context made once, a frame
-// reads only its own part of the spec: spoiling every other frame after the
-// context is made does not disturb it, and 10,000 frames agree with the
-// one-frame call.
-TEST(MotionResolve, AFrameOfASeriesReadsOnlyItsOwnFrame) {
-    const Mesh mesh = chain();
-    MotionSpec spec = spec_of(R"({"frames": [{"markers": {"wall": {"translate": [1, 0]}}}]})");
-    const MotionFrame first = spec.frames[0];
-    spec.frames.assign(10'000, first);
-    for (std::size_t k = 0; k < spec.frames.size(); ++k)
-        spec.frames[k].markers["wall"] = RigidMotion{NodeMotion{{0.001 * static_cast<double>(k), 0, 0}, {}, {}}};
-    const ResolvedBoundary rb = resolve_boundary(mesh, spec);
-    const MotionContext context = make_motion_context(mesh, spec);
-    EXPECT_EQ(context.boundary.nodes, rb.boundary.nodes);
-    EXPECT_EQ(context.boundary.moving, rb.boundary.moving);
-    for (std::size_t k : {0u, 1u, 4'999u, 9'999u})
-        EXPECT_EQ(resolve_frame(context, k).motion, resolve_frame(mesh, spec, rb.boundary, k).motion) << k;
-    for (std::size_t k = 0; k < spec.frames.size(); ++k)
-        ASSERT_EQ(motion_of(rb.boundary, resolve_frame(context, k).motion, 5).translation[0],
-                  0.001 * static_cast<double>(k));
-    // Frames other than 7 now name a marker the mesh lacks: only frame 7 is read.
-    for (std::size_t k = 0; k < spec.frames.size(); ++k)
-        if (k != 7) spec.frames[k].markers["no such marker"] = FixedMotion{};
-    EXPECT_EQ(motion_of(rb.boundary, resolve_frame(context, 7).motion, 5).translation[0], 0.007);
-    EXPECT_THROW(make_motion_context(mesh, spec), MeshError);  // a new context checks them all
-}
-
 TEST(MotionResolve, PeriodicPitchPlungeAtStepsComputedByHand) {
     const Mesh mesh = two_squares();
     const MotionSpec spec = spec_of(R"({"markers": {"airfoil": {"periodic": {

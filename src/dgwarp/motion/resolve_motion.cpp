@@ -17,6 +17,18 @@ namespace dgwarp {
 
 namespace {
 
+/// What every frame of one (mesh, spec) pair shares.
+struct Context {
+    const Mesh& mesh;
+    const MotionSpec& spec;
+    std::vector<std::vector<NodeId>> marker_nodes;   // per marker, sorted
+    std::vector<std::vector<std::int32_t>> slots;    // per marker node: its index in the boundary set
+    std::vector<char> marker_moving;                 // per marker
+    BoundarySet boundary;
+    std::vector<char> on_static, on_moving;          // per boundary node
+    double diagonal = 0;                             // of the mesh's bounding box
+    double tolerance = 0;                            // for agreeing new positions
+};
 
 std::string where(const MotionSpec& spec, std::size_t frame) {
     std::string w = spec.source.empty() ? std::string("motion") : spec.source;
@@ -64,13 +76,9 @@ double bounding_box_diagonal(const Mesh& mesh) {
     return std::sqrt(sum);
 }
 
-}  // namespace
-
-MotionContext make_motion_context(const Mesh& mesh, const MotionSpec& spec) {
+Context make_context(const Mesh& mesh, const MotionSpec& spec) {
     check_marker_names(mesh, spec);
-    MotionContext c;
-    c.mesh = &mesh;
-    c.spec = &spec;
+    Context c{mesh, spec, {}, {}, {}, {}, {}, {}, 0, 0};
     const std::size_t n_markers = mesh.markers.size();
     c.marker_nodes.reserve(n_markers);
     for (const Marker& m : mesh.markers) c.marker_nodes.push_back(marker_nodes(m));
@@ -105,8 +113,6 @@ MotionContext make_motion_context(const Mesh& mesh, const MotionSpec& spec) {
     return c;
 }
 
-namespace {
-
 std::span<const double> point(const Mesh& mesh, NodeId node) {
     const auto dim = static_cast<std::size_t>(mesh.dim);
     return {mesh.points.data() + static_cast<std::size_t>(node) * dim, dim};
@@ -124,12 +130,12 @@ bool agree(const NodeMotion& a, const NodeMotion& b, std::span<const double> x, 
 }
 
 /// Resolves one frame (see the header's rules). Appends warnings.
-BoundaryMotion resolve_at(const MotionContext& c, const MotionFrame& frame, double time, const std::string& at,
+BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
                           std::vector<std::string>& warnings) {
-    const Mesh& mesh = *c.mesh;
+    const Mesh& mesh = c.mesh;
     const std::size_t n_markers = mesh.markers.size();
     std::vector<const MarkerMotion*> motions(n_markers);
-    for (std::size_t m = 0; m < n_markers; ++m) motions[m] = &marker_motion(*c.spec, frame, mesh.markers[m].name);
+    for (std::size_t m = 0; m < n_markers; ++m) motions[m] = &marker_motion(c.spec, frame, mesh.markers[m].name);
     const auto node_motions = marker_node_motions(mesh, c.marker_nodes, motions, time, at);
 
     const std::size_t n = c.boundary.nodes.size();
@@ -190,7 +196,7 @@ BoundaryMotion resolve_at(const MotionContext& c, const MotionFrame& frame, doub
     if (!clashes.empty()) {
         std::ostringstream e;
         e << at << ": moving markers disagree on the nodes they share (rule "
-          << (c.spec->shared_nodes == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins") << "):";
+          << (c.spec.shared_nodes == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins") << "):";
         for (const auto& [pair, entry] : clashes) {
             const std::size_t b = entry.second;
             const NodeId node = c.boundary.nodes[b];
@@ -217,14 +223,14 @@ BoundaryMotion resolve_at(const MotionContext& c, const MotionFrame& frame, doub
 }
 
 /// Warnings for markers the motion file names that have no nodes in the mesh.
-void warn_empty_named_markers(const MotionContext& c, std::vector<std::string>& warnings) {
-    for (std::size_t m = 0; m < c.mesh->markers.size(); ++m) {
+void warn_empty_named_markers(const Context& c, std::vector<std::string>& warnings) {
+    for (std::size_t m = 0; m < c.mesh.markers.size(); ++m) {
         if (!c.marker_nodes[m].empty()) continue;
-        const std::string& name = c.mesh->markers[m].name;
-        const bool named = std::any_of(c.spec->frames.begin(), c.spec->frames.end(),
+        const std::string& name = c.mesh.markers[m].name;
+        const bool named = std::any_of(c.spec.frames.begin(), c.spec.frames.end(),
                                        [&](const MotionFrame& f) { return f.markers.count(name) > 0; });
         if (named)
-            warnings.push_back(where(*c.spec, 0) + " names marker '" + name +
+            warnings.push_back(where(c.spec, 0) + " names marker '" + name +
                                "', which has no elements in the mesh (an empty marker, such as SU2's MARKER_ELEMS= 0 "
                                "or a Gmsh physical group without elements): its motion acts on no node");
     }
@@ -232,8 +238,8 @@ void warn_empty_named_markers(const MotionContext& c, std::vector<std::string>& 
 
 /// A warning when boundary nodes share their coordinates (zero-length
 /// boundary edges, such as a collapsed trailing edge).
-void warn_coincident_boundary_nodes(const MotionContext& c, std::vector<std::string>& warnings) {
-    const CoincidentGroups groups = group_coincident_points(c.mesh->dim, c.mesh->points, c.boundary.nodes);
+void warn_coincident_boundary_nodes(const Context& c, std::vector<std::string>& warnings) {
+    const CoincidentGroups groups = group_coincident_points(c.mesh.dim, c.mesh.points, c.boundary.nodes);
     if (groups.size() == c.boundary.nodes.size()) return;
     std::size_t nodes = 0, example = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -247,7 +253,7 @@ void warn_coincident_boundary_nodes(const MotionContext& c, std::vector<std::str
     const NodeId b = c.boundary.nodes[static_cast<std::size_t>(groups.members[first + 1])];
     warnings.push_back(std::to_string(nodes) + " boundary nodes are at the same coordinates as another boundary node " +
                        "(zero-length boundary edges, e.g. nodes " + std::to_string(a) + " and " + std::to_string(b) +
-                       " at " + point_text(point(*c.mesh, a)) +
+                       " at " + point_text(point(c.mesh, a)) +
                        "): each follows its own marker's motion; the methods use one position for them (DG-IDW and "
                        "DGM one graph vertex, RBF one centre) with the motion of the first moving one");
 }
@@ -255,7 +261,7 @@ void warn_coincident_boundary_nodes(const MotionContext& c, std::vector<std::str
 }  // namespace
 
 ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
-    const MotionContext c = make_motion_context(mesh, spec);
+    const Context c = make_context(mesh, spec);
     ResolvedBoundary out;
     for (std::size_t m = 0; m < mesh.markers.size(); ++m)
         (c.marker_moving[m] ? out.moving_markers : out.static_markers).push_back(mesh.markers[m].name);
@@ -293,19 +299,14 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
     return out;
 }
 
-ResolvedFrame resolve_frame(const MotionContext& c, std::size_t frame) {
-    const MotionSpec& spec = *c.spec;
+ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
+                            std::size_t frame) {
+    const Context c = make_context(mesh, spec);
+    assert(boundary.nodes == c.boundary.nodes && boundary.moving == c.boundary.moving);
+    (void)boundary;
     ResolvedFrame out;
     out.motion = resolve_at(c, frame_spec(spec, frame), frame_time(spec, frame), where(spec, frame), out.warnings);
     return out;
-}
-
-ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
-                            std::size_t frame) {
-    const MotionContext c = make_motion_context(mesh, spec);
-    assert(boundary.nodes == c.boundary.nodes && boundary.moving == c.boundary.moving);
-    (void)boundary;
-    return resolve_frame(c, frame);
 }
 
 std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& boundary,

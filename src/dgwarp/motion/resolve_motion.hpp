@@ -21,7 +21,6 @@
 //    edges), a marker the motion names that has no elements, no moving
 //    marker at all (an empty or all-fixed motion: nothing moves).
 #include <cstddef>
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -53,34 +52,10 @@ struct ResolvedFrame {
     std::vector<std::string> warnings;  // e.g. a marker moved farther than the mesh's size
 };
 
-/// What every frame of one (mesh, spec) pair shares: built once per series
-/// (O(markers × frames + boundary nodes)), so that each frame then costs
-/// O(its boundary nodes) and a series of F frames O(F), not O(F²). It points
-/// to `mesh` and `spec`, which must outlive it.
-struct MotionContext {
-    const Mesh* mesh = nullptr;
-    const MotionSpec* spec = nullptr;
-    std::vector<std::vector<NodeId>> marker_nodes;  // per marker, sorted
-    std::vector<std::vector<std::int32_t>> slots;   // per marker node: its index in the boundary set
-    std::vector<char> marker_moving;                // per marker
-    BoundarySet boundary;                           // as resolve_boundary's
-    std::vector<char> on_static, on_moving;         // per boundary node
-    double diagonal = 0;                            // of the mesh's bounding box
-    double tolerance = 0;                           // for agreeing new positions
-};
-
-/// Builds the context; throws MeshError for a marker name the mesh lacks.
-MotionContext make_motion_context(const Mesh& mesh, const MotionSpec& spec);
-
-/// The motion of every boundary node in frame `frame` (< frame_count(spec)),
-/// reading only that frame of the spec. Throws MeshError as resolve_boundary
-/// does, and when moving markers disagree on shared nodes in this frame
-/// (naming the pairs of markers and the node counts).
-ResolvedFrame resolve_frame(const MotionContext& context, std::size_t frame);
-
-/// The same for one frame without a context (builds one: O(frames) per
-/// call; a series should make the context once). `boundary` must be
-/// resolve_boundary(mesh, spec).boundary.
+/// The motion of every boundary node in frame `frame` (< frame_count(spec)).
+/// `boundary` must be resolve_boundary(mesh, spec).boundary. Throws MeshError
+/// as resolve_boundary does, and when moving markers disagree on shared
+/// nodes in this frame (naming the pairs of markers and the node counts).
 ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
                             std::size_t frame);
 
