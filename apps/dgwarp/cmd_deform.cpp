@@ -162,7 +162,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         const std::string phase = std::string(method_name(method)) + ": deforming" +
                                   (frames > 1 ? " frame " + std::to_string(k + 1) + "/" + std::to_string(frames) : "");
         progress.phase(phase);
-        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
+        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary, k);
         f.warnings = motion.warnings;
         Stopwatch sw;  // the deform time is the method's step alone
         try {
