@@ -49,13 +49,17 @@ std::int64_t moving_count(const BoundarySet& b) {
 
 }  // namespace
 
-void add_setup_options(CLI::App* cmd, SetupArgs& a) {
+void add_input_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
+    cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
+}
+
+void add_setup_options(CLI::App* cmd, SetupArgs& a) {
+    add_input_options(cmd, a);
     cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
-    cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(CLI::PositiveNumber);
     cmd->add_option("--threads", a.threads, "Threads to use (default: all cores)")->check(CLI::PositiveNumber);
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
         ->capture_default_str()
@@ -121,7 +125,7 @@ MethodOptions method_options(const SetupArgs& args) {
     return o;
 }
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
+Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress) {
     if (args.threads > 0) set_num_threads(args.threads);
     Inputs in;
     in.args = args;
@@ -133,6 +137,13 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
     progress.phase("classifying the boundary");
     in.boundary = resolve_boundary(in.mesh, in.spec);
     in.resolve_seconds = sw.lap();
+    progress.clear();
+    return in;
+}
+
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress) {
+    Inputs in = read_motion_inputs(args, progress);
+    Stopwatch sw;
     progress.phase("measuring the original mesh's quality");
     in.orientation = cell_orientations(in.mesh);
     in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
@@ -237,19 +248,22 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p) {
     for (const auto& w : plan_warnings(p)) std::cerr << "warning: " << w << "\n";
 }
 
-nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
+nlohmann::json boundary_json(const Inputs& in) {
     const auto& b = in.boundary.boundary;
+    return {{"nodes", b.nodes.size()},
+            {"moving_nodes", moving_count(b)},
+            {"moving_markers", in.boundary.moving_markers},
+            {"static_markers", in.boundary.static_markers}};
+}
+
+nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
     const MethodOptions o = method_options(in.args);
     return {{"schema_version", json_schema_version},
             {"command", command},
             {"file", in.args.mesh},
             {"motion", in.args.motion},
             {"mesh", mesh_json(in.mesh)},
-            {"boundary",
-             {{"nodes", b.nodes.size()},
-              {"moving_nodes", moving_count(b)},
-              {"moving_markers", in.boundary.moving_markers},
-              {"static_markers", in.boundary.static_markers}}},
+            {"boundary", boundary_json(in)},
             {"options",
              {{"a_translation", o.dg_idw.a_translation},
               {"a_rotation", o.dg_idw.a_rotation},

@@ -36,7 +36,10 @@ struct SetupArgs {
     double harmonic_growth = DgHarmonicOptions{}.growth;
 };
 
-/// Adds the mesh, --motion, --method, --zone, --threads and method options to `cmd`.
+/// Adds the mesh, --motion and --zone to `cmd` (what read_motion_inputs reads).
+void add_input_options(CLI::App* cmd, SetupArgs& args);
+
+/// Adds the input options, --method, --threads and method options to `cmd`.
 void add_setup_options(CLI::App* cmd, SetupArgs& args);
 
 /// The methods `args.method` names: one, or all of them for "all" (when allowed).
@@ -57,6 +60,11 @@ struct Inputs {
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
 
+/// Reads the mesh and the motion and resolves the boundary (every check of
+/// resolve_boundary): mesh, spec, boundary, read and resolve seconds.
+Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress);
+
+/// read_motion_inputs, then the original mesh's orientation and quality.
 Inputs read_inputs(const SetupArgs& args, ProgressLine& progress);
 
 /// A method's plan for the inputs: built, or loaded from `plan_file` (DG-IDW
@@ -84,6 +92,8 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames);
 /// Lines about the plan and its prepare time; its warnings on standard error.
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p);
 
+/// The JSON report's `boundary` object (docs/JSON.md).
+nlohmann::json boundary_json(const Inputs& in);
 /// The JSON report's common part (docs/JSON.md).
 nlohmann::json inputs_json(const Inputs& in, const std::string& command);
 nlohmann::json plan_json(const Inputs& in, const PlannedMethod& p);
