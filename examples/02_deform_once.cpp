@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
         // Which boundary nodes exist and which move (fixed for the life of a
         // plan), then the motion of each boundary node in frame 0.
         const ResolvedBoundary rb = resolve_boundary(mesh, spec);
-        const ResolvedFrame frame = resolve_frame(mesh, spec, rb.boundary, 0);
+        const ResolvedFrame frame = resolve_frame(mesh, spec, rb, 0);
         for (const auto& w : rb.warnings) std::cerr << "warning: " << w << "\n";
         for (const auto& w : frame.warnings) std::cerr << "warning: " << w << "\n";
         std::cout << "boundary " << rb.boundary.nodes.size() << " nodes; moving markers:";

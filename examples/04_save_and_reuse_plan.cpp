@@ -28,8 +28,9 @@ int main() {
         MotionSpec spec;
         spec.frames.resize(1);
         spec.frames[0].markers["rectangle"] = RigidMotion{lift_and_turn};
-        const BoundarySet boundary = resolve_boundary(mesh, spec).boundary;
-        const BoundaryMotion motion = resolve_frame(mesh, spec, boundary, 0).motion;
+        const ResolvedBoundary resolved = resolve_boundary(mesh, spec);
+        const BoundarySet& boundary = resolved.boundary;
+        const BoundaryMotion motion = resolve_frame(mesh, spec, resolved, 0).motion;
 
         // First run: build and save.
         Clock::time_point start = Clock::now();

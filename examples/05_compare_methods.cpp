@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
             const Plan plan = prepare(method, mesh.dim, mesh.points, boundary, options);
             const double prepare_ms = 1e3 * seconds_since(start);
             for (double degrees : angles) {
-                const BoundaryMotion motion = resolve_frame(mesh, turn_rectangle(degrees), boundary, 0).motion;
+                const MotionSpec spec = turn_rectangle(degrees);
+                const BoundaryMotion motion = resolve_frame(mesh, spec, resolve_boundary(mesh, spec), 0).motion;
                 Mesh deformed = mesh;
                 try {
                     start = Clock::now();

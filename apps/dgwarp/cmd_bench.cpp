@@ -161,7 +161,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
     row.cells = mesh.cells.size();
     row.paper = paper_entry(name, size, cm.name);
     const ResolvedBoundary b = resolve_boundary(mesh, cm.spec);
-    const BoundaryMotion motion = resolve_frame(mesh, cm.spec, b.boundary, 0).motion;
+    const BoundaryMotion motion = resolve_frame(mesh, cm.spec, b, 0).motion;
     row.boundary_nodes = b.boundary.nodes.size();
     for (auto m : b.boundary.moving) row.moving_nodes += m;
     const std::vector<std::int8_t> orientation = cell_orientations(mesh);

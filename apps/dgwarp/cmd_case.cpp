@@ -1,10 +1,12 @@
-// dgwarp case NAME -o FILE: write one of the paper's test meshes.
+// dgwarp case NAME -o FILE [--motions DIR]: write one of the paper's test meshes, and its motions.
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
+#include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/io/motion_file.hpp"
 #include "flag_values.hpp"
 #include "output_files.hpp"
 
@@ -15,9 +17,21 @@ namespace {
 struct CaseArgs {
     std::string name;
     std::string output;
+    std::string motions;  // folder for the motion files; "" = none
     int size = 0;
     bool quiet = false;
 };
+
+/// Writes each motion of the case as DIR/<motion>.json (and its node files).
+void write_case_motions(const CaseArgs& a, const std::vector<CaseMotion>& motions) {
+    const std::filesystem::path dir = a.motions;
+    for (const CaseMotion& m : motions) {
+        const std::string comment = "dgwarp case " + a.name + (a.size ? " --size " + std::to_string(a.size) : "") +
+                                    ", motion " + m.name + ": " + m.description;
+        for (const auto& file : write_motion_file(dir / (m.name + ".json"), m.spec, comment))
+            if (!a.quiet) std::cout << "wrote " << file.string() << "\n";
+    }
+}
 
 void run_case(const CaseArgs& a) {
     const int sizes = case_size_count(a.name);  // the name is checked by the option
@@ -26,15 +40,25 @@ void run_case(const CaseArgs& a) {
                                                  (sizes == 1 ? std::string("size 0 only")
                                                              : "sizes 0 to " + std::to_string(sizes - 1)) +
                                                  ", got " + std::to_string(a.size));
-    require_mesh_extension("--output", a.output);
-    check_output_file(a.output, {});
+    if (a.output.empty() && a.motions.empty())
+        throw CLI::ValidationError("case", "give -o FILE (the mesh), --motions DIR (its motions), or both");
+    if (!a.output.empty()) {
+        require_mesh_extension("--output", a.output);
+        check_output_file(a.output, {});
+    }
+    if (!a.motions.empty()) make_output_folder(a.motions);  // before the work, with the system's reason
     const Mesh mesh = make_case(a.name, a.size);
-    write_mesh(a.output, mesh);
-    if (a.quiet) return;
-    std::cout << "wrote " << a.output << ": " << a.name << ", " << mesh.num_points() << " nodes, " << mesh.cells.size()
-              << " cells; motions:";
-    for (const CaseMotion& m : case_motions(a.name, mesh)) std::cout << " " << m.name;
-    std::cout << "\n";
+    const std::vector<CaseMotion> motions = case_motions(a.name, mesh);
+    if (!a.output.empty()) {
+        write_mesh(a.output, mesh);
+        if (!a.quiet) {
+            std::cout << "wrote " << a.output << ": " << a.name << ", " << mesh.num_points() << " nodes, "
+                      << mesh.cells.size() << " cells; motions:";
+            for (const CaseMotion& m : motions) std::cout << " " << m.name;
+            std::cout << (a.motions.empty() ? " (--motions DIR writes them)" : "") << "\n";
+        }
+    }
+    if (!a.motions.empty()) write_case_motions(a, motions);
 }
 
 }  // namespace
@@ -45,10 +69,18 @@ void add_case_command(CLI::App& app) {
     std::string names;
     for (const auto& n : case_names()) names += (names.empty() ? "" : ", ") + n;
     cmd->add_option("name", args->name, "The case: " + names)->required()->check(one_of(case_names(), "a case"));
-    cmd->add_option("-o,--output", args->output, "Output mesh (.su2, .msh, .vtu)")->required();
+    cmd->add_option("-o,--output", args->output, "Output mesh (.su2, .msh, .vtu)");
+    cmd->add_option("--motions", args->motions,
+                    "Folder to write the case's motions to, one motion file per motion (<motion>.json, with its node "
+                    "file for per-node motions; docs/MOTION.md): 'dgwarp deform' with one of them does what "
+                    "'dgwarp bench' does for that motion");
     cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~404k), 2 (~826k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
-    cmd->footer("Examples:\n  dgwarp case naca0012 -o naca0012.su2\n  dgwarp case squeezed-sphere --size 1 -o sphere.msh\n"
+    cmd->footer("At least one of -o and --motions. The per-node motions (twisted-bar, squeezed-sphere) name the "
+                "mesh's nodes:\nuse them with the mesh of the same case and --size.\n\n"
+                "Examples:\n  dgwarp case naca0012 -o naca0012.su2 --motions naca0012-motions\n"
+                "  dgwarp deform naca0012.su2 -m naca0012-motions/rotate-45.json -o turned.vtu\n"
+                "  dgwarp case squeezed-sphere --size 1 -o sphere.msh\n"
                 "  dgwarp case wing-body --size 1 -o wing-body.su2");
     cmd->callback([args] { run_case(*args); });
 }

@@ -245,7 +245,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
                                                     std::to_string(frames) + ")"
                                               : "");
         progress.phase(phase);
-        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary.boundary, k);
+        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary, k);
         f.warnings = motion.warnings;
         Stopwatch sw;  // the deform time is the method's step alone
         try {

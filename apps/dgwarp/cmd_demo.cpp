@@ -57,7 +57,7 @@ void run_demo(const DemoArgs& a) {
     out << "  mesh: " << describe_mesh(mesh) << "\n";
     const MotionSpec spec = demo_motion(a.angle_deg);
     const ResolvedBoundary boundary = resolve_boundary(mesh, spec);
-    const BoundaryMotion motion = resolve_frame(mesh, spec, boundary.boundary, 0).motion;
+    const BoundaryMotion motion = resolve_frame(mesh, spec, boundary, 0).motion;
     const auto orientation = cell_orientations(mesh);
     const std::vector<double> original_quality = cell_qualities(mesh, orientation);
 

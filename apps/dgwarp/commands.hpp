@@ -26,6 +26,7 @@ void add_deform_command(CLI::App& app);
 /// What to try when `method` gave inverted cells (the options that apply to it).
 std::string invalid_result_advice(Method method);
 void add_prepare_command(CLI::App& app);
+void add_check_command(CLI::App& app);
 void add_case_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 

@@ -82,17 +82,21 @@ std::int64_t moving_count(const BoundarySet& b) {
 
 }  // namespace
 
+void add_input_options(CLI::App* cmd, SetupArgs& a) {
+    cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
+    cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
+    cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
+}
+
 void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     // Records that a method option was given (a plan file decides the others).
     const auto given = [&a](std::string flag) {
         return [&a, flag = std::move(flag)](const std::string&) { a.given.insert(flag); };
     };
-    cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh)")->required();
-    cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
+    add_input_options(cmd, a);
     cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
-    cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
     add_threads_option(cmd, a.threads, "all cores");
     cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
         ->capture_default_str()
@@ -174,20 +178,28 @@ MethodOptions method_options(const SetupArgs& args) {
     return o;
 }
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
-                   const std::function<void(const MotionSpec&)>& check_outputs) {
+Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
+                          const std::function<void(const MotionSpec&)>& check_outputs) {
     use_threads(args.threads);
     Inputs in;
     in.args = args;
     Stopwatch sw;
     in.spec = read_motion_file(args.motion);
-    check_outputs(in.spec);
+    if (check_outputs) check_outputs(in.spec);
     progress.phase("reading " + args.mesh);
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     in.boundary = resolve_boundary(in.mesh, in.spec);
     in.resolve_seconds = sw.lap();
+    progress.clear();
+    return in;
+}
+
+Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
+                   const std::function<void(const MotionSpec&)>& check_outputs) {
+    Inputs in = read_motion_inputs(args, progress, check_outputs);
+    Stopwatch sw;
     progress.phase("measuring the original mesh's quality");
     in.own_orientation = cell_orientations(in.mesh);
     in.orientation = dominant_orientations(in.mesh, in.own_orientation);
@@ -318,18 +330,22 @@ nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
             {"harmonic_growth", o.dg_harmonic.growth}};
 }
 
-nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
+nlohmann::json boundary_json(const Inputs& in) {
     const auto& b = in.boundary.boundary;
+    return {{"nodes", b.nodes.size()},
+            {"moving_nodes", moving_count(b)},
+            {"moving_markers", in.boundary.moving_markers},
+            {"static_markers", in.boundary.static_markers}};
+}
+
+nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
+    const MethodOptions o = method_options(in.args);
     return {{"schema_version", json_schema_version},
             {"command", command},
             {"file", in.args.mesh},
             {"motion", in.args.motion},
             {"mesh", mesh_json(in.mesh)},
-            {"boundary",
-             {{"nodes", b.nodes.size()},
-              {"moving_nodes", moving_count(b)},
-              {"moving_markers", in.boundary.moving_markers},
-              {"static_markers", in.boundary.static_markers}}},
+            {"boundary", boundary_json(in)},
             {"options", options_json(method_options(in.args), !in.args.weights.empty())},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
             {"original_quality", quality_json(in.original_quality)},

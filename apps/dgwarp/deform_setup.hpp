@@ -41,7 +41,10 @@ struct SetupArgs {
     double harmonic_growth = DgHarmonicOptions{}.growth;
 };
 
-/// Adds the mesh, --motion, --method, --zone, --threads and method options to `cmd`.
+/// Adds the mesh, --motion and --zone to `cmd` (what read_motion_inputs reads).
+void add_input_options(CLI::App* cmd, SetupArgs& args);
+
+/// Adds the input options, --method, --threads and method options to `cmd`.
 void add_setup_options(CLI::App* cmd, SetupArgs& args);
 
 /// The methods `args.method` names: one, or all of them for "all" (when allowed).
@@ -68,9 +71,15 @@ struct Inputs {
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
 
-/// Reads the motion file, calls `check_outputs` with it (so that outputs are
-/// checked before the long work: their names may depend on its frames, and
-/// none may be a file it names), then reads the mesh and classifies the boundary.
+/// Reads the motion file, calls `check_outputs` with it when given (so that
+/// outputs are checked before the long work: their names may depend on its
+/// frames, and none may be a file it names), then reads the mesh and resolves
+/// the boundary (every check of resolve_boundary): mesh, spec, boundary, read
+/// and resolve seconds.
+Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
+                          const std::function<void(const MotionSpec&)>& check_outputs = {});
+
+/// read_motion_inputs, then the original mesh's orientation and quality.
 Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
                    const std::function<void(const MotionSpec&)>& check_outputs);
 
@@ -99,6 +108,8 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
 /// Lines about the plan and its prepare time; its warnings through `warnings`.
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings);
 
+/// The JSON report's `boundary` object (docs/JSON.md).
+nlohmann::json boundary_json(const Inputs& in);
 /// The JSON report's common part (docs/JSON.md).
 /// Its `options` are the command line's (options_json); with a loaded plan,
 /// the plan's are the ones used: replace them with options_json(p.options, true).

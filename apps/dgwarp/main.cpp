@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
         "  dgwarp demo                              run the built-in example\n"
         "  dgwarp deform mesh.su2 -m motion.json -o out.vtu   deform a mesh\n"
         "  dgwarp prepare mesh.su2 -m motion.json -o mesh.plan build the plan once for many steps\n"
+        "  dgwarp check mesh.su2 -m motion.json     check a motion against a mesh, every frame\n"
         "  dgwarp info mesh.su2                     counts, markers, bounding box, quality\n"
         "  dgwarp quality mesh.su2                  quality summary of a mesh\n"
         "  dgwarp convert mesh.su2 mesh.vtu         convert between formats\n"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
         "Exit codes: 0 success, 1 usage error, 2 bad input, 3 invalid result, 4 internal error.");
     add_deform_command(app);
     add_prepare_command(app);
+    add_check_command(app);
     add_info_command(app);
     add_quality_command(app);
     add_convert_command(app);

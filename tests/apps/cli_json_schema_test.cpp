@@ -118,6 +118,22 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
     expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["options"]["length_scale"] = "big"; }, "length_scale");
 }
 
+TEST(CliJsonSchema, CheckReportValidatesAndATamperedOneDoesNot) {
+    const RectBoxFiles c = rect_box_files();
+    const nlohmann::json one = valid_report(c.dir, "check", quoted(c.mesh) + " -m " + quoted(c.motion) + " --json");
+    EXPECT_EQ(one.at("frames"), 1);
+    // A time series with a warning in every frame (a motion far larger than the mesh).
+    const auto series = write_text(c.dir / "series.json", R"({
+        "markers": {"rectangle": {"periodic": {"plunge": {"amplitude": [100, 0], "frequency": 1, "phase_deg": 90}}}},
+        "time": {"time_step": 0.25, "steps": 3}})");
+    const nlohmann::json three = valid_report(c.dir, "check", quoted(c.mesh) + " -m " + quoted(series) + " --json");
+    EXPECT_EQ(three.at("frames"), 3);
+    EXPECT_EQ(three.at("warnings").size(), 2u);  // frames 0 and 2 (sin 90°, sin 270°; frame 1 is at about 0)
+    expect_invalid(c.dir, "check", one, [](auto& j) { j.erase("frames"); }, "frames");
+    expect_invalid(c.dir, "check", one, [](auto& j) { j["seconds"].erase("resolve"); }, "resolve");
+    expect_invalid(c.dir, "check", one, [](auto& j) { j["options"] = nlohmann::json::object(); }, "options");
+}
+
 TEST(CliJsonSchema, BenchReportValidatesAndATamperedOneDoesNot) {
     const auto dir = scratch_dir(), js = dir / "bench.json";
     const CommandResult r = run_cli("bench --case rect-box --json " + quoted(js));

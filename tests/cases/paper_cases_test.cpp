@@ -15,7 +15,7 @@ namespace {
 /// New positions of the boundary nodes under motion `m` (BoundarySet order), and the boundary.
 std::pair<std::vector<double>, ResolvedBoundary> moved(const Mesh& mesh, const CaseMotion& m) {
     ResolvedBoundary b = resolve_boundary(mesh, m.spec);
-    const ResolvedFrame f = resolve_frame(mesh, m.spec, b.boundary, 0);
+    const ResolvedFrame f = resolve_frame(mesh, m.spec, b, 0);
     return {moved_boundary_points(mesh, b.boundary, f.motion), std::move(b)};
 }
 }  // namespace
@@ -85,7 +85,7 @@ TEST(CasesPaper, TwistTurnsEachSectionAboutItsCentreAndThenTheWholeBar) {
     // The twist is a displacement (no rotation vector: a shape deformation, as
     // the paper's dx, dy); the rotation that follows is rigid, 45° about the origin.
     for (int k : {0, 1}) {
-        const ResolvedFrame f = resolve_frame(mesh, motions[k].spec, b.boundary, 0);
+        const ResolvedFrame f = resolve_frame(mesh, motions[k].spec, b, 0);
         for (std::size_t i = 0; i < f.motion.size(); ++i) {
             if (!b.boundary.moving[i]) continue;
             EXPECT_EQ(f.motion[i].rotation[2], k == 0 ? 0.0 : std::numbers::pi / 4) << i;

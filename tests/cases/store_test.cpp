@@ -66,7 +66,7 @@ TEST(CasesStore, DgHarmonicKeepsEveryCellValid) {
     const auto orientation = cell_orientations(m);
     for (const CaseMotion& c : case_motions("store", m)) {
         const ResolvedBoundary rb = resolve_boundary(m, c.spec);
-        const ResolvedFrame frame = resolve_frame(m, c.spec, rb.boundary, 0);
+        const ResolvedFrame frame = resolve_frame(m, c.spec, rb, 0);
         Mesh moved = m;
         deform(prepare(Method::dg_harmonic, 3, m.points, rb.boundary), m.points, frame.motion, moved.points);
         const QualitySummary q = summarize_quality(cell_qualities(moved, orientation));

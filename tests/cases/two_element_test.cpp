@@ -73,7 +73,7 @@ TEST(CasesTwoElement, DgHarmonicKeepsEveryCellValidWhereDgIdwFolds) {
     const auto orientation = cell_orientations(m);
     for (const CaseMotion& c : case_motions("two-element", m)) {
         const ResolvedBoundary rb = resolve_boundary(m, c.spec);
-        const ResolvedFrame frame = resolve_frame(m, c.spec, rb.boundary, 0);
+        const ResolvedFrame frame = resolve_frame(m, c.spec, rb, 0);
         for (Method method : {Method::dg_harmonic, Method::dg_idw}) {
             std::vector<double> out(m.points.size());
             deform(prepare(method, 2, m.points, rb.boundary), m.points, frame.motion, out);

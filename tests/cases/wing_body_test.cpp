@@ -77,7 +77,7 @@ TEST(CasesWingBody, FoldTurnsEveryWingNodeTwentyDegreesAboutTheHinge) {
     EXPECT_EQ(b.moving_markers, std::vector<std::string>{"wing"});
     EXPECT_TRUE(b.warnings.empty());  // no node on both the wing and a static marker
     const std::vector<double> moved =
-        moved_boundary_points(m, b.boundary, resolve_frame(m, motions[0].spec, b.boundary, 0).motion);
+        moved_boundary_points(m, b.boundary, resolve_frame(m, motions[0].spec, b, 0).motion);
     // Hand-computed: the hinge is the line along x through (y, z) = (0.9, 0.06 × chord(0.9)),
     // chord(0.9) = 2.2 - 1.3 × 0.9 / 6 = 2.005; a positive turn about +x lifts the tip.
     const double yh = 0.9, zh = 0.06 * 2.005, c = std::cos(std::numbers::pi / 9), s = std::sin(std::numbers::pi / 9);
@@ -111,7 +111,7 @@ Folded fold_with(Method method) {
     const Mesh& m = coarse();
     const CaseMotion fold = case_motions("wing-body", m).front();
     Folded f{m, resolve_boundary(m, fold.spec), {}, {}};
-    const BoundaryMotion motion = resolve_frame(m, fold.spec, f.boundary.boundary, 0).motion;
+    const BoundaryMotion motion = resolve_frame(m, fold.spec, f.boundary, 0).motion;
     const Plan plan = prepare(method, 3, m.points, f.boundary.boundary);
     deform(plan, m.points, motion, f.mesh.points);
     const auto orientation = cell_orientations(m);
@@ -141,7 +141,7 @@ TEST(CasesWingBody, DgIdwFoldMovesTheWingExactlyAndInvertsOnlyAFewCells) {
     const Mesh& m = coarse();
     const CaseMotion fold = case_motions("wing-body", m).front();
     const std::vector<double> expected = moved_boundary_points(
-        m, f.boundary.boundary, resolve_frame(m, fold.spec, f.boundary.boundary, 0).motion);
+        m, f.boundary.boundary, resolve_frame(m, fold.spec, f.boundary, 0).motion);
     for (std::size_t i = 0; i < f.boundary.boundary.nodes.size(); ++i)
         for (int k = 0; k < 3; ++k)
             ASSERT_NEAR(f.mesh.points[3 * f.boundary.boundary.nodes[i] + k], expected[3 * i + k], 1e-9);

@@ -76,10 +76,10 @@ std::vector<double> rect_box_turned(double degrees) {
     MotionSpec spec;
     spec.frames.resize(1);
     spec.frames[0].markers["rectangle"] = RigidMotion{turn};
-    const BoundarySet boundary = resolve_boundary(mesh, spec).boundary;
+    const ResolvedBoundary resolved = resolve_boundary(mesh, spec);
     std::vector<double> out(mesh.points.size());
-    deform(prepare(Method::dg_idw, mesh.dim, mesh.points, boundary), mesh.points,
-           resolve_frame(mesh, spec, boundary, 0).motion, out);
+    deform(prepare(Method::dg_idw, mesh.dim, mesh.points, resolved.boundary), mesh.points,
+           resolve_frame(mesh, spec, resolved, 0).motion, out);
     return out;
 }
 

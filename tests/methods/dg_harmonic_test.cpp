@@ -55,7 +55,7 @@ struct DeformedMesh {
 // The mesh deformed by DG-harmonic (default options) under `spec`, with its quality.
 DeformedMesh harmonic_on(const Mesh& mesh, const MotionSpec& spec) {
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
-    const ResolvedFrame frame = resolve_frame(mesh, spec, rb.boundary, 0);
+    const ResolvedFrame frame = resolve_frame(mesh, spec, rb, 0);
     const DgHarmonicPlan plan = prepare_dg_harmonic(mesh.dim, mesh.points, rb.boundary);
     DeformedMesh d{mesh, {}};
     deform_dg_harmonic(plan, mesh.points, frame.motion, d.mesh.points);

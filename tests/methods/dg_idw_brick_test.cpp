@@ -57,7 +57,7 @@ Deformed deform_brick(const Mesh& mesh, const MotionSpec& spec) {
     d.boundary = resolve_boundary(mesh, spec);
     const DgIdwOptions options{.length_scale = 0};
     const DgIdwPlan plan = prepare_dg_idw(mesh.dim, mesh.points, d.boundary.boundary, options);
-    d.motion = resolve_frame(mesh, spec, d.boundary.boundary, 0).motion;
+    d.motion = resolve_frame(mesh, spec, d.boundary, 0).motion;
     d.points.assign(mesh.points.size(), std::nan(""));
     deform_dg_idw(plan, mesh.points, d.motion, d.points);
     Mesh moved = mesh;
@@ -196,7 +196,7 @@ TEST(DgIdwBrick, TopFaceRotationUnderStaticWinsFoldsTheTopFaceItself) {
         SCOPED_TRACE(kind);
         const Mesh mesh = read_brick(kind);
         const ResolvedBoundary rb = resolve_boundary(mesh, spec);
-        const BoundaryMotion motion = resolve_frame(mesh, spec, rb.boundary, 0).motion;
+        const BoundaryMotion motion = resolve_frame(mesh, spec, rb, 0).motion;
         const std::vector<double> moved = moved_boundary_points(mesh, rb.boundary, motion);
         auto position = [&](NodeId n) {
             const auto b = std::lower_bound(rb.boundary.nodes.begin(), rb.boundary.nodes.end(), n) - rb.boundary.nodes.begin();

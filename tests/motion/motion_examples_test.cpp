@@ -94,7 +94,7 @@ TEST(MotionExamples, EveryExampleResolvesOnItsMesh) {
         const ResolvedBoundary rb = resolve_boundary(mesh, spec);
         EXPECT_EQ(rb.boundary.nodes, union_of_markers(mesh));
         for (std::size_t k = 0; k < frame_count(spec); ++k) {
-            const ResolvedFrame fr = resolve_frame(mesh, spec, rb.boundary, k);
+            const ResolvedFrame fr = resolve_frame(mesh, spec, rb, k);
             ASSERT_EQ(fr.motion.size(), rb.boundary.nodes.size());
             for (std::size_t b = 0; b < fr.motion.size(); ++b) {
                 if (!rb.boundary.moving[b]) {
@@ -113,7 +113,7 @@ TEST(MotionExamples, RotatedAirfoilStaysRigid) {
     const auto airfoil = marker_nodes(find_marker(*mesh, "airfoil"));
     EXPECT_EQ(std::count(rb.boundary.moving.begin(), rb.boundary.moving.end(), 1),
               static_cast<std::ptrdiff_t>(airfoil.size()));
-    const auto p = moved_boundary_points(*mesh, rb.boundary, resolve_frame(*mesh, spec, rb.boundary, 0).motion);
+    const auto p = moved_boundary_points(*mesh, rb.boundary, resolve_frame(*mesh, spec, rb, 0).motion);
     // Distances between moved airfoil nodes equal the original ones.
     std::vector<std::size_t> slots;
     for (NodeId n : airfoil)
@@ -142,7 +142,7 @@ TEST(MotionExamples, BrickTopRotationTurnsTheSharedEdgesWithTheTop) {
         sides.insert(sides.end(), n.begin(), n.end());
     }
     std::sort(sides.begin(), sides.end());
-    const auto fr = resolve_frame(*mesh, spec, rb.boundary, 0);
+    const auto fr = resolve_frame(*mesh, spec, rb, 0);
     const auto p = moved_boundary_points(*mesh, rb.boundary, fr.motion);
     std::size_t moving = 0, shared = 0;
     for (std::size_t b = 0; b < rb.boundary.nodes.size(); ++b) {

@@ -64,7 +64,7 @@ TEST(MotionResolve, IssueExampleOnTwoSquares) {
     EXPECT_TRUE(rb.warnings.empty());
 
     ASSERT_EQ(frame_count(spec), 1u);
-    const ResolvedFrame f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const ResolvedFrame f = resolve_frame(mesh, spec, rb, 0);
     EXPECT_TRUE(f.warnings.empty());
     const NodeMotion expected{{0, 0, 0}, {0, 0, std::numbers::pi / 4}, {0.25, 0, 0}};
     for (NodeId n = 0; n < 8; ++n) EXPECT_EQ(motion_of(rb.boundary, f.motion, n), n < 4 ? NodeMotion{} : expected);
@@ -91,7 +91,7 @@ TEST(MotionResolve, MarkersNotNamedAreFixedUnlessADefaultMovesThem) {
     EXPECT_EQ(rb.static_markers, (std::vector<std::string>{"b", "wall"}));
     // a's nodes 0-2 move (1 and 2 are on b too: moving_wins), the rest stays.
     EXPECT_EQ(rb.boundary.moving, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 0}));
-    const auto f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 2).translation, (Vec3{0, 1, 0}));
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 3), NodeMotion{});
 
@@ -121,7 +121,7 @@ TEST(MotionResolve, DisplacementFileGivesTranslationPerNode) {
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
     // Node 7's displacement is zero, but it is on a moving marker: it counts as moving.
     EXPECT_EQ(rb.boundary.moving, (std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1}));
-    const auto f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 6), (NodeMotion{{0.3, -0.1, 0}, {}, {}}));
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 7), NodeMotion{});
     const auto p = moved_boundary_points(mesh, rb.boundary, f.motion);
@@ -177,7 +177,7 @@ TEST(MotionResolve, Su2SurfaceFileSharedByTwoMarkersGivesNewPositions) {
                                                          "b": {"surface_file": "surface_positions.dat"}}})");
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
     EXPECT_EQ(rb.boundary.moving, (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 0}));
-    const auto f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 3).translation, (Vec3{0.25, 0.5, 0}));
     const auto p = moved_boundary_points(mesh, rb.boundary, f.motion);
     for (std::size_t n = 0; n < 3; ++n) {
@@ -205,7 +205,7 @@ TEST(MotionResolve, NodeMotionFileTwistsIn3D) {
     const MotionSpec spec = spec_in(dir, R"({"markers": {"top": {"node_motion_file": "twist.csv"}}})");
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
     EXPECT_EQ(rb.boundary.nodes.size(), 8u);
-    const auto f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
     const auto p = moved_boundary_points(mesh, rb.boundary, f.motion);
     // Node 5 (1, 0, 1) turns 90° about (0.5, 0.5): (0.5, -0.5) -> (0.5, 0.5) from the centre.
     EXPECT_NEAR(p[15], 1.0, 1e-15);
@@ -231,9 +231,9 @@ TEST(MotionResolve, FramesListGivesOneMotionPerFrame) {
     // wall moves in some frame: its nodes are moving in every frame.
     EXPECT_EQ(rb.boundary.moving, (std::vector<std::uint8_t>{0, 0, 0, 1, 1, 1}));
     ASSERT_EQ(frame_count(spec), 3u);
-    EXPECT_EQ(motion_of(rb.boundary, resolve_frame(mesh, spec, rb.boundary, 0).motion, 5).translation, (Vec3{1, 0, 0}));
-    EXPECT_EQ(motion_of(rb.boundary, resolve_frame(mesh, spec, rb.boundary, 1).motion, 5), NodeMotion{});
-    const auto f2 = resolve_frame(mesh, spec, rb.boundary, 2);
+    EXPECT_EQ(motion_of(rb.boundary, resolve_frame(mesh, spec, rb, 0).motion, 5).translation, (Vec3{1, 0, 0}));
+    EXPECT_EQ(motion_of(rb.boundary, resolve_frame(mesh, spec, rb, 1).motion, 5), NodeMotion{});
+    const auto f2 = resolve_frame(mesh, spec, rb, 2);
     const auto p = moved_boundary_points(mesh, rb.boundary, f2.motion);
     EXPECT_NEAR(p[10], 3.0, 1e-15);  // node 5 (5, 0) turns 90° about (3, 0) to (3, 2)
     EXPECT_NEAR(p[11], 2.0, 1e-15);
@@ -252,7 +252,7 @@ TEST(MotionResolve, PeriodicPitchPlungeAtStepsComputedByHand) {
     // k = 0: 5°, 0.5; k = 1: 9.781476°, 0.4045085; k = 3: 10° sin 246° = -9.135455°, 0.5 sin 198° = -0.1545085.
     const double angle[] = {5.0, 9.781476, 0, -9.135455}, plunge[] = {0.5, 0.4045085, 0, -0.1545085};
     for (std::size_t k : {0u, 1u, 3u}) {
-        const auto f = resolve_frame(mesh, spec, rb.boundary, k);
+        const auto f = resolve_frame(mesh, spec, rb, k);
         const NodeMotion& m = motion_of(rb.boundary, f.motion, 6);
         EXPECT_NEAR(m.rotation[2], angle[k] * deg, 1e-8) << k;
         EXPECT_NEAR(m.translation[1], plunge[k], 1e-7) << k;
@@ -265,7 +265,7 @@ TEST(MotionResolve, AgreeingMovingMarkersShareNodes) {
     // Same motion on a and b.
     const MotionSpec same = spec_of(R"({"markers": {"a": {"translate": [0, 1]}, "b": {"translate": [0, 1]}}})");
     const ResolvedBoundary rb = resolve_boundary(mesh, same);
-    const auto f = resolve_frame(mesh, same, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, same, rb, 0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 2).translation, (Vec3{0, 1, 0}));
 
     // a turns 90° about node 2 = (2, 0), which moves node 1 to (2, -1) and leaves node 2; b translates
@@ -281,7 +281,7 @@ TEST(MotionResolve, AgreeingMovingMarkersShareNodes) {
     const MotionSpec by_position = spec_of(R"({"markers": {"a": {"rotate": {"angle_deg": 0, "center": [7, 7]}, "translate": [0, 1]},
                                                            "b": {"translate": [0, 1]}}})");
     const ResolvedBoundary rp = resolve_boundary(mesh, by_position);
-    const auto fp = resolve_frame(mesh, by_position, rp.boundary, 0);
+    const auto fp = resolve_frame(mesh, by_position, rp, 0);
     // Node 2 takes the motion of a, the first of its markers in mesh order.
     EXPECT_EQ(motion_of(rp.boundary, fp.motion, 2).center, (Vec3{7, 7, 0}));
     EXPECT_EQ(motion_of(rp.boundary, fp.motion, 3).center, (Vec3{0, 0, 0}));
@@ -327,14 +327,14 @@ TEST(MotionResolve, MovingAndStaticMarkerRules) {
     const ResolvedBoundary rm = resolve_boundary(mesh, moving);
     EXPECT_EQ(rm.boundary.moving, (std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1}));
     EXPECT_TRUE(contains(rm.warnings.at(0), "follow the moving markers")) << rm.warnings[0];
-    const auto fm = resolve_frame(mesh, moving, rm.boundary, 0);
+    const auto fm = resolve_frame(mesh, moving, rm, 0);
     EXPECT_NEAR(motion_of(rm.boundary, fm.motion, 4).rotation[2], 10 * deg, 1e-15);
 
     const MotionSpec fixed_edges = spec_of(R"({"markers": {)" + motion + R"(}, "shared_nodes": "static_wins"})");
     const ResolvedBoundary rs = resolve_boundary(mesh, fixed_edges);
     EXPECT_EQ(rs.boundary.moving, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0, 1}));
     EXPECT_TRUE(contains(rs.warnings.at(0), "stay fixed")) << rs.warnings[0];
-    const auto fs = resolve_frame(mesh, fixed_edges, rs.boundary, 0);
+    const auto fs = resolve_frame(mesh, fixed_edges, rs, 0);
     EXPECT_EQ(motion_of(rs.boundary, fs.motion, 4), NodeMotion{});
     EXPECT_EQ(motion_of(rs.boundary, fs.motion, 6), NodeMotion{});
     EXPECT_NEAR(motion_of(rs.boundary, fs.motion, 5).rotation[2], 10 * deg, 1e-15);
@@ -367,7 +367,7 @@ TEST(MotionResolve, MotionLargerThanTheMeshIsAWarning) {
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
     ASSERT_EQ(rb.warnings.size(), 1u);
     EXPECT_TRUE(contains(rb.warnings[0], "marker 'airfoil' moves node")) << rb.warnings[0];
-    const auto f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
     EXPECT_EQ(f.warnings.size(), 1u);
     const MotionSpec small = spec_of(R"({"markers": {"airfoil": {"translate": [5, 0]}}})");
     EXPECT_TRUE(resolve_boundary(mesh, small).warnings.empty());
@@ -384,7 +384,7 @@ TEST(MotionResolve, SpecBuiltInCodeWithNodeTables) {
     da.components = 2;
     spec.frames[0].markers["a"] = PrescribedDisplacements{da};
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
-    const auto f = resolve_frame(mesh, spec, rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
     for (NodeId n = 0; n < 3; ++n) EXPECT_EQ(motion_of(rb.boundary, f.motion, n).translation[1], n + 1.0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 3), NodeMotion{});
 }
@@ -433,7 +433,7 @@ TEST(MotionResolve, BoundaryNodesAtTheSameCoordinatesAreAWarning) {
     EXPECT_TRUE(contains(rb.warnings[0], "2 boundary nodes are at the same coordinates")) << rb.warnings[0];
     EXPECT_TRUE(contains(rb.warnings[0], "nodes 6 and 9 at (0.5, 0.5)")) << rb.warnings[0];
     // Both move with the marker.
-    const auto f = resolve_frame(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})"), rb.boundary, 0);
+    const auto f = resolve_frame(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})"), rb, 0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 6), motion_of(rb.boundary, f.motion, 9));
     // A boundary element whose two nodes are one node id: no coincident pair, no warning.
     Mesh same_id = two_squares();

@@ -269,7 +269,7 @@ TEST(Untangle, UnfoldsTheTwistedBarAfterTheTwistAndTheRotation) {
     const CaseMotion& cm = motions.at(1);
     ASSERT_EQ(cm.name, "twist-rotate-45");
     const ResolvedBoundary b = resolve_boundary(mesh, cm.spec);
-    const BoundaryMotion motion = resolve_frame(mesh, cm.spec, b.boundary, 0).motion;
+    const BoundaryMotion motion = resolve_frame(mesh, cm.spec, b, 0).motion;
     const Plan plan = prepare(Method::dg_idw, 2, mesh.points, b.boundary);
     std::vector<double> points(mesh.points.size());
     deform(plan, mesh.points, motion, points);

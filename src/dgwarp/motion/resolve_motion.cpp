@@ -17,17 +17,12 @@ namespace dgwarp {
 
 namespace {
 
-/// What every frame of one (mesh, spec) pair shares.
+/// One frame's view: the mesh, the spec and what their frames share.
 struct Context {
     const Mesh& mesh;
     const MotionSpec& spec;
-    std::vector<std::vector<NodeId>> marker_nodes;   // per marker, sorted
-    std::vector<std::vector<std::int32_t>> slots;    // per marker node: its index in the boundary set
-    std::vector<char> marker_moving;                 // per marker
-    BoundarySet boundary;
-    std::vector<char> on_static, on_moving;          // per boundary node
-    double diagonal = 0;                             // of the mesh's bounding box
-    double tolerance = 0;                            // for agreeing new positions
+    const SeriesContext& series;
+    const BoundarySet& boundary;
 };
 
 std::string where(const MotionSpec& spec, std::size_t frame) {
@@ -76,9 +71,18 @@ double bounding_box_diagonal(const Mesh& mesh) {
     return std::sqrt(sum);
 }
 
-Context make_context(const Mesh& mesh, const MotionSpec& spec) {
+/// The series context and the boundary set of (mesh, spec), and per boundary
+/// node whether it is on a static and on a moving marker.
+struct Series {
+    SeriesContext context;
+    BoundarySet boundary;
+    std::vector<char> on_static, on_moving;
+};
+
+Series make_series(const Mesh& mesh, const MotionSpec& spec) {
     check_marker_names(mesh, spec);
-    Context c{mesh, spec, {}, {}, {}, {}, {}, {}, 0, 0};
+    Series s;
+    SeriesContext& c = s.context;
     const std::size_t n_markers = mesh.markers.size();
     c.marker_nodes.reserve(n_markers);
     for (const Marker& m : mesh.markers) c.marker_nodes.push_back(marker_nodes(m));
@@ -88,29 +92,30 @@ Context make_context(const Mesh& mesh, const MotionSpec& spec) {
             if (!std::holds_alternative<FixedMotion>(marker_motion(spec, frame, mesh.markers[m].name)))
                 c.marker_moving[m] = 1;
 
-    for (const auto& nodes : c.marker_nodes) c.boundary.nodes.insert(c.boundary.nodes.end(), nodes.begin(), nodes.end());
-    std::sort(c.boundary.nodes.begin(), c.boundary.nodes.end());
-    c.boundary.nodes.erase(std::unique(c.boundary.nodes.begin(), c.boundary.nodes.end()), c.boundary.nodes.end());
-    const std::size_t n = c.boundary.nodes.size();
-    c.on_static.assign(n, 0);
-    c.on_moving.assign(n, 0);
+    BoundarySet& boundary = s.boundary;
+    for (const auto& nodes : c.marker_nodes) boundary.nodes.insert(boundary.nodes.end(), nodes.begin(), nodes.end());
+    std::sort(boundary.nodes.begin(), boundary.nodes.end());
+    boundary.nodes.erase(std::unique(boundary.nodes.begin(), boundary.nodes.end()), boundary.nodes.end());
+    const std::size_t n = boundary.nodes.size();
+    s.on_static.assign(n, 0);
+    s.on_moving.assign(n, 0);
     c.slots.resize(n_markers);
     for (std::size_t m = 0; m < n_markers; ++m) {
         c.slots[m].reserve(c.marker_nodes[m].size());
         for (NodeId node : c.marker_nodes[m]) {
             const auto slot = static_cast<std::int32_t>(
-                std::lower_bound(c.boundary.nodes.begin(), c.boundary.nodes.end(), node) - c.boundary.nodes.begin());
+                std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), node) - boundary.nodes.begin());
             c.slots[m].push_back(slot);
-            (c.marker_moving[m] ? c.on_moving : c.on_static)[static_cast<std::size_t>(slot)] = 1;
+            (c.marker_moving[m] ? s.on_moving : s.on_static)[static_cast<std::size_t>(slot)] = 1;
         }
     }
-    c.boundary.moving.resize(n);
+    boundary.moving.resize(n);
     for (std::size_t b = 0; b < n; ++b)
-        c.boundary.moving[b] =
-            c.on_moving[b] && !(spec.shared_nodes == SharedNodeRule::static_wins && c.on_static[b]) ? 1 : 0;
+        boundary.moving[b] =
+            s.on_moving[b] && !(spec.shared_nodes == SharedNodeRule::static_wins && s.on_static[b]) ? 1 : 0;
     c.diagonal = bounding_box_diagonal(mesh);
     c.tolerance = spec.shared_tolerance > 0 ? spec.shared_tolerance : 1e-9 * c.diagonal;
-    return c;
+    return s;
 }
 
 std::span<const double> point(const Mesh& mesh, NodeId node) {
@@ -136,25 +141,25 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
     const std::size_t n_markers = mesh.markers.size();
     std::vector<const MarkerMotion*> motions(n_markers);
     for (std::size_t m = 0; m < n_markers; ++m) motions[m] = &marker_motion(c.spec, frame, mesh.markers[m].name);
-    const auto node_motions = marker_node_motions(mesh, c.marker_nodes, motions, time, at);
+    const auto node_motions = marker_node_motions(mesh, c.series.marker_nodes, motions, time, at);
 
     const std::size_t n = c.boundary.nodes.size();
     BoundaryMotion resolved(n);
     std::vector<std::int32_t> from(n, -1), clash(n, -1);  // first moving marker; first disagreeing one
     const NodeMotion zero{};
     for (std::size_t m = 0; m < n_markers; ++m) {
-        if (!c.marker_moving[m]) continue;
+        if (!c.series.marker_moving[m]) continue;
         double largest = 0, largest_angle = 0;
         NodeId largest_node = -1;
-        for (std::size_t j = 0; j < c.marker_nodes[m].size(); ++j) {
+        for (std::size_t j = 0; j < c.series.marker_nodes[m].size(); ++j) {
             const NodeMotion& nm = node_motions[m].empty() ? zero : node_motions[m][j];
-            const NodeId node = c.marker_nodes[m][j];
+            const NodeId node = c.series.marker_nodes[m][j];
             const auto x = point(mesh, node);
-            const auto b = static_cast<std::size_t>(c.slots[m][j]);
+            const auto b = static_cast<std::size_t>(c.series.slots[m][j]);
             if (from[b] < 0) {
                 resolved[b] = nm;
                 from[b] = static_cast<std::int32_t>(m);
-            } else if (clash[b] < 0 && !agree(resolved[b], nm, x, c.tolerance)) {
+            } else if (clash[b] < 0 && !agree(resolved[b], nm, x, c.series.tolerance)) {
                 clash[b] = static_cast<std::int32_t>(m);
             }
             double moved[3], d2 = 0;
@@ -174,10 +179,10 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
                  "180 degrees is not the same as the shorter turn the other way: split it into frames";
             warnings.push_back(w.str());
         }
-        if (largest > c.diagonal && largest_node >= 0) {
+        if (largest > c.series.diagonal && largest_node >= 0) {
             std::ostringstream w;
             w << at << ": marker '" << mesh.markers[m].name << "' moves node " << largest_node << " by " << largest
-              << ", more than the diagonal of the mesh's bounding box (" << c.diagonal << ")";
+              << ", more than the diagonal of the mesh's bounding box (" << c.series.diagonal << ")";
             warnings.push_back(w.str());
         }
     }
@@ -203,7 +208,7 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
             const auto x = point(mesh, node);
             const std::size_t m1 = static_cast<std::size_t>(pair.first), m2 = static_cast<std::size_t>(pair.second);
             const auto j2 = static_cast<std::size_t>(
-                std::lower_bound(c.marker_nodes[m2].begin(), c.marker_nodes[m2].end(), node) - c.marker_nodes[m2].begin());
+                std::lower_bound(c.series.marker_nodes[m2].begin(), c.series.marker_nodes[m2].end(), node) - c.series.marker_nodes[m2].begin());
             double p1[3], p2[3];
             apply_motion(resolved[b], x, p1);
             apply_motion(node_motions[m2].empty() ? zero : node_motions[m2][j2], x, p2);
@@ -225,7 +230,7 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
 /// Warnings for markers the motion file names that have no nodes in the mesh.
 void warn_empty_named_markers(const Context& c, std::vector<std::string>& warnings) {
     for (std::size_t m = 0; m < c.mesh.markers.size(); ++m) {
-        if (!c.marker_nodes[m].empty()) continue;
+        if (!c.series.marker_nodes[m].empty()) continue;
         const std::string& name = c.mesh.markers[m].name;
         const bool named = std::any_of(c.spec.frames.begin(), c.spec.frames.end(),
                                        [&](const MotionFrame& f) { return f.markers.count(name) > 0; });
@@ -261,13 +266,14 @@ void warn_coincident_boundary_nodes(const Context& c, std::vector<std::string>& 
 }  // namespace
 
 ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
-    const Context c = make_context(mesh, spec);
+    Series series = make_series(mesh, spec);
+    const Context c{mesh, spec, series.context, series.boundary};
     ResolvedBoundary out;
     for (std::size_t m = 0; m < mesh.markers.size(); ++m)
-        (c.marker_moving[m] ? out.moving_markers : out.static_markers).push_back(mesh.markers[m].name);
+        (c.series.marker_moving[m] ? out.moving_markers : out.static_markers).push_back(mesh.markers[m].name);
 
     std::size_t shared = 0;
-    for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b) shared += c.on_moving[b] && c.on_static[b];
+    for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b) shared += series.on_moving[b] && series.on_static[b];
     if (shared > 0)
         out.warnings.push_back(
             std::to_string(shared) + " boundary node" + (shared == 1 ? " is" : "s are") +
@@ -295,15 +301,16 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
     // so that bad files and conflicts fail before any deformation.
     for (std::size_t f = 0; f < spec.frames.size(); ++f)
         resolve_at(c, spec.frames[f], 0.0, where(spec, f), out.warnings);
-    out.boundary = c.boundary;
+    out.boundary = std::move(series.boundary);
+    out.context = std::move(series.context);
     return out;
 }
 
-ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
+ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const ResolvedBoundary& resolved,
                             std::size_t frame) {
-    const Context c = make_context(mesh, spec);
-    assert(boundary.nodes == c.boundary.nodes && boundary.moving == c.boundary.moving);
-    (void)boundary;
+    assert(resolved.context.marker_nodes.size() == mesh.markers.size());
+    assert(resolved.boundary.nodes.size() == resolved.boundary.moving.size());
+    const Context c{mesh, spec, resolved.context, resolved.boundary};
     ResolvedFrame out;
     out.motion = resolve_at(c, frame_spec(spec, frame), frame_time(spec, frame), where(spec, frame), out.warnings);
     return out;

@@ -21,6 +21,7 @@
 //    edges), a marker the motion names that has no elements, no moving
 //    marker at all (an empty or all-fixed motion: nothing moves).
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,12 +31,25 @@
 
 namespace dgwarp {
 
+/// What every frame of one (mesh, motion) pair shares: built once by
+/// resolve_boundary, so that resolve_frame does not look at the other frames
+/// and a series of F frames costs O(F), not O(F²). Plain data for
+/// resolve_frame; callers need not read it.
+struct SeriesContext {
+    std::vector<std::vector<NodeId>> marker_nodes;  // per mesh marker: its nodes, sorted
+    std::vector<std::vector<std::int32_t>> slots;   // per marker node: its index in the BoundarySet
+    std::vector<char> marker_moving;                // per mesh marker: 1 when some frame moves it
+    double diagonal = 0;                            // of the mesh's bounding box
+    double tolerance = 0;                           // for new positions of shared nodes to agree
+};
+
 /// The boundary of a motion problem and how its markers were classified.
 struct ResolvedBoundary {
     BoundarySet boundary;                     // every node of every marker, sorted; moving flags
     std::vector<std::string> moving_markers;  // in mesh order
     std::vector<std::string> static_markers;  // in mesh order
     std::vector<std::string> warnings;        // e.g. nodes shared by moving and static markers
+    SeriesContext context;                    // what resolve_frame reuses for every frame
 };
 
 /// Classifies markers and boundary nodes, and checks everything about `spec`
@@ -53,10 +67,13 @@ struct ResolvedFrame {
 };
 
 /// The motion of every boundary node in frame `frame` (< frame_count(spec)).
-/// `boundary` must be resolve_boundary(mesh, spec).boundary. Throws MeshError
-/// as resolve_boundary does, and when moving markers disagree on shared
-/// nodes in this frame (naming the pairs of markers and the node counts).
-ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const BoundarySet& boundary,
+/// `resolved` must be resolve_boundary(mesh, spec) for this mesh and spec.
+/// Reads frame `frame` of `spec` only: its cost does not depend on the number
+/// of frames (resolve it once, then call this for each frame of a series).
+/// Throws MeshError as resolve_boundary does for this frame, and when moving
+/// markers disagree on shared nodes in this frame (naming the pairs of
+/// markers and the node counts).
+ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const ResolvedBoundary& resolved,
                             std::size_t frame);
 
 /// The new positions of the boundary nodes under `motion` (apply_motion per

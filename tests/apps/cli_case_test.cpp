@@ -1,0 +1,80 @@
+// `dgwarp case NAME --motions DIR`: the case's motions as motion files, which
+// `dgwarp deform` turns into what `dgwarp bench` computes, bit for bit.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "dgwarp/cases/paper_cases.hpp"
+#include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/methods/method.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
+#include "support/test_paths.hpp"
+
+using namespace dgwarp;
+using namespace dgwarp::test;
+
+namespace {
+
+/// What `dgwarp bench` computes for the case's motion with DG-IDW (default
+/// options): the deformed points, from the library's mesh and motion.
+std::vector<double> case_cli_bench_points(const std::string& name, const std::string& motion) {
+    const Mesh mesh = make_case(name);
+    for (const CaseMotion& cm : case_motions(name, mesh)) {
+        if (cm.name != motion) continue;
+        const ResolvedBoundary b = resolve_boundary(mesh, cm.spec);
+        const Plan plan = prepare(Method::dg_idw, mesh.dim, mesh.points, b.boundary, MethodOptions{});
+        std::vector<double> out(mesh.points.size());
+        deform(plan, mesh.points, resolve_frame(mesh, cm.spec, b, 0).motion, out, MethodOptions{});
+        return out;
+    }
+    ADD_FAILURE() << name << " has no motion " << motion;
+    return {};
+}
+
+}  // namespace
+
+TEST(CaseMotionsCli, DeformWithTheWrittenMotionsGivesTheBenchsPointsBitForBit) {
+    const auto dir = scratch_dir();
+    // 2D rigid, 2D per node (the twists), a negative angle (the flap), 3D rigid (store: Gmsh).
+    const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
+        {"naca0012", {"rotate-45", "translate"}}, {"twisted-bar", {"twist", "twist-rotate-45"}}, {"two-element", {"flap-30"}},
+        {"store", {"drop-pitch-10"}}};
+    for (const auto& [name, motions] : runs) {
+        const auto mesh = dir / (name + ".su2"), folder = dir / (name + "-motions");
+        const CommandResult c = run_cli("case " + name + " -o " + quoted(mesh) + " --motions " + quoted(folder));
+        ASSERT_EQ(c.exit_code, 0) << c.err;
+        // One motion file per motion, each reported.
+        for (const CaseMotion& cm : case_motions(name, read_mesh(mesh))) {
+            EXPECT_TRUE(std::filesystem::exists(folder / (cm.name + ".json"))) << name << " " << cm.name;
+            EXPECT_NE(c.out.find("wrote " + (folder / (cm.name + ".json")).string()), std::string::npos) << c.out;
+        }
+        for (const std::string& motion : motions) {
+            const auto out = dir / (name + "-" + motion + ".su2");
+            const CommandResult d =
+                run_cli("deform " + quoted(mesh) + " -m " + quoted(folder / (motion + ".json")) + " -o " + quoted(out) +
+                        " --allow-invalid");  // bench measures invalid results too
+            ASSERT_EQ(d.exit_code, 0) << name << " " << motion << ": " << d.err;
+            const std::vector<double> cli = read_mesh(out).points, bench = case_cli_bench_points(name, motion);
+            ASSERT_EQ(cli.size(), bench.size()) << name << " " << motion;
+            EXPECT_EQ(std::memcmp(cli.data(), bench.data(), cli.size() * sizeof(double)), 0) << name << " " << motion;
+        }
+    }
+    // The twist is a motion per node: its node file is beside the motion file.
+    EXPECT_TRUE(std::filesystem::exists(dir / "twisted-bar-motions" / "twist_bar.csv"));
+}
+
+TEST(CaseMotionsCli, NeedsAnOutputAndReportsAFolderItCannotMake) {
+    const auto dir = scratch_dir();
+    const CommandResult none = run_cli("case naca0012");
+    EXPECT_EQ(none.exit_code, 1) << none.err;
+    EXPECT_NE(none.err.find("--motions"), std::string::npos) << none.err;
+    const auto file = write_text(dir / "a-file", "x");
+    const CommandResult bad = run_cli("case naca0012 --motions " + quoted(file / "sub"));
+    EXPECT_EQ(bad.exit_code, 2) << bad.err;
+    EXPECT_NE(bad.err.find("a-file"), std::string::npos) << bad.err;
+    // Only the motions: no mesh is written.
+    const CommandResult only = run_cli("case rect-box --motions " + quoted(dir / "m"));
+    ASSERT_EQ(only.exit_code, 0) << only.err;
+    EXPECT_EQ(only.out.find(".su2"), std::string::npos) << only.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "m" / "rotate-30.json"));
+}

@@ -1,0 +1,115 @@
+// `dgwarp check MESH -m MOTION`: what deform checks, for every frame, without deforming.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/rect_box_files.hpp"
+#include "support/test_paths.hpp"
+
+using namespace dgwarp::test;
+
+namespace {
+
+bool check_cli_has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+/// A unit square of two triangles whose markers "left" (nodes 3, 0) and
+/// "bottom" (nodes 0, 1) share node 0.
+std::filesystem::path check_cli_square(const std::filesystem::path& dir) {
+    return write_text(dir / "square.su2", R"(NDIME= 2
+NELEM= 2
+5 0 1 2 0
+5 0 2 3 1
+NPOIN= 4
+0 0 0
+1 0 1
+1 1 2
+0 1 3
+NMARK= 2
+MARKER_TAG= left
+MARKER_ELEMS= 1
+3 3 0
+MARKER_TAG= bottom
+MARKER_ELEMS= 1
+3 0 1
+)");
+}
+
+std::size_t check_cli_file_count(const std::filesystem::path& dir) {
+    return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir), {}));
+}
+
+}  // namespace
+
+TEST(CheckCli, AGoodMotionPrintsDeformsSummaryAndWritesNothing) {
+    const RectBoxFiles c = rect_box_files();
+    const std::size_t files = check_cli_file_count(c.dir);
+    const CommandResult r = run_cli("check " + quoted(c.mesh) + " -m " + quoted(c.motion));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // The summary lines deform prints, then the verdict.
+    const CommandResult d = run_cli("deform " + quoted(c.mesh) + " -m " + quoted(c.motion) + " -o " +
+                                    quoted(c.dir / "out.su2"));
+    ASSERT_EQ(d.exit_code, 0) << d.err;
+    for (const std::string line : {"mesh      ", "motion    ", "boundary  "}) {
+        const std::size_t at = d.out.find(line);
+        ASSERT_NE(at, std::string::npos) << d.out;
+        EXPECT_TRUE(check_cli_has(r.out, d.out.substr(at, d.out.find('\n', at) - at))) << r.out;
+    }
+    EXPECT_TRUE(check_cli_has(r.out, "check     ok: 1 frame resolved, 0 warnings")) << r.out;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    EXPECT_EQ(check_cli_file_count(c.dir), files + 1);  // deform's out.su2 only
+}
+
+TEST(CheckCli, ErrorsAreExitCode2WithTheMessage) {
+    const RectBoxFiles c = rect_box_files();
+    const auto unknown = write_text(c.dir / "unknown.json", R"({"markers": {"wing": {"translate": [1, 0]}}})");
+    const CommandResult u = run_cli("check " + quoted(c.mesh) + " -m " + quoted(unknown));
+    EXPECT_EQ(u.exit_code, 2) << u.err;
+    EXPECT_TRUE(check_cli_has(u.err, "names marker 'wing', which the mesh does not have; the mesh has: rectangle, farfield"))
+        << u.err;
+    const auto no_file = write_text(c.dir / "nofile.json", R"({"markers": {"rectangle": {"displacement_file": "d.csv"}}})");
+    const CommandResult f = run_cli("check " + quoted(c.mesh) + " -m " + quoted(no_file));
+    EXPECT_EQ(f.exit_code, 2) << f.err;
+    EXPECT_TRUE(check_cli_has(f.err, "d.csv")) << f.err;
+    const auto out_of_plane = write_text(c.dir / "z.json", R"({"markers": {"rectangle": {"translate": [0, 0, 1]}}})");
+    EXPECT_EQ(run_cli("check " + quoted(c.mesh) + " -m " + quoted(out_of_plane)).exit_code, 2);
+    EXPECT_EQ(run_cli("check " + quoted(c.mesh)).exit_code, 1);  // no motion: usage
+}
+
+TEST(CheckCli, FindsAConflictThatOnlyALaterFrameShows) {
+    const auto dir = scratch_dir();
+    const auto mesh = check_cli_square(dir);
+    // Two plunges at different frequencies on markers sharing node 0: equal
+    // (zero) at step 0, which is all resolve_boundary checks of a periodic
+    // motion, different from step 1 on.
+    const auto motion = write_text(dir / "plunges.json", R"({"markers": {
+        "left": {"periodic": {"plunge": {"amplitude": [0, 0.1], "frequency": 1}}},
+        "bottom": {"periodic": {"plunge": {"amplitude": [0, 0.1], "frequency": 2}}}},
+      "time": {"time_step": 0.1, "steps": 5}})");
+    const CommandResult r = run_cli("check " + quoted(mesh) + " -m " + quoted(motion));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_TRUE(check_cli_has(r.err, "frame 1: moving markers disagree on the nodes they share")) << r.err;
+    EXPECT_TRUE(check_cli_has(r.err, "markers 'left' and 'bottom' on 1 node (e.g. node 0")) << r.err;
+    // The same frequencies agree in every frame.
+    const auto agree = write_text(dir / "agree.json", R"({"markers": {
+        "left": {"periodic": {"plunge": {"amplitude": [0, 0.1], "frequency": 2}}},
+        "bottom": {"periodic": {"plunge": {"amplitude": [0, 0.1], "frequency": 2}}}},
+      "time": {"time_step": 0.1, "steps": 5}})");
+    const CommandResult ok = run_cli("check " + quoted(mesh) + " -m " + quoted(agree));
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_TRUE(check_cli_has(ok.out, "check     ok: 5 frames resolved, 0 warnings")) << ok.out;
+}
+
+TEST(CheckCli, WarningsGoToStandardErrorAndKeepExitCode0) {
+    const RectBoxFiles c = rect_box_files();
+    const auto huge = write_text(c.dir / "huge.json", R"({"markers": {"rectangle": {"translate": [60, 0]}}})");
+    const CommandResult r = run_cli("check " + quoted(c.mesh) + " -m " + quoted(huge));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // Once, though resolve_boundary and the frame both find it.
+    const std::string said = "more than the diagonal of the mesh's bounding box";
+    EXPECT_TRUE(check_cli_has(r.err, said)) << r.err;
+    EXPECT_EQ(r.err.find(said), r.err.rfind(said)) << r.err;
+    EXPECT_TRUE(check_cli_has(r.out, "check     ok: 1 frame resolved, 1 warning")) << r.out;
+    const CommandResult q = run_cli("check " + quoted(c.mesh) + " -m " + quoted(huge) + " -q");
+    EXPECT_EQ(q.exit_code, 0);
+    EXPECT_TRUE(q.out.empty()) << q.out;
+}
