@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config python3 python3-jsonschema
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libnanoflann-dev libcli11-dev nlohmann-json3-dev
-  libgmsh-dev libcairo2-dev
+  libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
   libgtest-dev libbenchmark-dev
 )
 if [ "${1:-}" = fuzz ]; then

@@ -45,7 +45,7 @@ void run_convert(const ConvertArgs& a) {
 void add_convert_command(CLI::App& app) {
     auto args = std::make_shared<ConvertArgs>();
     CLI::App* cmd = app.add_subcommand("convert", "Convert a mesh between formats (chosen by file extension)");
-    cmd->add_option("input", args->input, "Input mesh (.su2, .msh)")->required();
+    cmd->add_option("input", args->input, "Input mesh (.su2, .msh, .vtu)")->required();
     cmd->add_option("output", args->output, "Output mesh (.su2, .msh, .vtu)")->required();
     cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 input (1-based)")->check(positive_whole_number());
     cmd->add_option("--gmsh-version", args->gmsh_version, "MSH version to write: 41 (4.1) or 22 (2.2)")

@@ -58,3 +58,27 @@ TEST(CliConvert, OtherZonesAndFfdBoxesPassThroughSu2AndAreNamedWhenDropped) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("NPERIODIC= 1, FFD_NBOX= 1"), std::string::npos) << r.err;
 }
+
+// #17 item 10: info, quality, picture and convert read the VTU deform writes.
+TEST(CliConvert, TheVtuDeformWritesIsReadByInfoQualityPictureAndConvert) {
+    const auto dir = dgwarp::test::scratch_dir();
+    ASSERT_EQ(run_cli("case rect-box -q -o " + quoted(dir / "rb.su2") + " --motions " + quoted(dir / "m")).exit_code, 0);
+    ASSERT_EQ(run_cli("deform " + quoted(dir / "rb.su2") + " -m " + quoted(dir / "m" / "rotate-30.json") + " -q -o " +
+                      quoted(dir / "out.vtu"))
+                  .exit_code,
+              0);
+    CommandResult r = run_cli("info " + quoted(dir / "out.vtu") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("\"rectangle\""), std::string::npos) << r.out;  // the markers came back
+    r = run_cli("quality " + quoted(dir / "out.vtu") + " --reference " + quoted(dir / "rb.su2"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    r = run_cli("picture " + quoted(dir / "out.vtu") + " -o " + quoted(dir / "out.png") + " -q");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+    r = run_cli("convert " + quoted(dir / "out.vtu") + " " + quoted(dir / "back.su2") + " -q");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    r = run_cli("deform " + quoted(dir / "rb.su2") + " -m " + quoted(dir / "m" / "rotate-30.json") + " -q -o " +
+                quoted(dir / "direct.su2"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(slurp(dir / "back.su2"), slurp(dir / "direct.su2"));  // through VTU, bit for bit
+}

@@ -26,13 +26,14 @@ std::string lower_case_extension(const std::filesystem::path& path) {
     return ext;
 }
 
-std::vector<std::string> readable_extensions() { return {".su2", ".msh"}; }
+std::vector<std::string> readable_extensions() { return {".su2", ".msh", ".vtu"}; }
 std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
 
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress) {
     const std::string ext = lower_case_extension(path);
     if (ext == ".su2") return read_su2(path, options.zone, progress);
     if (ext == ".msh") return read_gmsh(path, progress);
+    if (ext == ".vtu") return read_vtu(path, progress);
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
                       joined(readable_extensions()));
 }

@@ -2,7 +2,8 @@
 // Reading and writing meshes, with the format chosen by the file extension:
 //   .su2  SU2 native ASCII (read, write)
 //   .msh  Gmsh ASCII 4.1 or 2.2 (read both; write 4.1 by default)
-//   .vtu  VTK XML unstructured grid, binary (write only; with point and cell data)
+//   .vtu  VTK XML unstructured grid (read: ascii, binary, appended, zlib; write:
+//         binary, with markers and point and cell data; see vtu.hpp)
 #include <filesystem>
 #include <optional>
 #include <string>

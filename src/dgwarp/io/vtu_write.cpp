@@ -56,13 +56,24 @@ private:
     std::string text_;
 };
 
-/// Writes one inline binary DataArray of `count` values of type T, the i-th
+/// The opening tag of an array: `tag` (DataArray, or Array for strings), its
+/// type, name and further attributes.
+struct ArrayTag {
+    std::string_view tag = "DataArray";
+    std::string_view vtk_type;
+    std::string_view escaped_name;
+    int components = 1;
+    std::int64_t tuples = -1;  // NumberOfTuples, written when >= 0 (FieldData arrays)
+};
+
+/// Writes one inline binary array of `count` values of type T, the i-th
 /// being value_of(i): base64 of [UInt64 byte count][values].
 template <class T, class ValueOf>
-void write_data_array(std::ostream& out, std::string_view vtk_type, std::string_view escaped_name,
-                      int components, std::size_t count, ValueOf value_of) {
-    out << "        <DataArray type=\"" << vtk_type << "\" Name=\"" << escaped_name
-        << "\" NumberOfComponents=\"" << components << "\" format=\"binary\">\n          ";
+void write_data_array(std::ostream& out, const ArrayTag& a, std::size_t count, ValueOf value_of) {
+    out << "        <" << a.tag << " type=\"" << a.vtk_type << "\" Name=\"" << a.escaped_name << "\"";
+    if (a.tag == "DataArray") out << " NumberOfComponents=\"" << a.components << "\"";
+    if (a.tuples >= 0) out << " NumberOfTuples=\"" << a.tuples << "\"";
+    out << " format=\"binary\">\n          ";
     Base64Sink sink(out);
     const std::uint64_t num_bytes = count * sizeof(T);
     sink.append(&num_bytes, sizeof num_bytes);
@@ -74,7 +85,7 @@ void write_data_array(std::ostream& out, std::string_view vtk_type, std::string_
         sink.append(values, n * sizeof(T));
     }
     sink.finish();
-    out << "\n        </DataArray>\n";
+    out << "\n        </" << a.tag << ">\n";
 }
 
 /// `name` escaped for an XML attribute value. Tab, newline and carriage
@@ -120,10 +131,58 @@ void write_fields(std::ostream& out, const char* section, const std::vector<Fiel
     out << "      <" << section << ">\n";
     for (std::size_t f = 0; f < fields.size(); ++f) {
         const auto& values = fields[f].values;
-        write_data_array<double>(out, "Float64", escaped_names[f], fields[f].components, values.size(),
-                                 [&](std::size_t i) { return values[i]; });
+        write_data_array<double>(out, {.vtk_type = "Float64", .escaped_name = escaped_names[f],
+                                       .components = fields[f].components},
+                                 values.size(), [&](std::size_t i) { return values[i]; });
     }
     out << "      </" << section << ">\n";
+}
+
+/// Throws MeshError when a marker name cannot be stored: names are 0-terminated.
+void check_marker_names(const Mesh& mesh) {
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
+        if (mesh.markers[m].name.find('\0') != std::string::npos)
+            throw MeshError("marker " + std::to_string(m) + ": its name holds a 0 byte, which a VTU file cannot store",
+                            mesh.markers[m].name, static_cast<std::int64_t>(m));
+}
+
+/// The markers as the FieldData of the grid (see vtu.hpp): names, element
+/// counts, element types and node ids.
+void write_markers(std::ostream& out, const Mesh& mesh) {
+    if (mesh.markers.empty()) return;
+    std::string names;
+    std::size_t num_elements = 0, num_nodes = 0;
+    for (const Marker& m : mesh.markers) {
+        names += m.name;
+        names += '\0';
+        num_elements += m.elements.size();
+        num_nodes += m.elements.nodes.size();
+    }
+    // Every marker's elements, marker after marker.
+    std::vector<std::uint8_t> types;
+    std::vector<NodeId> nodes;
+    types.reserve(num_elements);
+    nodes.reserve(num_nodes);
+    for (const Marker& m : mesh.markers) {
+        for (CellType t : m.elements.types) types.push_back(static_cast<std::uint8_t>(vtk_cell_id(t)));
+        nodes.insert(nodes.end(), m.elements.nodes.begin(), m.elements.nodes.end());
+    }
+    const auto num_markers = static_cast<std::int64_t>(mesh.markers.size());
+    out << "    <FieldData>\n";
+    // The names as bytes (UInt8, each name ended by a 0 byte), not a String
+    // array: meshio cannot read String arrays, and would refuse the whole file.
+    write_data_array<char>(out, {.vtk_type = "UInt8", .escaped_name = "dgwarp_marker_names",
+                                 .tuples = static_cast<std::int64_t>(names.size())},
+                           names.size(), [&](std::size_t i) { return names[i]; });
+    write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "dgwarp_marker_sizes", .tuples = num_markers},
+                                   mesh.markers.size(), [&](std::size_t i) { return mesh.markers[i].elements.size(); });
+    write_data_array<std::uint8_t>(out, {.vtk_type = "UInt8", .escaped_name = "dgwarp_marker_types",
+                                         .tuples = static_cast<std::int64_t>(types.size())},
+                                   types.size(), [&](std::size_t i) { return types[i]; });
+    write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "dgwarp_marker_connectivity",
+                                         .tuples = static_cast<std::int64_t>(nodes.size())},
+                                   nodes.size(), [&](std::size_t i) { return nodes[i]; });
+    out << "    </FieldData>\n";
 }
 
 }  // namespace
@@ -134,6 +193,7 @@ void write_vtu(std::ostream& out, const Mesh& mesh, const MeshFields& fields) {
     const std::size_t num_points = mesh.num_points();
     const std::size_t num_cells = mesh.cells.size();
     std::vector<std::string> point_names, cell_names;
+    check_marker_names(mesh);
     for (const Field& f : fields.point_data) {
         check_field(f, num_points, "points");
         point_names.push_back(escaped_attribute(f.name));
@@ -146,18 +206,19 @@ void write_vtu(std::ostream& out, const Mesh& mesh, const MeshFields& fields) {
     out << "<?xml version=\"1.0\"?>\n"
            "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
            "header_type=\"UInt64\">\n"
-           "  <UnstructuredGrid>\n"
-        << "    <Piece NumberOfPoints=\"" << num_points << "\" NumberOfCells=\"" << num_cells << "\">\n";
+           "  <UnstructuredGrid>\n";
+    write_markers(out, mesh);
+    out << "    <Piece NumberOfPoints=\"" << num_points << "\" NumberOfCells=\"" << num_cells << "\">\n";
     write_fields(out, "PointData", fields.point_data, point_names);
     write_fields(out, "CellData", fields.cell_data, cell_names);
 
     out << "      <Points>\n";
     const double* p = mesh.points.data();
+    const ArrayTag points_tag{.vtk_type = "Float64", .escaped_name = "Points", .components = 3};
     if (mesh.dim == 3)
-        write_data_array<double>(out, "Float64", "Points", 3, 3 * num_points,
-                                 [p](std::size_t k) { return p[k]; });
+        write_data_array<double>(out, points_tag, 3 * num_points, [p](std::size_t k) { return p[k]; });
     else
-        write_data_array<double>(out, "Float64", "Points", 3, 3 * num_points, [p](std::size_t k) {
+        write_data_array<double>(out, points_tag, 3 * num_points, [p](std::size_t k) {
             const std::size_t c = k % 3;
             return c == 2 ? 0.0 : p[k / 3 * 2 + c];
         });
@@ -165,13 +226,13 @@ void write_vtu(std::ostream& out, const Mesh& mesh, const MeshFields& fields) {
 
     out << "      <Cells>\n";
     const ElementList& cells = mesh.cells;
-    write_data_array<std::int64_t>(out, "Int64", "connectivity", 1, cells.nodes.size(),
+    write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "connectivity"}, cells.nodes.size(),
                                    [&](std::size_t i) { return cells.nodes[i]; });
-    write_data_array<std::int64_t>(out, "Int64", "offsets", 1, num_cells,
+    write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "offsets"}, num_cells,
                                    [&](std::size_t i) { return cells.offsets[i + 1]; });
     std::uint8_t vtk_id[std::size(all_cell_types)];
     for (CellType t : all_cell_types) vtk_id[static_cast<int>(t)] = static_cast<std::uint8_t>(vtk_cell_id(t));
-    write_data_array<std::uint8_t>(out, "UInt8", "types", 1, num_cells,
+    write_data_array<std::uint8_t>(out, {.vtk_type = "UInt8", .escaped_name = "types"}, num_cells,
                                    [&](std::size_t i) { return vtk_id[static_cast<int>(cells.types[i])]; });
     out << "      </Cells>\n"
            "    </Piece>\n"
