@@ -59,8 +59,8 @@ void add_prepare_command(CLI::App& app) {
         "motion's values: reuse it for every step with 'dgwarp deform --plan' (the plan's method is used).\n"
         "Plans can be saved for --method dg-idw (a and L stay deform options) and dg-harmonic.\n\n"
         "Examples:\n"
-        "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
-        "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");
+        "  dgwarp prepare naca0012.su2 --motion examples/motions/airfoil_rotate.json -o naca0012.plan\n"
+        "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json --plan naca0012.plan -o turned.vtu");
     cmd->callback([args] { run_prepare(*args); });
 }
 
