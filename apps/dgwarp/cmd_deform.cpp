@@ -320,6 +320,20 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
     }
 }
 
+/// The files each method wrote (--method all), one line per method: "wrote F",
+/// or for a time series "wrote FIRST ... LAST (N files)".
+void print_written(const std::vector<MethodRun>& runs) {
+    for (const MethodRun& r : runs) {
+        std::vector<std::string> files;
+        for (const FrameResult& f : r.frames)
+            if (!f.output.empty()) files.push_back(f.output);
+        if (files.empty()) continue;
+        std::cout << "wrote " << files.front();
+        if (files.size() > 1) std::cout << " ... " << files.back() << " (" << files.size() << " files)";
+        std::cout << "\n";
+    }
+}
+
 void run_deform(const DeformArgs& a) {
     const std::vector<Method> methods = chosen_methods(a.setup, true);
     const bool several = methods.size() > 1;
@@ -344,7 +358,10 @@ void run_deform(const DeformArgs& a) {
 
     std::vector<MethodRun> runs;
     for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress, warnings));
-    if (text && several) print_table(in, runs);
+    if (text && several) {
+        print_table(in, runs);
+        print_written(runs);
+    }
 
     if (a.json) {
         nlohmann::json j = inputs_json(in, "deform");
@@ -449,12 +466,15 @@ void add_deform_command(CLI::App& app) {
         "--method all runs every method and prints a comparison table (as the paper's tables).\n"
         "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n"
         "No output (nor a frame's or a method's) may be an input; outputs are checked before the work.\n\n"
-        "Examples:\n"
-        "  dgwarp deform naca0012.su2 --motion rotate45.json -o deformed.vtu\n"
-        "  dgwarp deform naca0012.su2 --motion rotate45.json -o cmp.vtu --method all\n"
-        "  dgwarp deform naca0012.su2 --motion pitching.json -o frames/pitch.su2    (one file per frame)\n"
-        "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
-        "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.su2 --json");
+        "Examples (in the repository's folder: examples/motions/ has a motion file of every kind):\n"
+        "  dgwarp case naca0012 -o naca0012.su2\n"
+        "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json -o turned.vtu\n"
+        "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json -o cmp.su2 --method all\n"
+        "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_pitch_plunge.json -o pitch.su2"
+        "   (one file per frame)\n"
+        "  dgwarp prepare naca0012.su2 --motion examples/motions/airfoil_rotate.json -o naca0012.plan\n"
+        "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json --plan naca0012.plan -o turned.su2 "
+        "--json");
     cmd->callback([args] { run_deform(*args); });
 }
 

@@ -70,8 +70,8 @@ void add_prepare_command(CLI::App& app) {
         "them, and refuses a different value given there.\n"
         "The plan file's name must end in .plan, and it may not be one of the inputs.\n\n"
         "Examples:\n"
-        "  dgwarp prepare wing.su2 --motion fold.json -o wing.plan\n"
-        "  dgwarp deform wing.su2 --motion fold.json --plan wing.plan -o folded.vtu");
+        "  dgwarp prepare naca0012.su2 --motion examples/motions/airfoil_rotate.json -o naca0012.plan\n"
+        "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json --plan naca0012.plan -o turned.vtu");
     cmd->callback([args] { run_prepare(*args); });
 }
 

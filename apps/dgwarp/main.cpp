@@ -14,16 +14,19 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "dgwarp 0.1.0");
     app.footer(
-        "Examples:\n"
+        "Examples (in the repository's folder: examples/motions/ has a motion file of every kind):\n"
         "  dgwarp demo                              run the built-in example\n"
-        "  dgwarp deform mesh.su2 -m motion.json -o out.vtu   deform a mesh\n"
-        "  dgwarp prepare mesh.su2 -m motion.json -o mesh.plan build the plan once for many steps\n"
-        "  dgwarp check mesh.su2 -m motion.json     check a motion against a mesh, every frame\n"
-        "  dgwarp info mesh.su2                     counts, markers, bounding box, quality\n"
-        "  dgwarp quality mesh.su2                  quality summary of a mesh\n"
-        "  dgwarp convert mesh.su2 mesh.vtu         convert between formats\n"
-        "  dgwarp picture mesh.su2 -o mesh.png      a 2D mesh coloured by quality\n"
         "  dgwarp case naca0012 -o naca0012.su2     write one of the paper's test meshes\n"
+        "  dgwarp info naca0012.su2                 counts, markers, bounding box, quality\n"
+        "  dgwarp check naca0012.su2 -m examples/motions/airfoil_rotate.json\n"
+        "                                           check a motion against a mesh, every frame\n"
+        "  dgwarp deform naca0012.su2 -m examples/motions/airfoil_rotate.json -o turned.su2\n"
+        "                                           deform a mesh\n"
+        "  dgwarp prepare naca0012.su2 -m examples/motions/airfoil_rotate.json -o naca0012.plan\n"
+        "                                           build the plan once for many steps\n"
+        "  dgwarp quality turned.su2 --reference naca0012.su2   quality summary of a mesh\n"
+        "  dgwarp convert naca0012.su2 naca0012.vtu convert between formats\n"
+        "  dgwarp picture turned.su2 -o turned.png  a 2D mesh coloured by quality\n"
         "  dgwarp bench --quick                     the paper's tables, ours beside them\n"
         "Run 'dgwarp COMMAND --help' for a command's options and examples.\n"
         "Exit codes: 0 success, 1 usage error, 2 bad input, 3 invalid result, 4 internal error.");
