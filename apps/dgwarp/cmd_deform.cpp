@@ -292,9 +292,9 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
 }
 
 void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
-    std::cout << "\nmethod      prepare     deform     min quality  mean quality  inverted  ratio min   status\n";
+    std::cout << "\nmethod       prepare     deform     min quality  mean quality  inverted  ratio min   status\n";
     char line[256];
-    std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11.4f  %12.4f  %8lld  %9s   %s\n", "original", "", "",
+    std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11.4f  %12.4f  %8lld  %9s   %s\n", "original", "", "",
                   in.original_quality.min, in.original_quality.mean,
                   static_cast<long long>(in.original_quality.inverted), "", "");
     std::cout << line;
@@ -302,7 +302,7 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
         const std::string name(method_name(r.planned.method));
         // The status last and whole: an error message is never cut.
         if (r.frames.empty()) {
-            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11s  %12s  %8s  %9s   ", name.c_str(),
+            std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11s  %12s  %8s  %9s   ", name.c_str(),
                           r.error.empty() ? "" : "-", "-", "-", "-", "-", "-");
             std::cout << line << (r.failed ? "failed: " : "") << r.error << "\n";
         } else {
@@ -312,7 +312,7 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
             std::string status = r.error.empty() ? "ok" : r.error;
             if (f.step.substeps > 1) status += " (" + std::to_string(f.step.substeps) + " DGM sub-steps)";
             if (r.failed) status = "failed: " + status;
-            std::snprintf(line, sizeof line, "%-10s  %9s  %9s  %11.4f  %12.4f  %8lld  %9.4f   ", name.c_str(),
+            std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11.4f  %12.4f  %8lld  %9.4f   ", name.c_str(),
                           milliseconds(r.planned.prepare_seconds).c_str(), milliseconds(deform_seconds).c_str(),
                           f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted), f.ratio.min);
             std::cout << line << status << "\n";
