@@ -1,9 +1,11 @@
 // DG-IDW on the paper's squeezed-sphere meshes: prepare time by stage, step
 // time (1 and 2 threads) against a plain streaming pass over the same arrays,
-// plan memory, plan file round trip, and the effect of the length scale.
+// DG-harmonic's prepare and step against DG-IDW's, plan memory, plan file
+// round trip, and the effect of the length scale.
 //
-// Usage: dgwarp_bench_dg_idw [--generate-only] [case ...]
-//   cases: 200k 400k 826k (default: all); --generate-only: make the cached meshes and stop.
+// Usage: dgwarp_bench_dg_idw [--generate-only | --dg-harmonic] [case ...]
+//   cases: 200k 400k 826k (default: all); --generate-only: make the cached meshes and stop;
+//   --dg-harmonic: only DG-harmonic against DG-IDW (issue #12's speed targets).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -20,6 +22,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "sphere_box_mesh.hpp"
 
@@ -69,6 +72,31 @@ void streaming_pass(const DgIdwPlan& plan, std::span<const double> x0, std::span
     });
 }
 
+// DG-harmonic (the robust method, issue #12) against DG-IDW in the same run:
+// prepare by stage and step, one thread; the ratios are issue #12's targets
+// (prepare at most 2x, step at most 3x DG-IDW's).
+void compare_dg_harmonic(const bench::SphereBoxMesh& m, const BoundarySet& boundary, const BoundaryMotion& motion,
+                         int steps) {
+    set_num_threads(1);
+    DgIdwPlan idw;
+    DgHarmonicPlan harm;
+    const double idw_prepare = median_seconds(3, [&] { idw = prepare_dg_idw(3, m.points, boundary); });
+    const double harm_prepare = median_seconds(3, [&] { harm = prepare_dg_harmonic(3, m.points, boundary); });
+    const DgHarmonicPrepareStats& s = harm.stats;
+    std::printf("dg-harmonic prepare 1 thread: %.3f s (coarse points %.3f, graph %.3f, locate %.3f, factorise %.3f); "
+                "%lld coarse interior points, factor %lld non-zeros; dg-idw prepare %.3f s; ratio %.2f\n",
+                harm_prepare, s.select_seconds, s.graph_seconds, s.locate_seconds, s.factor_seconds,
+                static_cast<long long>(s.coarse_interior), static_cast<long long>(s.factor_nonzeros), idw_prepare,
+                harm_prepare / idw_prepare);
+    std::vector<double> out(m.points.size());
+    deform_dg_idw(idw, m.points, motion, out);
+    const double idw_step = median_seconds(steps, [&] { deform_dg_idw(idw, m.points, motion, out); });
+    deform_dg_harmonic(harm, m.points, motion, out);
+    const double harm_step = median_seconds(steps, [&] { deform_dg_harmonic(harm, m.points, motion, out); });
+    std::printf("dg-harmonic step 1 thread, median of %d: %.2f ms; dg-idw %.2f ms; ratio %.2f\n", steps,
+                1e3 * harm_step, 1e3 * idw_step, harm_step / idw_step);
+}
+
 // Squeeze the sphere into an ellipsoid (per-node translation) and turn it 10
 // degrees about z; box nodes are static.
 BoundaryMotion squeeze_and_turn(const bench::SphereBoxMesh& m, const BoundarySet& boundary) {
@@ -83,7 +111,7 @@ BoundaryMotion squeeze_and_turn(const bench::SphereBoxMesh& m, const BoundarySet
     return motion;
 }
 
-void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int steps) {
+BoundarySet sphere_and_box(const bench::SphereBoxMesh& m) {
     BoundarySet boundary;
     std::vector<NodeId> ids = m.sphere_nodes;
     ids.insert(ids.end(), m.box_nodes.begin(), m.box_nodes.end());
@@ -93,6 +121,11 @@ void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int 
     for (NodeId n : ids)
         boundary.moving.push_back(std::binary_search(m.sphere_nodes.begin(), m.sphere_nodes.end(), n) &&
                                   !std::binary_search(m.box_nodes.begin(), m.box_nodes.end(), n));
+    return boundary;
+}
+
+void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int steps) {
+    const BoundarySet boundary = sphere_and_box(m);
     const std::size_t n = m.num_points(), nb = boundary.nodes.size(), nv = n - nb;
     std::printf("\n== case %s: %zu nodes, %zu boundary (%zu sphere, %zu box), %zu volume; Gmsh %.1f s ==\n",
                 c.name.c_str(), n, nb, m.sphere_nodes.size(), m.box_nodes.size(), nv, m.generate_seconds);
@@ -150,6 +183,7 @@ void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int 
                     threads, steps, 1e3 * step.median, 1e3 * step.min, 1e3 * step_t.median, 1e3 * step_t.min,
                     1e3 * stream.median, 1e3 * stream.min, step.median / stream.median);
     }
+    compare_dg_harmonic(m, boundary, motion, steps);
     set_num_threads(1);
 
     // Plan file round trip.
@@ -203,6 +237,7 @@ int main(int argc, char** argv) {
         cases.push_back({std::array{"200k", "400k", "826k"}[size], sphere_box_paper_size(size)});
     std::vector<std::string> wanted(argv + 1, argv + argc);
     const bool generate_only = std::erase(wanted, "--generate-only") > 0;
+    const bool harmonic_only = std::erase(wanted, "--dg-harmonic") > 0;
     if (wanted.empty())
         for (const auto& c : cases) wanted.push_back(c.name);
     // Generate (or load) every mesh first: Gmsh runs in forked children,
@@ -215,6 +250,12 @@ int main(int argc, char** argv) {
     std::printf("DG-IDW benchmark: squeezed sphere in a box (paper section 3), %d hardware threads\n",
                 static_cast<int>(std::thread::hardware_concurrency()));
     for (const auto& [c, m] : meshes) {
+        if (harmonic_only) {
+            const BoundarySet boundary = sphere_and_box(m);
+            std::printf("\n== case %s: %zu nodes, %zu boundary ==\n", c.name.c_str(), m.num_points(), boundary.nodes.size());
+            compare_dg_harmonic(m, boundary, squeeze_and_turn(m, boundary), 21);
+            continue;
+        }
         run_case(c, m, 21);
         // The same mesh renumbered for locality: the step's cost depends on
         // how far apart consecutive nodes' graph simplices are.
