@@ -71,7 +71,10 @@ void refuse_other_methods_options(const SetupArgs& args, Method method) {
     for (const std::string& flag : args.given)
         if (option_method(flag) != method)
             throw CLI::ValidationError(flag, "is an option of " + std::string(method_name(option_method(flag))) +
-                                                 "; it does nothing with " + std::string(method_name(method)));
+                                                 "; it does nothing with " + std::string(method_name(method)) +
+                                                 (args.method_given ? std::string()
+                                                                    : " (the default method): add --method " +
+                                                                          std::string(method_name(option_method(flag)))));
 }
 
 std::int64_t moving_count(const BoundarySet& b) {
@@ -339,7 +342,6 @@ nlohmann::json boundary_json(const Inputs& in) {
 }
 
 nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
-    const MethodOptions o = method_options(in.args);
     return {{"schema_version", json_schema_version},
             {"command", command},
             {"file", in.args.mesh},

@@ -23,7 +23,7 @@ namespace dgwarp::cli {
 struct SetupArgs {
     std::string mesh;
     std::string motion;
-    std::string method = "dg-idw";  // a method name, or "all" where a command allows it
+    std::string method = "dg-harmonic";  // a method name, or "all" where a command allows it (default: the robust method)
     bool method_given = false;      // --method was on the command line (else a --plan file decides)
     std::set<std::string> given;    // the method options given on the command line ("--length-scale", ...)
     int zone = 1;

@@ -22,7 +22,8 @@ std::vector<double> case_cli_bench_points(const std::string& name, const std::st
     for (const CaseMotion& cm : case_motions(name, mesh)) {
         if (cm.name != motion) continue;
         const ResolvedBoundary b = resolve_boundary(mesh, cm.spec);
-        const Plan plan = prepare(Method::dg_idw, mesh.dim, mesh.points, b.boundary, MethodOptions{});
+        // The CLI's default method.
+        const Plan plan = prepare(Method::dg_harmonic, mesh.dim, mesh.points, b.boundary, MethodOptions{});
         std::vector<double> out(mesh.points.size());
         deform(plan, mesh.points, resolve_frame(mesh, cm.spec, b, 0).motion, out, MethodOptions{});
         return out;

@@ -27,7 +27,7 @@ TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j.at("command"), "deform");
-    EXPECT_EQ(j.at("method"), "dg-idw");
+    EXPECT_EQ(j.at("method"), "dg-harmonic");  // the default: the robust method
     EXPECT_EQ(j.at("boundary").at("moving_markers"), nlohmann::json::array({"rectangle"}));
     EXPECT_EQ(j.at("boundary").at("static_markers"), nlohmann::json::array({"farfield"}));
     ASSERT_EQ(j.at("frames").size(), 1u);
@@ -38,9 +38,10 @@ TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
     EXPECT_TRUE(j.at("valid").get<bool>());
     EXPECT_GE(j.at("seconds").at("read").get<double>(), 0.0);
     EXPECT_GE(j.at("plan").at("seconds").get<double>(), 0.0);
-    for (const char* phase : {"graph", "locate", "weights"})
+    for (const char* phase : {"coarse points", "graph", "locate", "factorise"})
         EXPECT_GE(j.at("plan").at("phase_seconds").at(phase).get<double>(), 0.0) << phase;
     EXPECT_GT(j.at("plan").at("graph_simplices").get<long>(), 0);
+    EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
     EXPECT_GE(f.at("seconds").at("deform").get<double>(), 0.0);
 
     // The written mesh is the original with moved points: same cells and markers.
@@ -116,7 +117,7 @@ TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
 
 TEST(CliPrepare, APlanKeepsItsWeightsAndRefusesOthers) {
     const auto [dir, mesh, motion] = rect_box_files();
-    const std::string base = quoted(mesh) + " -m " + quoted(motion);
+    const std::string base = quoted(mesh) + " -m " + quoted(motion) + " --method dg-idw";
     ASSERT_EQ(run_cli("prepare " + base + " --dg-idw-weights continuous -o " + quoted(dir / "c.plan") + " -q").exit_code,
               0);
     ASSERT_EQ(run_cli("deform " + base + " --dg-idw-weights continuous -o " + quoted(dir / "a.su2") + " -q").exit_code,
@@ -144,7 +145,7 @@ TEST(CliPrepare, APlanKeepsTheLengthScaleAndTheWeightsAsAndDeformUsesThem) {
     DGWARP_REQUIRE_SHARED_MESHES();
     const auto dir = scratch_dir();
     const std::string base = quoted(su2_meshes_dir() / "deformation_brick_hex_mesh_brick_hex_ffd.su2") + " -m " +
-                             quoted(source_dir() / "examples/motions/brick_bump_top.json");
+                             quoted(source_dir() / "examples/motions/brick_bump_top.json") + " --method dg-idw";
     ASSERT_EQ(run_cli("prepare " + base + " --length-scale auto --a-translation 5 -o " + quoted(dir / "auto.plan") +
                       " -q")
                   .exit_code,
@@ -182,6 +183,11 @@ TEST(CliDeform, AnOptionOfAnotherMethodIsAUsageError) {
     CommandResult r = run_cli("deform " + base + " --method dgm --length-scale auto");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("--length-scale: is an option of dg-idw; it does nothing with dgm"), std::string::npos) << r.err;
+    // Without --method the default (dg-harmonic) runs: the error says how to get DG-IDW.
+    r = run_cli("deform " + base + " --length-scale auto");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("does nothing with dg-harmonic (the default method): add --method dg-idw"), std::string::npos)
+        << r.err;
     r = run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "p.plan") +
                 " --rbf-radius 2");
     EXPECT_EQ(r.exit_code, 1);
@@ -350,7 +356,7 @@ TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
     const auto dir = scratch_dir();
     const auto mesh = su2_meshes_dir() / "deformation_brick_tets_mesh_brick_tets_ffd.su2";
     const auto motion = source_dir() / "examples" / "motions" / "brick_rotate_top.json";
-    const std::string base = "deform " + quoted(mesh) + " -m " + quoted(motion) + " --length-scale auto -o ";
+    const std::string base = "deform " + quoted(mesh) + " -m " + quoted(motion) + " --method dg-idw --length-scale auto -o ";
     CommandResult r = run_cli(base + quoted(dir / "plain.su2") + " -q");
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_FALSE(std::filesystem::exists(dir / "plain.su2"));
@@ -374,7 +380,7 @@ TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_GT(nlohmann::json::parse(r.out).at("frames").at(0).at("quality").at("min").get<double>(), 0.05);
     const auto bump = source_dir() / "examples" / "motions" / "brick_tets_bump_top.json";
-    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(bump) + " --length-scale auto -o " + quoted(dir / "b.su2") +
+    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(bump) + " --method dg-idw --length-scale auto -o " + quoted(dir / "b.su2") +
                 " --untangle --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(nlohmann::json::parse(r.out).at("frames").at(0).at("untangle").is_null());
@@ -392,15 +398,17 @@ TEST(CliDeform, AFlapNextToItsWingFoldsDgIdwWhichNamesTheFixesAndDgHarmonicStays
     const auto motion = write_text(dir / "flap20.json", R"({"markers": {"flap": {"rotate": {"angle_deg": -20,
         "center": [0.95, -0.049]}}}})");
     const std::string inputs = quoted(mesh) + " -m " + quoted(motion);
-    const CommandResult folded = run_cli("deform " + inputs + " -o " + quoted(dir / "idw.su2"));
+    const CommandResult folded = run_cli("deform " + inputs + " --method dg-idw -o " + quoted(dir / "idw.su2"));
     EXPECT_EQ(folded.exit_code, 3) << folded.err;
     EXPECT_NE(folded.err.find("--method dg-harmonic"), std::string::npos) << folded.err;
     EXPECT_NE(folded.err.find("--untangle"), std::string::npos) << folded.err;
     EXPECT_EQ(folded.err.find("split it into frames"), std::string::npos) << folded.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "idw.su2"));
-    const CommandResult robust = run_cli("deform " + inputs + " --method dg-harmonic -o " + quoted(dir / "h.su2") + " --json");
+    // The default method is dg-harmonic.
+    const CommandResult robust = run_cli("deform " + inputs + " -o " + quoted(dir / "h.su2") + " --json");
     ASSERT_EQ(robust.exit_code, 0) << robust.err;
     const auto j = nlohmann::json::parse(robust.out);
+    EXPECT_EQ(j.at("method"), "dg-harmonic");
     EXPECT_EQ(j.at("frames").at(0).at("quality").at("inverted"), 0);
     EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.4);  // measured 0.542
     EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
