@@ -10,6 +10,8 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/repair/last_resort.hpp"
+#include "dgwarp/repair/unrepairable_cells.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "dgwarp/io/atomic_write.hpp"
 #include "flag_values.hpp"
@@ -43,6 +45,10 @@ struct FrameResult {
     StepReport step;
     std::int64_t inverted_by_motion = 0;       // cells valid in the input and inverted now (what makes a frame invalid)
     std::vector<std::int64_t> worst_inverted;  // the worst of those
+    // Of those, the cells whose every node is on the boundary: the boundary
+    // motion alone inverts them, and nothing that moves volume nodes can help.
+    std::int64_t inverted_on_boundary = 0;
+    std::vector<std::int64_t> worst_on_boundary;  // the worst of those
     std::optional<UntangleReport> untangled;  // when --untangle (or dg-harmonic's last resort) found cells to repair
     bool last_resort = false;                 // the repair was dg-harmonic's last resort, not --untangle
     double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
@@ -83,6 +89,7 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"ratio", ratio_json(f.ratio)},
             {"inverted_by_motion", f.inverted_by_motion},
             {"worst_inverted_cells", f.worst_inverted},
+            {"inverted_on_boundary", f.inverted_on_boundary},
             {"substeps", f.step.substeps},
             {"invalid_graph_simplices", f.step.invalid_graph_simplices},
             {"rbf_centres", f.step.rbf_centres},
@@ -114,6 +121,10 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
     if (in.original_quality.inverted > 0)
         std::cout << "  inverted by the motion " << f.inverted_by_motion << " (the other "
                   << f.quality.inverted - f.inverted_by_motion << " were already inverted or degenerate in the input)\n";
+    if (f.inverted_on_boundary > 0)
+        std::cout << "  inverted with every node on the boundary " << f.inverted_on_boundary << " (cells "
+                  << cell_list(f.worst_on_boundary) << (f.inverted_on_boundary > 10 ? ", ..." : "")
+                  << "): the boundary motion itself folds them\n";
     std::cout << "ratio after/before, per cell: min " << f.ratio.min << " (cell " << f.ratio.worst_cell
               << "), mean " << f.ratio.mean << "\n";
     std::cout.unsetf(std::ios::floatfield);
@@ -165,15 +176,23 @@ FrameQuality repair_and_measure(const Inputs& in, Method method, const DeformArg
     }
     FrameQuality q;
     q.quality = cell_qualities(deformed, in.orientation);
-    if (method == Method::dg_harmonic && !a.untangle && !a.no_untangle &&
-        !newly_inverted_cells(q.quality, in.original_cell_quality).empty()) {
+    const auto& fixed = in.boundary.boundary.nodes;
+    const std::vector<std::int64_t> step_folded =
+        method == Method::dg_harmonic && !a.untangle && !a.no_untangle
+            ? newly_inverted_cells(q.quality, in.original_cell_quality)
+            : std::vector<std::int64_t>{};
+    // A cell whose nodes are all on the boundary cannot be repaired by moving
+    // volume nodes: with one of those inverted the frame stays invalid
+    // whatever the untangle step does, so the last resort does not run (on a
+    // torn boundary it would search for a long time; tested).
+    if (!step_folded.empty() && cells_with_only_fixed_nodes(deformed.cells, fixed, step_folded).empty()) {
         // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
         // folded cells (a moving face bounded by fixed walls), repair them
         // locally, and say so in the report.
         f.quality_seconds = sw.lap();  // the first measure; the second counts with the repair
         progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
-        f.untangled =
-            untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes, deformed.points);
+        f.untangled = untangle(deformed.dim, deformed.cells, in.own_orientation, fixed, deformed.points,
+                               last_resort_untangle_options());
         f.last_resort = true;
         q.quality = cell_qualities(deformed, in.orientation);
         f.untangle_seconds = sw.lap();
@@ -185,6 +204,9 @@ FrameQuality repair_and_measure(const Inputs& in, Method method, const DeformArg
     const std::vector<std::int64_t> folded = newly_inverted_cells(q.quality, in.original_cell_quality);
     f.inverted_by_motion = static_cast<std::int64_t>(folded.size());
     f.worst_inverted = worst_cells(folded, q.quality, 10);
+    const std::vector<std::int64_t> on_boundary = cells_with_only_fixed_nodes(deformed.cells, fixed, folded);
+    f.inverted_on_boundary = static_cast<std::int64_t>(on_boundary.size());
+    f.worst_on_boundary = worst_cells(on_boundary, q.quality, 10);
     f.quality_seconds += sw.lap();
     return q;
 }
@@ -284,6 +306,12 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             const FrameResult& bad = run.frames.back();
             run.error = std::to_string(bad.inverted_by_motion) + " inverted cell" + (bad.inverted_by_motion == 1 ? "" : "s") +
                         " in frame " + std::to_string(bad.frame) + " (worst: " + cell_list(bad.worst_inverted) + ")";
+            if (bad.inverted_on_boundary > 0)
+                run.error += "; " + std::to_string(bad.inverted_on_boundary) + " of them ha" +
+                             (bad.inverted_on_boundary == 1 ? "s" : "ve") +
+                             " every node on the boundary (worst: " + cell_list(bad.worst_on_boundary) +
+                             "): the boundary motion itself folds them, which no method can repair; check the "
+                             "motion (nodes a moving marker shares with a static one follow the moving one)";
             if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
         }
     }

@@ -2,6 +2,7 @@
 // mesh (written by `dgwarp demo`) and, when present, the real NACA0012 mesh.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -349,6 +350,70 @@ TEST(CliDeform, DgHarmonicsLastResortKeepsTheBricksTopFaceTurnValidAndSaysSo) {
     const auto rb_frame = nlohmann::json::parse(plain.out).at("frames").at(0);
     EXPECT_FALSE(rb_frame.at("last_resort").get<bool>());
     EXPECT_TRUE(rb_frame.at("untangle").is_null());
+}
+
+namespace {
+
+/// A 3 × 3 grid of unit squares split into triangles (node (i, j) = 4 j + i),
+/// markers left, bottom, right and top: the triangles (2, 3, 7) and (8, 13, 12)
+/// have every node on the boundary.
+std::filesystem::path split_grid_su2(const std::filesystem::path& dir) {
+    std::ostringstream su2;
+    su2 << "NDIME= 2\nNELEM= 18\n";
+    int e = 0;
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            const int a = 4 * j + i;
+            su2 << "5 " << a << " " << a + 1 << " " << a + 5 << " " << e++ << "\n";
+            su2 << "5 " << a << " " << a + 5 << " " << a + 4 << " " << e++ << "\n";
+        }
+    su2 << "NPOIN= 16\n";
+    for (int n = 0; n < 16; ++n) su2 << n % 4 << " " << n / 4 << " " << n << "\n";
+    su2 << "NMARK= 4\n";
+    const std::pair<const char*, std::array<int, 4>> sides[] = {
+        {"left", {0, 4, 8, 12}}, {"bottom", {0, 1, 2, 3}}, {"right", {3, 7, 11, 15}}, {"top", {12, 13, 14, 15}}};
+    for (const auto& [name, nodes] : sides) {
+        su2 << "MARKER_TAG= " << name << "\nMARKER_ELEMS= 3\n";
+        for (int k = 0; k < 3; ++k) su2 << "3 " << nodes[k] << " " << nodes[k + 1] << "\n";
+    }
+    return write_text(dir / "grid.su2", su2.str());
+}
+
+}  // namespace
+
+// A boundary motion that folds a cell with every node on the boundary (here
+// the left side pushed through the fixed top and bottom): no method can make
+// the frame valid, so dg-harmonic's last resort does not run (on SU2's pin
+// array with a pin torn from its walls it searched for 40 s and failed), and
+// the report says why.
+TEST(CliDeform, ACellFoldedByTheBoundaryMotionItselfIsReportedAndNotUntangled) {
+    const auto dir = scratch_dir();
+    const auto mesh = split_grid_su2(dir);
+    const auto motion = write_text(dir / "push.json", R"({"markers": {"left": {"translate": [2.5, 0]}}})");
+    const CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
+                                    quoted(dir / "out.su2") + " --json");
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.su2"));
+    EXPECT_NE(r.err.find("every node on the boundary (worst: 13"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the boundary motion itself folds them"), std::string::npos) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("method"), "dg-harmonic");
+    const auto& frame = j.at("frames").at(0);
+    EXPECT_EQ(frame.at("inverted_on_boundary"), 1);
+    EXPECT_GE(frame.at("inverted_by_motion").get<long>(), 1);
+    EXPECT_FALSE(frame.at("last_resort").get<bool>());
+    EXPECT_TRUE(frame.at("untangle").is_null());
+    // The text report names the cell too.
+    const CommandResult text = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
+                                       quoted(dir / "out.su2") + " --allow-invalid");
+    EXPECT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("inverted with every node on the boundary 1 (cells 13)"), std::string::npos) << text.out;
+    // A motion that folds no such cell reports 0.
+    const auto small = write_text(dir / "small.json", R"({"markers": {"left": {"translate": [0.2, 0]}}})");
+    const CommandResult ok = run_cli("deform " + quoted(mesh) + " -m " + quoted(small) + " -o " +
+                                     quoted(dir / "ok.su2") + " --json");
+    ASSERT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_EQ(nlohmann::json::parse(ok.out).at("frames").at(0).at("inverted_on_boundary"), 0);
 }
 
 TEST(CliDeform, UntangleRepairsTheBrickTopFaceTurn) {
