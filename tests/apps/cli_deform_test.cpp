@@ -402,7 +402,7 @@ TEST(CliDeform, AFlapNextToItsWingFoldsDgIdwWhichNamesTheFixesAndDgHarmonicStays
     ASSERT_EQ(robust.exit_code, 0) << robust.err;
     const auto j = nlohmann::json::parse(robust.out);
     EXPECT_EQ(j.at("frames").at(0).at("quality").at("inverted"), 0);
-    EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.4);  // measured 0.542
+    EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.98 * 0.542);  // measured 0.542
     EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
 }
 
