@@ -298,8 +298,11 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
     const PlanSummary s = plan_summary(p.plan);
     out << "plan      " << method_name(p.method);
-    if (s.graph_simplices > 0)
-        out << ", " << s.graph_simplices << " graph simplices, " << s.outside_hull << " nodes outside the graph's hull";
+    if (s.graph_simplices_used > 0) {
+        if (s.graph_simplices) out << ", " << *s.graph_simplices << " graph simplices";
+        else out << ", " << s.graph_simplices_used << " graph simplices holding volume nodes";
+        out << ", " << s.outside_hull << " nodes outside the graph's hull";
+    }
     out << ", " << plan_memory_bytes(p.plan) / 1024 << " KiB"
         << (p.plan_file.empty() ? "" : ", loaded from " + p.plan_file) << "\n";
     out << "time      read " << milliseconds(in.read_seconds) << ", prepare " << milliseconds(p.prepare_seconds);
@@ -356,7 +359,8 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
     return {{"method", method_name(p.method)},
             {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
             {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->options.weighting)) : nlohmann::json(nullptr)},
-            {"graph_simplices", s.graph_simplices},
+            {"graph_simplices", s.graph_simplices ? nlohmann::json(*s.graph_simplices) : nlohmann::json(nullptr)},
+            {"graph_simplices_used", s.graph_simplices_used},
             {"outside_hull", s.outside_hull},
             {"shared_graph_vertices", s.shared_vertices},
             {"coarse_points", s.coarse_points},

@@ -81,7 +81,11 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
         valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "cmp.su2") + " --method all --json");
     ASSERT_EQ(all.at("methods").size(), std::size(dgwarp::all_methods));
     const nlohmann::json prepared = valid_report(c.dir, "prepare", inputs + " -o " + quoted(c.dir / "m.plan") + " --json");
-    valid_report(c.dir, "deform", inputs + " --plan " + quoted(c.dir / "m.plan") + " -o " + quoted(c.dir / "p.su2") + " --json");
+    const nlohmann::json planned =
+        valid_report(c.dir, "deform", inputs + " --plan " + quoted(c.dir / "m.plan") + " -o " + quoted(c.dir / "p.su2") + " --json");
+    // A loaded DG-IDW plan keeps only the graph simplices that hold a volume node.
+    EXPECT_TRUE(planned.at("plan").at("graph_simplices").is_null());
+    EXPECT_EQ(planned.at("plan").at("graph_simplices_used"), prepared.at("plan").at("graph_simplices_used"));
     // A time series, and a motion far larger than the mesh (a warning; cells invert: exit 3, report on stdout).
     const auto pitch = write_text(c.dir / "pitch.json", R"({
         "markers": {"rectangle": {"periodic": {"pitch": {"amplitude_deg": 5, "frequency": 1, "center": [0, 0]}}}},
@@ -113,6 +117,9 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
     expect_invalid(c.dir, "deform", one, [](auto& j) { j["method"] = "spring"; }, "spring");
     expect_invalid(c.dir, "deform", one, [](auto& j) { j["methods"] = nlohmann::json::array(); }, "methods");
     expect_invalid(c.dir, "deform", all, [](auto& j) { j["methods"][1]["plan"].erase("outside_hull"); }, "outside_hull");
+    expect_invalid(c.dir, "deform", all, [](auto& j) { j["methods"][0]["plan"].erase("graph_simplices_used"); },
+                   "graph_simplices_used");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["plan"]["graph_simplices"] = "many"; }, "graph_simplices");
     expect_invalid(c.dir, "deform", all, [](auto& j) { j["method"] = "dg-idw"; }, "method");
     expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["seconds"].erase("write"); }, "write");
     expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["options"]["length_scale"] = "big"; }, "length_scale");

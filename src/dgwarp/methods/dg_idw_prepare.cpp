@@ -122,6 +122,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     const auto t0 = Clock::now();
     const DelaunayGraph& g = lg.graph;
     plan.stats.graph_vertex_count = static_cast<std::int64_t>(g.num_vertices());
+    plan.stats.graph_simplex_count = static_cast<std::int64_t>(g.num_simplices());
 
     // Auto length scale (dg_idw.hpp): the moving boundary's size, but small
     // enough that the zone following the moving boundary, a L, fits in the gap.
