@@ -8,7 +8,6 @@
 //   --dg-harmonic: only DG-harmonic against DG-IDW (issue #12's speed targets).
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +19,7 @@
 
 #include "dgwarp/cases/sphere_box.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
@@ -27,11 +27,8 @@
 #include "sphere_box_mesh.hpp"
 
 using namespace dgwarp;
-using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct Timing {
     double median = 0, min = 0;  // seconds
@@ -43,7 +40,7 @@ Timing time_repeats(int repeats, F&& f) {
     for (int r = 0; r < repeats; ++r) {
         const auto t0 = Clock::now();
         f();
-        t.push_back(since(t0));
+        t.push_back(seconds_since(t0));
     }
     std::sort(t.begin(), t.end());
     return {t[t.size() / 2], t[0]};

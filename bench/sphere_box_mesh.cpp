@@ -1,23 +1,19 @@
 #include "sphere_box_mesh.hpp"
 
+#include "dgwarp/cases/child_process.hpp"
 #include "dgwarp/cases/sphere_box.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <numeric>
 #include <stdexcept>
-#include <thread>
 
 namespace dgwarp::bench {
 
@@ -27,13 +23,13 @@ constexpr char magic[8] = {'D', 'G', 'W', 'S', 'P', 'H', 'M', '1'};
 
 // Runs Gmsh (the library's make_sphere_box); returns the mesh. Called in a child process.
 SphereBoxMesh generate(const SphereBoxCase& c) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Clock::time_point t0 = Clock::now();
     const Mesh mesh = make_sphere_box(c.options);
     SphereBoxMesh m;
     m.points = mesh.points;
     m.sphere_nodes = marker_nodes(find_marker(mesh, "sphere"));
     m.box_nodes = marker_nodes(find_marker(mesh, "box"));
-    m.generate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    m.generate_seconds = seconds_since(t0);
     return m;
 }
 
@@ -86,29 +82,8 @@ SphereBoxMesh sphere_box_mesh(const SphereBoxCase& c, const std::filesystem::pat
     if (load(file, m)) return m;
 
     // Gmsh runs in a child process, so a run that takes too long can be killed.
-    const pid_t child = ::fork();
-    if (child < 0) throw std::runtime_error("fork failed");
-    if (child == 0) {
-        try {
-            save(file, generate(c));
-            ::_exit(0);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "mesh generation failed: %s\n", e.what());
-            ::_exit(1);
-        }
-    }
-    const auto start = std::chrono::steady_clock::now();
-    int status = 0;
-    while (::waitpid(child, &status, WNOHANG) == 0) {
-        if (std::chrono::steady_clock::now() - start > std::chrono::seconds(timeout_seconds)) {
-            ::kill(child, SIGKILL);
-            ::waitpid(child, &status, 0);
-            throw std::runtime_error("Gmsh took more than " + std::to_string(timeout_seconds) + " s for case " + c.name);
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !load(file, m))
-        throw std::runtime_error("Gmsh mesh generation failed for case " + c.name);
+    run_in_child_process([&] { save(file, generate(c)); }, timeout_seconds, "Gmsh's mesh of case " + c.name);
+    if (!load(file, m)) throw std::runtime_error("cannot read back " + file.string());
     return m;
 }
 

@@ -1,19 +1,15 @@
 // dgwarp bench: the paper's test cases with every method, our figures beside the paper's.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <chrono>
 #include <ctime>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include "bench_tables.hpp"
 #include "commands.hpp"
+#include "dgwarp/cases/child_process.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
@@ -22,7 +18,6 @@
 #include "flag_values.hpp"
 #include "output_files.hpp"
 #include "progress_line.hpp"
-#include "stopwatch.hpp"
 
 namespace dgwarp::cli {
 
@@ -71,28 +66,8 @@ Mesh generate_with_timeout(const std::string& name, int size, const std::filesys
     };
     if (std::filesystem::exists(file)) return read();
     if (!quiet) std::cerr << "bench: generating " << name << " size " << size << " with Gmsh ..." << std::endl;
-    const pid_t child = ::fork();
-    if (child < 0) throw Error("bench: fork failed");
-    if (child == 0) {
-        try {
-            write_mesh(file, make_case(name, size));
-            ::_exit(0);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "bench: mesh generation failed: %s\n", e.what());
-            ::_exit(1);
-        }
-    }
-    const auto start = std::chrono::steady_clock::now();
-    int status = 0;
-    while (::waitpid(child, &status, WNOHANG) == 0) {
-        if (std::chrono::steady_clock::now() - start > std::chrono::seconds(timeout)) {
-            ::kill(child, SIGKILL);
-            ::waitpid(child, &status, 0);
-            throw Error("Gmsh took more than " + std::to_string(timeout) + " s");
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw Error("Gmsh mesh generation failed");
+    run_in_child_process([&] { write_mesh(file, make_case(name, size)); }, timeout,
+                         "Gmsh's mesh of " + name + " size " + std::to_string(size));
     return read();
 }
 

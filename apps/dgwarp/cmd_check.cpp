@@ -6,9 +6,9 @@
 
 #include "commands.hpp"
 #include "deform_setup.hpp"
-#include "warning_printer.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "report.hpp"
-#include "stopwatch.hpp"
+#include "warning_printer.hpp"
 
 namespace dgwarp::cli {
 

@@ -8,17 +8,17 @@
 #include "commands.hpp"
 #include "deform_setup.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/last_resort.hpp"
 #include "dgwarp/repair/unrepairable_cells.hpp"
 #include "dgwarp/repair/untangle.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "flag_values.hpp"
 #include "frame_output.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
-#include "stopwatch.hpp"
 
 namespace dgwarp::cli {
 
@@ -32,7 +32,7 @@ struct DeformArgs {
     bool allow_invalid = false;
     bool untangle = false;
     bool no_untangle = false;  // dg-harmonic without its last resort
-    double untangle_target = 0;
+    double untangle_target = UntangleOptions{}.target_quality;
     bool quiet = false;
 };
 
@@ -480,7 +480,8 @@ void add_deform_command(CLI::App& app) {
                       "After each step, move the volume nodes around inverted cells until none is inverted "
                       "(boundary nodes stay; docs/UNTANGLE.md)");
     cmd->add_option("--untangle-target", args->untangle_target,
-                    "With --untangle: also repair the cells of quality at or below this (default 0: inverted only)")
+                    "With --untangle: also repair the cells of quality at or below this (default " +
+                        number_text(UntangleOptions{}.target_quality) + ": inverted only)")
         ->check(number_between(0, 0.99))
         ->needs(untangle_flag);
     cmd->add_flag("--no-untangle", args->no_untangle,

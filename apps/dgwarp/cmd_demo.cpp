@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
@@ -17,7 +18,6 @@
 #include "frame_output.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
-#include "stopwatch.hpp"
 
 namespace dgwarp::cli {
 

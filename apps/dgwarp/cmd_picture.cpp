@@ -23,7 +23,7 @@ struct PictureArgs {
     double zoom = 3.0;
     std::vector<double> window;
     bool ratio = false;
-    int width = 1600, height = 1200;
+    int width = PictureOptions{}.width, height = PictureOptions{}.height;
     std::string title;
     int zone = 1;
     bool quiet = false;

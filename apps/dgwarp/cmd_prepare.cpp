@@ -4,9 +4,9 @@
 
 #include "commands.hpp"
 #include "deform_setup.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "output_files.hpp"
-#include "stopwatch.hpp"
 
 namespace dgwarp::cli {
 

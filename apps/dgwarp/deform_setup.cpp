@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "flag_values.hpp"
 #include "report.hpp"
-#include "stopwatch.hpp"
 
 namespace dgwarp::cli {
 
@@ -37,14 +37,7 @@ std::string method_list() {
     return s;
 }
 
-// The shortest text that reads back to `value` (as the writers print numbers).
-std::string number(double value) {
-    std::ostringstream s;
-    write_number(s, value);
-    return s.str();
-}
-
-std::string length_scale_text(double l) { return l == 0 ? "auto" : number(l); }
+std::string length_scale_text(double l) { return l == 0 ? "auto" : number_text(l); }
 
 // A loaded plan fixes its method's options: one given on the command line
 // that differs from the plan's is a mistake, not silently dropped.
@@ -101,11 +94,15 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
     add_threads_option(cmd, a.threads, "all cores");
-    cmd->add_option("--a-translation", a.a_translation, "DG-IDW weight a of the translation (paper: 7)")
+    // The defaults are the library's (the paper's values for DG-IDW).
+    const DgIdwOptions dg_idw;
+    cmd->add_option("--a-translation", a.a_translation,
+                    "DG-IDW weight a of the translation (paper: " + number_text(dg_idw.a_translation) + ")")
         ->capture_default_str()
         ->check(positive_number())
         ->each(given("--a-translation"));
-    cmd->add_option("--a-rotation", a.a_rotation, "DG-IDW weight a of the rotation (paper: 1.4)")
+    cmd->add_option("--a-rotation", a.a_rotation,
+                    "DG-IDW weight a of the rotation (paper: " + number_text(dg_idw.a_rotation) + ")")
         ->capture_default_str()
         ->check(positive_number())
         ->each(given("--a-rotation"));
@@ -241,9 +238,9 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         if (const auto* d = std::get_if<DgIdwPlan>(&loaded)) {
             const DgIdwOptions& o = d->options;
             refuse_conflict(in.args, plan_file, "--a-translation", asked.dg_idw.a_translation != o.a_translation,
-                            number(o.a_translation));
+                            number_text(o.a_translation));
             refuse_conflict(in.args, plan_file, "--a-rotation", asked.dg_idw.a_rotation != o.a_rotation,
-                            number(o.a_rotation));
+                            number_text(o.a_rotation));
             refuse_conflict(in.args, plan_file, "--length-scale", asked.dg_idw.length_scale != o.length_scale,
                             length_scale_text(o.length_scale));
             refuse_conflict(in.args, plan_file, "--dg-idw-weights", asked.dg_idw.weighting != o.weighting,
@@ -253,9 +250,9 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         if (const auto* h = std::get_if<DgHarmonicPlan>(&loaded)) {
             const DgHarmonicOptions& o = h->options;
             refuse_conflict(in.args, plan_file, "--harmonic-wall-spacing",
-                            asked.dg_harmonic.wall_spacing != o.wall_spacing, number(o.wall_spacing));
+                            asked.dg_harmonic.wall_spacing != o.wall_spacing, number_text(o.wall_spacing));
             refuse_conflict(in.args, plan_file, "--harmonic-growth", asked.dg_harmonic.growth != o.growth,
-                            number(o.growth));
+                            number_text(o.growth));
             p.options.dg_harmonic = o;
         }
         refuse_other_methods_options(in.args, p.method);
@@ -304,8 +301,11 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
     const PlanSummary s = plan_summary(p.plan);
     out << "plan      " << method_name(p.method);
-    if (s.graph_simplices > 0)
-        out << ", " << s.graph_simplices << " graph simplices, " << s.outside_hull << " nodes outside the graph's hull";
+    if (s.graph_simplices_used > 0) {
+        if (s.graph_simplices) out << ", " << *s.graph_simplices << " graph simplices";
+        else out << ", " << s.graph_simplices_used << " graph simplices holding volume nodes";
+        out << ", " << s.outside_hull << " nodes outside the graph's hull";
+    }
     out << ", " << plan_memory_bytes(p.plan) / 1024 << " KiB"
         << (p.plan_file.empty() ? "" : ", loaded from " + p.plan_file) << "\n";
     out << "time      read " << milliseconds(in.read_seconds) << ", prepare " << milliseconds(p.prepare_seconds);
@@ -362,7 +362,8 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
     return {{"method", method_name(p.method)},
             {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
             {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->options.weighting)) : nlohmann::json(nullptr)},
-            {"graph_simplices", s.graph_simplices},
+            {"graph_simplices", s.graph_simplices ? nlohmann::json(*s.graph_simplices) : nlohmann::json(nullptr)},
+            {"graph_simplices_used", s.graph_simplices_used},
             {"outside_hull", s.outside_hull},
             {"shared_graph_vertices", s.shared_vertices},
             {"coarse_points", s.coarse_points},

@@ -11,6 +11,7 @@
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
+#include "dgwarp/io/number_text.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
@@ -28,15 +29,16 @@ struct SetupArgs {
     std::set<std::string> given;    // the method options given on the command line ("--length-scale", ...)
     int zone = 1;
     int threads = 0;
-    double a_translation = 7.0;
-    double a_rotation = 1.4;
-    std::string length_scale = "1";
+    // The method options, with the library's defaults.
+    double a_translation = DgIdwOptions{}.a_translation;
+    double a_rotation = DgIdwOptions{}.a_rotation;
+    std::string length_scale = number_text(DgIdwOptions{}.length_scale);  // a number, or "auto"
     std::string weights;  // DG-IDW weighting: "paper" or "continuous"; empty = paper, or a loaded plan's
-    bool dgm_substep = false;
-    double idw_exponent_moving = 3.0;
-    double idw_exponent_static = 2.0;
-    double rbf_radius = 0;   // 0 = global support
-    double rbf_greedy = 0;   // 0 = all boundary nodes are centres
+    bool dgm_substep = DgmOptions{}.on_invalid == DgmOptions::OnInvalidGraph::substep;
+    double idw_exponent_moving = IdwOptions{}.exponent_moving;
+    double idw_exponent_static = IdwOptions{}.exponent_static;
+    double rbf_radius = RbfOptions{}.support_radius;    // 0 = global support
+    double rbf_greedy = RbfOptions{}.greedy_tolerance;  // 0 = all boundary nodes are centres
     double harmonic_wall_spacing = DgHarmonicOptions{}.wall_spacing;
     double harmonic_growth = DgHarmonicOptions{}.growth;
 };

@@ -12,7 +12,7 @@
 namespace dgwarp::cli {
 
 /// JSON schema version of every --json report; bumped on incompatible changes.
-inline constexpr int json_schema_version = 1;
+inline constexpr int json_schema_version = 2;
 
 /// "2D, 5233 nodes, 10216 cells (10216 triangle)".
 std::string describe_mesh(const Mesh& mesh);

@@ -11,8 +11,8 @@ namespace {
 }  // namespace
 
 TEST(CliConvert, RoundTripsThroughEveryFormatAreExactOnRealMeshes) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     const auto meshes = su2_meshes();
-    if (meshes.empty()) GTEST_SKIP() << "no ../shared/meshes/su2";
     const auto dir = scratch_dir();
     for (const auto& path : meshes) {
         const Mesh original = read_mesh(path);

@@ -41,7 +41,9 @@ TEST(CliDeform, WritesTheDeformedMeshAndReportsQualityAndTimes) {
     EXPECT_GE(j.at("plan").at("seconds").get<double>(), 0.0);
     for (const char* phase : {"coarse points", "graph", "locate", "factorise"})
         EXPECT_GE(j.at("plan").at("phase_seconds").at(phase).get<double>(), 0.0) << phase;
-    EXPECT_GT(j.at("plan").at("graph_simplices").get<long>(), 0);
+    // The whole graph, and the simplices holding a volume node (what a DG-IDW plan keeps).
+    EXPECT_GT(j.at("plan").at("graph_simplices_used").get<long>(), 0);
+    EXPECT_GE(j.at("plan").at("graph_simplices").get<long>(), j.at("plan").at("graph_simplices_used").get<long>());
     EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
     EXPECT_GE(f.at("seconds").at("deform").get<double>(), 0.0);
 
@@ -475,7 +477,7 @@ TEST(CliDeform, AFlapNextToItsWingFoldsDgIdwWhichNamesTheFixesAndDgHarmonicStays
     const auto j = nlohmann::json::parse(robust.out);
     EXPECT_EQ(j.at("method"), "dg-harmonic");
     EXPECT_EQ(j.at("frames").at(0).at("quality").at("inverted"), 0);
-    EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.4);  // measured 0.542
+    EXPECT_GT(j.at("frames").at(0).at("quality").at("min").get<double>(), 0.98 * 0.542);  // measured 0.542
     EXPECT_GT(j.at("plan").at("coarse_points").get<long>(), 0);
 }
 

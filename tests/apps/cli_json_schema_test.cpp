@@ -67,7 +67,7 @@ TEST(CliJsonSchema, InfoAndQualityReportsValidateAndTamperedOnesDoNot) {
     expect_invalid(c.dir, "info", info, [](auto& j) { j.erase("bounding_box"); }, "bounding_box");
     expect_invalid(c.dir, "info", info, [](auto& j) { j["quality"]["min"] = "0.5"; }, "quality/min");
     expect_invalid(c.dir, "info", info, [](auto& j) { j["quality"]["histogram"]["counts"].push_back(0); }, "counts");
-    expect_invalid(c.dir, "info", info, [](auto& j) { j["schema_version"] = 2; }, "schema_version");
+    expect_invalid(c.dir, "info", info, [](auto& j) { j["schema_version"] = 1; }, "schema_version");
     expect_invalid(c.dir, "info", info, [](auto& j) { j["mesh"]["markers"][0].erase("elements"); }, "elements");
     expect_invalid(c.dir, "quality", quality, [](auto& j) { j.erase("ratio"); }, "ratio");
     expect_invalid(c.dir, "quality", quality, [](auto& j) { j["ratio"]["worst"] = 0; }, "worst");
@@ -80,8 +80,14 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
     const nlohmann::json all =
         valid_report(c.dir, "deform", inputs + " -o " + quoted(c.dir / "cmp.su2") + " --method all --json");
     ASSERT_EQ(all.at("methods").size(), std::size(dgwarp::all_methods));
-    const nlohmann::json prepared = valid_report(c.dir, "prepare", inputs + " -o " + quoted(c.dir / "m.plan") + " --json");
-    valid_report(c.dir, "deform", inputs + " --plan " + quoted(c.dir / "m.plan") + " -o " + quoted(c.dir / "p.su2") + " --json");
+    const nlohmann::json prepared =
+        valid_report(c.dir, "prepare", inputs + " --method dg-idw -o " + quoted(c.dir / "m.plan") + " --json");
+    valid_report(c.dir, "prepare", inputs + " -o " + quoted(c.dir / "h.plan") + " --json");  // the default: dg-harmonic
+    const nlohmann::json planned =
+        valid_report(c.dir, "deform", inputs + " --plan " + quoted(c.dir / "m.plan") + " -o " + quoted(c.dir / "p.su2") + " --json");
+    // A loaded DG-IDW plan keeps only the graph simplices that hold a volume node.
+    EXPECT_TRUE(planned.at("plan").at("graph_simplices").is_null());
+    EXPECT_EQ(planned.at("plan").at("graph_simplices_used"), prepared.at("plan").at("graph_simplices_used"));
     // A time series, and a motion far larger than the mesh (a warning; cells invert: exit 3, report on stdout).
     const auto pitch = write_text(c.dir / "pitch.json", R"({
         "markers": {"rectangle": {"periodic": {"pitch": {"amplitude_deg": 5, "frequency": 1, "center": [0, 0]}}}},
@@ -113,6 +119,9 @@ TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
     expect_invalid(c.dir, "deform", one, [](auto& j) { j["method"] = "spring"; }, "spring");
     expect_invalid(c.dir, "deform", one, [](auto& j) { j["methods"] = nlohmann::json::array(); }, "methods");
     expect_invalid(c.dir, "deform", all, [](auto& j) { j["methods"][1]["plan"].erase("outside_hull"); }, "outside_hull");
+    expect_invalid(c.dir, "deform", all, [](auto& j) { j["methods"][0]["plan"].erase("graph_simplices_used"); },
+                   "graph_simplices_used");
+    expect_invalid(c.dir, "deform", one, [](auto& j) { j["plan"]["graph_simplices"] = "many"; }, "graph_simplices");
     expect_invalid(c.dir, "deform", all, [](auto& j) { j["method"] = "dg-idw"; }, "method");
     expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["seconds"].erase("write"); }, "write");
     expect_invalid(c.dir, "prepare", prepared, [](auto& j) { j["options"]["length_scale"] = "big"; }, "length_scale");

@@ -46,7 +46,7 @@ TEST(CliProgress, NothingWhenStandardErrorIsNotATerminal) {
 }
 
 TEST(CliProgress, FractionsOnATerminalButNotWithQuiet) {
-    if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "script(1) not installed";
+    ASSERT_EQ(run_command("command -v script").exit_code, 0) << "script(1) (util-linux) not installed";
     const RectBoxFiles f = rect_box_files();
     for (const std::string& c : commands(f)) {
         const CommandResult r = run_cli_on_terminal(c);
@@ -66,7 +66,7 @@ TEST(CliProgress, FractionsOnATerminalButNotWithQuiet) {
 TEST(CliProgress, FramesAreCountedAsInTheResultRows) {
     // The rows, the JSON and the file names number frames from 0; the
     // progress line names the same frame (and how far the series is).
-    if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "script(1) not installed";
+    ASSERT_EQ(run_command("command -v script").exit_code, 0) << "script(1) (util-linux) not installed";
     const RectBoxFiles f = rect_box_files();
     const auto frames = write_text(f.dir / "frames.json", R"({"frames": [{"markers": {"rectangle": {"translate": [0.1, 0]}}},
                                                                          {"markers": {"rectangle": {"translate": [0.2, 0]}}}]})");

@@ -27,7 +27,7 @@ TEST_P(CliQualityOnRealMeshes, JsonAgreesWithIndependentComputation) {
     EXPECT_NEAR(q.at("min").get<double>(), theirs.at("min").get<double>(), 1e-9);
     EXPECT_NEAR(q.at("mean").get<double>(), theirs.at("mean").get<double>(), 1e-9);
     EXPECT_EQ(q.at("inverted").get<long>(), theirs.at("inverted").get<long>());
-    EXPECT_EQ(ours.at("schema_version").get<int>(), 1);
+    EXPECT_EQ(ours.at("schema_version").get<int>(), 2);
     EXPECT_EQ(ours.at("mesh").at("cells").get<long>(), q.at("cells").get<long>());
 
     // The readable form prints the same three figures.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/methods/method.hpp"
@@ -62,6 +63,8 @@ TEST(CasesStore, TheStoreNeverComesWithinTwoCellsOfThePlate) {
 TEST(CasesStore, DgHarmonicKeepsEveryCellValid) {
     // Measured: min 0.229 / 0.177 / 0.110 at 10 / 20 / 30°; the paper's DG-IDW
     // inverts 7 / 18 / 254 cells, IDW hundreds.
+    const std::map<std::string, double> measured_min = {{"drop-pitch-10", 0.229}, {"drop-pitch-20", 0.177},
+                                                        {"drop-pitch-30", 0.110}};
     const Mesh& m = store_mesh();
     const auto orientation = cell_orientations(m);
     for (const CaseMotion& c : case_motions("store", m)) {
@@ -71,6 +74,6 @@ TEST(CasesStore, DgHarmonicKeepsEveryCellValid) {
         deform(prepare(Method::dg_harmonic, 3, m.points, rb.boundary), m.points, frame.motion, moved.points);
         const QualitySummary q = summarize_quality(cell_qualities(moved, orientation));
         EXPECT_EQ(q.inverted, 0) << c.name;
-        EXPECT_GT(q.min, 0.09) << c.name;
+        EXPECT_GT(q.min, 0.98 * measured_min.at(c.name)) << c.name;
     }
 }

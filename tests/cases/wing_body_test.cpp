@@ -145,8 +145,8 @@ TEST(CasesWingBody, DgIdwFoldMovesTheWingExactlyAndInvertsOnlyAFewCells) {
     for (std::size_t i = 0; i < f.boundary.boundary.nodes.size(); ++i)
         for (int k = 0; k < 3; ++k)
             ASSERT_NEAR(f.mesh.points[3 * f.boundary.boundary.nodes[i] + k], expected[3 * i + k], 1e-9);
-    EXPECT_LE(double(f.after.inverted), 1e-3 * double(m.cells.size()));
-    EXPECT_GT(f.after.mean, 0.95 * f.before.mean);
+    EXPECT_LE(f.after.inverted, 2);                     // measured 1
+    EXPECT_GT(f.after.mean, 0.985 * f.before.mean);     // measured 0.8016 against 0.8102
 }
 
 TEST(CasesWingBody, SizesAreKnownAndBadOptionsThrow) {

@@ -14,9 +14,9 @@ using namespace dgwarp;
 
 namespace {
 
-// The spec: /work/shared/meshes/README.md. Cell types are the README's where it
-// names them ("tri", "pyr+tet", ...); for the other rows they were counted
-// with awk on the files' NELEM sections.
+// The spec: ../shared/meshes/README.md beside the repository. Cell types are
+// the README's where it names them ("tri", "pyr+tet", ...); for the other rows
+// they were counted with awk on the files' NELEM sections.
 struct ExpectedMesh {
     std::string file;
     int dim;

@@ -63,7 +63,9 @@ TEST(Su2Surroundings, TheOtherZonesOfAMultiZoneFileAreKeptByteForByte) {
         const int other = 3 - zone;
         EXPECT_EQ(read_su2_text("out.su2", out, other), read_su2_text("in.su2", text, other));
         EXPECT_TRUE(out.ends_with(ffd_tail));
-        if (zone == 2) EXPECT_TRUE(out.starts_with("NZONE= 2\n\nIZONE= 1\n" + zone1 + "\nIZONE= 2\n"));
+        if (zone == 2) {
+            EXPECT_TRUE(out.starts_with("NZONE= 2\n\nIZONE= 1\n" + zone1 + "\nIZONE= 2\n"));
+        }
     }
 }
 

@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <vector>
 
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/methods/coarse_points.hpp"
@@ -65,46 +65,6 @@ DeformedMesh harmonic_on(const Mesh& mesh, const MotionSpec& spec) {
 
 }  // namespace
 
-TEST(DgHarmonic, ZeroMotionIsExactlyTheIdentity) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = harmonic_box(dim, dim == 2 ? 18 : 9);
-        const DgHarmonicPlan plan = prepare_dg_harmonic(dim, m.points, m.boundary, dense);
-        EXPECT_GT(plan.num_unknowns(), 10) << dim;
-        EXPECT_EQ(harmonic_step(plan, m.points, BoundaryMotion(m.boundary.nodes.size())), m.points) << dim;
-    }
-}
-
-TEST(DgHarmonic, ARigidMotionOfEveryBoundaryNodeMovesEveryNodeRigidly) {
-    for (int dim : {2, 3}) {
-        BoxInBox m = harmonic_box(dim, dim == 2 ? 18 : 9);
-        std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), 1);
-        const NodeMotion rigid{{0.3, -0.2, dim == 3 ? 0.1 : 0.0}, {dim == 3 ? 0.2 : 0.0, dim == 3 ? -0.1 : 0.0, 0.6},
-                               {0.4, 0.5, dim == 3 ? 0.5 : 0.0}};
-        const DgHarmonicPlan plan = prepare_dg_harmonic(dim, m.points, m.boundary, dense);
-        const auto out = harmonic_step(plan, m.points, moving_only(m.boundary, rigid));
-        for (std::size_t n = 0; n < m.num_points(); ++n) {
-            double expected[3];
-            apply_motion(rigid, std::span<const double>(m.points).subspan(n * dim, dim), std::span<double>(expected, dim));
-            for (int d = 0; d < dim; ++d) ASSERT_NEAR(out[n * dim + d], expected[d], 1e-12) << dim << " node " << n;
-        }
-    }
-}
-
-TEST(DgHarmonic, BoundaryNodesMoveExactlyAndStaticOnesStay) {
-    const BoxInBox m = harmonic_box(2, 18);
-    const NodeMotion turn{{0.05, 0, 0}, {0, 0, 0.4}, {0.5, 0.5, 0}};
-    const DgHarmonicPlan plan = prepare_dg_harmonic(2, m.points, m.boundary, dense);
-    const auto out = harmonic_step(plan, m.points, moving_only(m.boundary, turn));
-    for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
-        const std::size_t n = m.boundary.nodes[b];
-        double expected[2] = {m.points[2 * n], m.points[2 * n + 1]};
-        if (m.boundary.moving[b])
-            apply_motion(turn, std::span<const double>(m.points).subspan(2 * n, 2), std::span<double>(expected, 2));
-        EXPECT_EQ(out[2 * n], expected[0]);
-        EXPECT_EQ(out[2 * n + 1], expected[1]);
-    }
-}
-
 TEST(DgHarmonic, TranslationStaysBetweenTheBoundaryValues) {
     // The discrete maximum principle: each component is a convex combination
     // of the boundary's (0 on the static box, 0.1 and -0.05 on the moving one).
@@ -151,22 +111,6 @@ TEST(DgHarmonic, UniformConductivityReproducesALinearDisplacementIn2D) {
         EXPECT_NEAR(out[2 * n] - m.points[2 * n], d[0], 1e-13) << n;
         EXPECT_NEAR(out[2 * n + 1] - m.points[2 * n + 1], d[1], 1e-13) << n;
     }
-}
-
-TEST(DgHarmonic, ResultsDoNotDependOnTheThreadCount) {
-    const BoxInBox m = harmonic_box(3, 12);
-    const NodeMotion turn{{0.02, 0, 0.01}, {0.1, 0.2, 0.3}, {0.5, 0.5, 0.5}};
-    const int threads = num_threads();
-    set_num_threads(1);
-    const DgHarmonicPlan one = prepare_dg_harmonic(3, m.points, m.boundary, dense);
-    const auto a = harmonic_step(one, m.points, moving_only(m.boundary, turn));
-    set_num_threads(2);
-    const DgHarmonicPlan two = prepare_dg_harmonic(3, m.points, m.boundary, dense);
-    const auto b = harmonic_step(two, m.points, moving_only(m.boundary, turn));
-    set_num_threads(threads);
-    EXPECT_EQ(one.simplices, two.simplices);
-    EXPECT_EQ(one.node_barycentric, two.node_barycentric);
-    EXPECT_EQ(a, b);
 }
 
 TEST(DgHarmonic, APeriodicMotionReturnsEveryNodeHome) {
@@ -228,27 +172,31 @@ TEST(DgHarmonicCoarsePoints, SpacingGrowsAwayFromTheWallsAndTheChoiceIsDetermini
 
 TEST(DgHarmonicCases, TwistedBarTwistAndRotationStayValid) {
     // The paper's DG-IDW folds 151 cells on the twist followed by 45 degrees.
+    const std::map<std::string, double> measured_min = {{"twist", 0.548}, {"twist-rotate-45", 0.360}};
     const Mesh mesh = make_case("twisted-bar");
     for (const CaseMotion& motion : case_motions("twisted-bar", mesh)) {
         const DeformedMesh d = harmonic_on(mesh, motion.spec);
         EXPECT_EQ(d.quality.inverted, 0) << motion.name;
-        EXPECT_GT(d.quality.min, 0.3) << motion.name;  // measured 0.547 (twist), 0.357 (then 45°)
+        EXPECT_GT(d.quality.min, 0.98 * measured_min.at(motion.name)) << motion.name;
     }
 }
 
 TEST(DgHarmonicCases, RectangleInABoxStaysValidUpTo90Degrees) {
+    const std::map<std::string, double> measured_min = {
+        {"rotate-30", 0.398}, {"rotate-45", 0.370}, {"rotate-60", 0.335}, {"rotate-90", 0.261}, {"translate", 0.360}};
     const Mesh mesh = make_case("rect-box");
     for (const CaseMotion& motion : case_motions("rect-box", mesh)) {
         const DeformedMesh d = harmonic_on(mesh, motion.spec);
         EXPECT_EQ(d.quality.inverted, 0) << motion.name;
-        EXPECT_GT(d.quality.min, 0.2) << motion.name;  // measured 0.26 at 90°, 0.34-0.40 below
+        EXPECT_GT(d.quality.min, 0.98 * measured_min.at(motion.name)) << motion.name;
     }
 }
 
 TEST(DgHarmonicSu2, BrickBumpIsValidOnAllFourMeshes) {
     // The paper's DG-IDW with L = 1 inverts 102 (hex), 152 (pyra) and 42 (tets) cells here.
+    DGWARP_REQUIRE_SHARED_MESHES();
     const auto dir = test::su2_meshes_dir();
-    if (!std::filesystem::exists(dir)) GTEST_SKIP() << dir << " is absent";
+    const std::map<std::string, double> measured_min = {{"hex", 0.900}, {"prism", 0.864}, {"pyra", 0.421}, {"tets", 0.493}};
     for (const char* kind : {"hex", "prism", "pyra", "tets"}) {
         const auto mesh_file = dir / (std::string("deformation_brick_") + kind + "_mesh_brick_" + kind + "_ffd.su2");
         const std::string motion_name = std::string(kind) == "hex" ? "brick_bump_top.json"
@@ -256,6 +204,6 @@ TEST(DgHarmonicSu2, BrickBumpIsValidOnAllFourMeshes) {
         const Mesh mesh = read_mesh(mesh_file);
         const DeformedMesh d = harmonic_on(mesh, read_motion_file(test::source_dir() / "examples/motions" / motion_name));
         EXPECT_EQ(d.quality.inverted, 0) << kind;
-        EXPECT_GT(d.quality.min, 0.35) << kind;  // measured 0.42 (pyra) to 0.87 (prism)
+        EXPECT_GT(d.quality.min, 0.98 * measured_min.at(kind)) << kind;
     }
 }

@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <vector>
 
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "support/box_in_box.hpp"
@@ -151,43 +149,3 @@ TEST(DgIdwContinuous, NoJumpAcrossGraphFacesWhereThePaperWeightsJump) {
     }
 }
 
-TEST(DgIdwContinuous, KeepsTheMethodsProperties) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 15 : 7);
-        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary, continuous);
-        EXPECT_EQ(plan.options.weighting, DgIdwWeighting::continuous);
-        // Zero motion is the identity, bit for bit.
-        const BoundaryMotion zero(m.boundary.nodes.size());
-        EXPECT_EQ(run_dg_idw(plan, m.points, zero), m.points);
-        // Boundary nodes move exactly; the same rigid motion everywhere moves every node rigidly.
-        NodeMotion rigid{{0.1, -0.2, 0.05}, {0.0, dim == 3 ? 0.2 : 0.0, 0.4}, m.inner_center};
-        BoundaryMotion all(m.boundary.nodes.size(), rigid);
-        BoxInBox moving = m;
-        std::fill(moving.boundary.moving.begin(), moving.boundary.moving.end(), std::uint8_t{1});
-        const DgIdwPlan all_moving = prepare_dg_idw(dim, moving.points, moving.boundary, continuous);
-        const auto out = run_dg_idw(all_moving, m.points, all);
-        for (std::size_t n = 0; n < m.num_points(); ++n) {
-            const auto y = dgwarp::test::moved(dim, m.points, n, rigid);
-            for (int d = 0; d < dim; ++d) EXPECT_NEAR(out[n * dim + d], y[d], 1e-12) << n;
-        }
-        // One and two threads give the same bits.
-        const BoundaryMotion motion = random_motion(m, 11);
-        const int threads = num_threads();
-        set_num_threads(1);
-        const DgIdwPlan plan1 = prepare_dg_idw(dim, m.points, m.boundary, continuous);
-        const auto one = run_dg_idw(plan1, m.points, motion);
-        set_num_threads(2);
-        const DgIdwPlan plan2 = prepare_dg_idw(dim, m.points, m.boundary, continuous);
-        const auto two = run_dg_idw(plan2, m.points, motion);
-        set_num_threads(threads);
-        EXPECT_EQ(plan1.node_coefficients, plan2.node_coefficients);
-        EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);
-        for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
-            const auto n = static_cast<std::size_t>(m.boundary.nodes[b]);
-            const auto y = m.boundary.moving[b] ? dgwarp::test::moved(dim, m.points, n, motion[b])
-                                                : std::vector<double>(m.points.begin() + n * dim,
-                                                                      m.points.begin() + (n + 1) * dim);
-            for (int d = 0; d < dim; ++d) EXPECT_EQ(one[n * dim + d], y[d]) << "boundary node " << n;
-        }
-    }
-}

@@ -3,12 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "support/box_in_box.hpp"
 
 using namespace dgwarp;
@@ -33,89 +31,6 @@ DgIdwPlan with_length_scale(DgIdwPlan plan, double length_scale) {
 }
 
 }  // namespace
-
-TEST(DgIdw, ZeroMotionIsTheIdentityBitForBit) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9, 3.7);
-        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary);
-        const BoundaryMotion zero(m.boundary.nodes.size());
-        const auto out = deform(plan, m.points, zero);
-        EXPECT_EQ(std::memcmp(out.data(), m.points.data(), out.size() * sizeof(double)), 0) << dim << "D";
-    }
-}
-
-TEST(DgIdw, ARigidMotionOfEveryBoundaryNodeMovesEveryNodeRigidly) {
-    // Angles below and above 1 rad: both branches of the rotation factors.
-    for (int dim : {2, 3}) {
-        const BoxInBox m = all_moving(box_in_box(dim, dim == 2 ? 24 : 9, 2.0));
-        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary);
-        for (const Vec3 w : {Vec3{0.3, -0.2, 0.5}, Vec3{1.1, 0.9, -1.7}}) {
-            NodeMotion rigid{{0.3, -0.7, 0.2}, w, {0.9, 1.3, 0.4}};
-            if (dim == 2) rigid.rotation[0] = rigid.rotation[1] = 0;
-            const auto out = deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size(), rigid));
-            for (std::size_t n = 0; n < m.num_points(); ++n) {
-                const auto y = moved(dim, m.points, n, rigid);
-                for (int d = 0; d < dim; ++d) ASSERT_NEAR(out[n * dim + d], y[d], 1e-12 * 2.0) << dim << "D node " << n;
-            }
-            // Boundary nodes (here sharing one rotation) move exactly as apply_motion says.
-            for (NodeId n : m.boundary.nodes) {
-                const auto y = moved(dim, m.points, n, rigid);
-                for (int d = 0; d < dim; ++d) ASSERT_EQ(out[n * dim + d], y[d]) << dim << "D node " << n;
-            }
-        }
-    }
-}
-
-TEST(DgIdw, BoundaryNodesMoveExactlyAsApplyMotionSays) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9);
-        const DgIdwPlan plan = prepare_dg_idw(dim, m.points, m.boundary);
-        const BoundaryMotion motion = random_motion(m, 11);
-        const auto out = deform(plan, m.points, motion);
-        for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
-            const auto n = static_cast<std::size_t>(m.boundary.nodes[b]);
-            const auto y = m.boundary.moving[b] ? moved(dim, m.points, n, motion[b])
-                                                : std::vector<double>(m.points.begin() + n * dim,
-                                                                      m.points.begin() + (n + 1) * dim);
-            for (int d = 0; d < dim; ++d) ASSERT_EQ(out[n * dim + d], y[d]) << "boundary node " << n;
-        }
-        // Volume nodes moved, and stayed finite.
-        double largest = 0;
-        for (NodeId n : m.volume)
-            for (int d = 0; d < dim; ++d) {
-                ASSERT_TRUE(std::isfinite(out[n * dim + d]));
-                largest = std::max(largest, std::abs(out[n * dim + d] - m.points[n * dim + d]));
-            }
-        EXPECT_GT(largest, 1e-3);
-    }
-}
-
-TEST(DgIdw, OneAndTwoThreadsGiveTheSameBits) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 60 : 15);
-        const BoundaryMotion motion = random_motion(m, 12);
-        const int threads = num_threads();
-        set_num_threads(1);
-        const DgIdwPlan plan1 = prepare_dg_idw(dim, m.points, m.boundary);
-        const auto out1 = deform(plan1, m.points, motion);
-        set_num_threads(2);
-        const DgIdwPlan plan2 = prepare_dg_idw(dim, m.points, m.boundary);
-        const auto out2 = deform(plan2, m.points, motion);
-        set_num_threads(threads);
-        EXPECT_EQ(plan1.node_coefficients, plan2.node_coefficients);
-        EXPECT_EQ(std::memcmp(out1.data(), out2.data(), out1.size() * sizeof(double)), 0) << dim << "D";
-    }
-}
-
-TEST(DgIdw, DeformingInPlaceEqualsDeformingIntoAnotherArray) {
-    const BoxInBox m = box_in_box(3, 9);
-    const DgIdwPlan plan = prepare_dg_idw(3, m.points, m.boundary);
-    const BoundaryMotion motion = random_motion(m, 13);
-    const auto out = deform(plan, m.points, motion);
-    std::vector<double> in_place = m.points;
-    deform_dg_idw(plan, in_place, motion, in_place);
-    EXPECT_EQ(in_place, out);
-}
 
 // ---- One simplex, every moving/static combination, METHODS.md's formula by hand ----
 

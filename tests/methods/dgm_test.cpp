@@ -5,19 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <random>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "support/box_in_box.hpp"
 
 using namespace dgwarp;
 using dgwarp::test::all_moving;
 using dgwarp::test::box_in_box;
 using dgwarp::test::BoxInBox;
-using dgwarp::test::moved;
-using dgwarp::test::random_motion;
 
 namespace {
 
@@ -118,60 +114,6 @@ TEST(DgmPrepare, BarycentricCoordinatesOfOneTriangleAreItsAreaRatios) {
     EXPECT_NEAR(out[7], 0.5 + 0.5, 1e-15);
 }
 
-TEST(DgmDeform, ZeroMotionIsTheIdentityBitForBit) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9, 3.7);
-        const DgmPlan plan = prepare_dgm(dim, m.points, m.boundary);
-        DgmStepReport report;
-        const auto out = deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size()), {}, &report);
-        EXPECT_EQ(std::memcmp(out.data(), m.points.data(), out.size() * sizeof(double)), 0) << dim << "D";
-        EXPECT_EQ(report.invalid_simplices, 0);
-        EXPECT_EQ(report.substeps, 1);
-    }
-}
-
-TEST(DgmDeform, BoundaryNodesMoveExactlyAsApplyMotionSays) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9);
-        const DgmPlan plan = prepare_dgm(dim, m.points, m.boundary);
-        const BoundaryMotion motion = random_motion(m, 11, 0.01);
-        const auto out = deform(plan, m.points, motion);
-        for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
-            const auto n = static_cast<std::size_t>(m.boundary.nodes[b]);
-            const auto y = m.boundary.moving[b] ? moved(dim, m.points, n, motion[b])
-                                                : std::vector<double>(m.points.begin() + n * dim,
-                                                                      m.points.begin() + (n + 1) * dim);
-            for (int d = 0; d < dim; ++d) ASSERT_EQ(out[n * dim + d], y[d]) << "boundary node " << n;
-        }
-        double largest = 0;
-        for (NodeId n : m.volume)
-            for (int d = 0; d < dim; ++d) {
-                ASSERT_TRUE(std::isfinite(out[n * dim + d]));
-                largest = std::max(largest, std::abs(out[n * dim + d] - m.points[n * dim + d]));
-            }
-        EXPECT_GT(largest, 1e-3);
-    }
-}
-
-TEST(DgmDeform, ARigidMotionOfEveryBoundaryNodeMovesEveryNodeRigidly) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = all_moving(box_in_box(dim, dim == 2 ? 24 : 9, 2.0));
-        const DgmPlan plan = prepare_dgm(dim, m.points, m.boundary);
-        // A rigid motion never inverts a simplex, whatever the angle (here up to 2.7 rad).
-        for (const Vec3 w : {Vec3{0.3, -0.2, 0.5}, Vec3{1.1, 0.9, -1.7}, Vec3{0, 0, 2.7}}) {
-            NodeMotion rigid{{0.3, -0.7, 0.2}, w, {0.9, 1.3, 0.4}};
-            if (dim == 2) rigid.rotation[0] = rigid.rotation[1] = 0;
-            DgmStepReport report;
-            const auto out = deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size(), rigid), {}, &report);
-            EXPECT_EQ(report.invalid_simplices, 0);
-            for (std::size_t n = 0; n < m.num_points(); ++n) {
-                const auto y = moved(dim, m.points, n, rigid);
-                for (int d = 0; d < dim; ++d) ASSERT_NEAR(out[n * dim + d], y[d], 1e-12 * 2.0) << dim << "D node " << n;
-            }
-        }
-    }
-}
-
 TEST(DgmDeform, AnAffineMotionOfTheBoundaryIsReproducedForEveryVolumeNode) {
     for (int dim : {2, 3}) {
         const BoxInBox m = all_moving(test::jittered(box_in_box(dim, dim == 2 ? 24 : 9, 1.5), 0.01, 8));
@@ -205,38 +147,6 @@ TEST(DgmDeform, NodesOutsideTheHullAreExtrapolatedAndCounted) {
         EXPECT_NEAR(out[2 * n], y[0], 1e-13) << "node " << n;
         EXPECT_NEAR(out[2 * n + 1], y[1], 1e-13) << "node " << n;
     }
-}
-
-TEST(DgmDeform, OneAndTwoThreadsGiveTheSameBits) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 60 : 15);
-        // The inner box turned by 0.3 rad and shifted (per-node random motions
-        // of that size would fold this fine graph).
-        BoundaryMotion motion(m.boundary.nodes.size());
-        for (std::size_t b = 0; b < motion.size(); ++b)
-            if (m.boundary.moving[b])
-                motion[b] = NodeMotion{{0.01, -0.02, 0.01}, {dim == 3 ? 0.1 : 0, dim == 3 ? 0.2 : 0, 0.3}, m.inner_center};
-        const int threads = num_threads();
-        set_num_threads(1);
-        const DgmPlan plan1 = prepare_dgm(dim, m.points, m.boundary);
-        const auto out1 = deform(plan1, m.points, motion);
-        set_num_threads(2);
-        const DgmPlan plan2 = prepare_dgm(dim, m.points, m.boundary);
-        const auto out2 = deform(plan2, m.points, motion);
-        set_num_threads(threads);
-        EXPECT_EQ(plan1.node_barycentric, plan2.node_barycentric);
-        EXPECT_EQ(std::memcmp(out1.data(), out2.data(), out1.size() * sizeof(double)), 0) << dim << "D";
-    }
-}
-
-TEST(DgmDeform, DeformingInPlaceEqualsDeformingIntoAnotherArray) {
-    const BoxInBox m = box_in_box(3, 9);
-    const DgmPlan plan = prepare_dgm(3, m.points, m.boundary);
-    const BoundaryMotion motion = random_motion(m, 13, 0.01);
-    const auto out = deform(plan, m.points, motion);
-    std::vector<double> in_place = m.points;
-    deform_dgm(plan, in_place, motion, in_place);
-    EXPECT_EQ(in_place, out);
 }
 
 TEST(DgmDeform, BoundaryNodesSharingCoordinatesAreOneVertexThatFollowsTheMovingOne) {

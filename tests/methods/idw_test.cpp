@@ -3,11 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <random>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "support/box_in_box.hpp"
 
 using namespace dgwarp;
@@ -66,48 +64,6 @@ std::vector<double> brute_force(const BoxInBox& m, const BoundaryMotion& motion,
 
 }  // namespace
 
-TEST(Idw, ZeroMotionIsTheIdentityBitForBit) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9, 3.7);
-        const IdwPlan plan = prepare_idw(dim, m.points, m.boundary);
-        const auto out = deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size()));
-        EXPECT_EQ(std::memcmp(out.data(), m.points.data(), out.size() * sizeof(double)), 0) << dim << "D";
-    }
-}
-
-TEST(Idw, ARigidMotionOfEveryMarkerMovesEveryNodeRigidly) {
-    for (int dim : {2, 3}) {
-        BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9, 2.0);
-        std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), std::uint8_t{1});
-        const IdwPlan plan = prepare_idw(dim, m.points, m.boundary);
-        for (const Vec3 w : {Vec3{0.3, -0.2, 0.5}, Vec3{1.1, 0.9, -1.7}}) {
-            NodeMotion rigid{{0.3, -0.7, 0.2}, w, {0.9, 1.3, 0.4}};
-            if (dim == 2) rigid.rotation[0] = rigid.rotation[1] = 0;
-            const auto out = deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size(), rigid));
-            for (std::size_t n = 0; n < m.num_points(); ++n) {
-                const auto y = moved(dim, m.points, n, rigid);
-                for (int d = 0; d < dim; ++d) ASSERT_NEAR(out[n * dim + d], y[d], 2e-12) << dim << "D node " << n;
-            }
-        }
-    }
-}
-
-TEST(Idw, BoundaryNodesMoveExactlyAsApplyMotionSays) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 24 : 9);
-        const IdwPlan plan = prepare_idw(dim, m.points, m.boundary);
-        const BoundaryMotion motion = random_motion(m, 11);
-        const auto out = deform(plan, m.points, motion);
-        for (std::size_t b = 0; b < m.boundary.nodes.size(); ++b) {
-            const auto n = static_cast<std::size_t>(m.boundary.nodes[b]);
-            const auto y = m.boundary.moving[b] ? moved(dim, m.points, n, motion[b])
-                                                : std::vector<double>(m.points.begin() + n * dim,
-                                                                      m.points.begin() + (n + 1) * dim);
-            for (int d = 0; d < dim; ++d) ASSERT_EQ(out[n * dim + d], y[d]) << "boundary node " << n;
-        }
-    }
-}
-
 TEST(Idw, MatchesABruteForceSumOverAllBoundaryNodes) {
     // Default exponents (3, 5: odd, the square-root path), even ones, and
     // non-integer ones (the std::pow path); auto and explicit L.
@@ -154,31 +110,6 @@ TEST(Idw, WithAutoLengthScaleTheResultDoesNotDependOnTheUnit) {
         const auto big_out = deform(prepare_idw(dim, big.points, big.boundary), big.points, big_motion);
         for (std::size_t i = 0; i < out.size(); ++i) ASSERT_NEAR(big_out[i] / 1000, out[i], 1e-12) << i;
     }
-}
-
-TEST(Idw, OneAndTwoThreadsGiveTheSameBits) {
-    for (int dim : {2, 3}) {
-        const BoxInBox m = box_in_box(dim, dim == 2 ? 61 : 15);  // volume counts not multiples of the lane count
-        const IdwPlan plan = prepare_idw(dim, m.points, m.boundary);
-        const BoundaryMotion motion = random_motion(m, 12);
-        const int threads = num_threads();
-        set_num_threads(1);
-        const auto out1 = deform(plan, m.points, motion);
-        set_num_threads(2);
-        const auto out2 = deform(plan, m.points, motion);
-        set_num_threads(threads);
-        EXPECT_EQ(std::memcmp(out1.data(), out2.data(), out1.size() * sizeof(double)), 0) << dim << "D";
-    }
-}
-
-TEST(Idw, DeformingInPlaceEqualsDeformingIntoAnotherArray) {
-    const BoxInBox m = box_in_box(3, 9);
-    const IdwPlan plan = prepare_idw(3, m.points, m.boundary);
-    const BoundaryMotion motion = random_motion(m, 13);
-    const auto out = deform(plan, m.points, motion);
-    std::vector<double> in_place = m.points;
-    deform_idw(plan, in_place, motion, in_place);
-    EXPECT_EQ(in_place, out);
 }
 
 TEST(Idw, AVolumeNodeOnABoundaryNodeTakesItsMotion) {

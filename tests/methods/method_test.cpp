@@ -1,14 +1,13 @@
-// The common interface: every method is reachable by name and behaves like
-// its own functions.
+// The common interface: every method is reachable by name, and plan
+// summaries mean the same for every method. (What every method does through
+// the interface: method_properties_test.cpp.)
 #include "dgwarp/methods/method.hpp"
 
 #include <gtest/gtest.h>
 
-#include <limits>
-
-#include "dgwarp/core/error.hpp"
-
+#include "dgwarp/io/plan_file.hpp"
 #include "support/box_in_box.hpp"
+#include "support/test_paths.hpp"
 
 using namespace dgwarp;
 
@@ -21,53 +20,29 @@ TEST(Method, NamesRoundTrip) {
     EXPECT_FALSE(method_from_name("spring").has_value());
 }
 
-TEST(Method, EveryMethodFollowsTheBoundaryAndKeepsZeroMotionTheIdentity) {
-    const auto m = test::box_in_box(2, 12);
-    for (Method method : all_methods) {
-        SCOPED_TRACE(std::string(method_name(method)));
-        const Plan plan = prepare(method, m.dim, m.points, m.boundary);
-        EXPECT_EQ(plan_method(plan), method);
-        EXPECT_GT(plan_memory_bytes(plan), 0u);
-        std::vector<double> out(m.points.size());
-        deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size()), out);
-        EXPECT_EQ(out, m.points);
+TEST(Method, PlanSummariesCountTheSameGraphAlikeForEveryMethod) {
+    // DG-IDW and DGM build the same Delaunay graph and locate the same nodes
+    // in it: the same whole graph and the same simplices holding a volume
+    // node (the simplices inside the inner box hold none). A DG-IDW plan keeps
+    // only the latter, so once saved and loaded it no longer knows the former.
+    for (int dim : {2, 3}) {
+        const test::BoxInBox m = test::box_in_box(dim, dim == 2 ? 12 : 6);
+        const PlanSummary dg_idw = plan_summary(prepare(Method::dg_idw, dim, m.points, m.boundary));
+        const PlanSummary dgm = plan_summary(prepare(Method::dgm, dim, m.points, m.boundary));
+        ASSERT_TRUE(dg_idw.graph_simplices.has_value());
+        EXPECT_EQ(dg_idw.graph_simplices, dgm.graph_simplices) << dim << "D";
+        EXPECT_EQ(dg_idw.graph_simplices_used, dgm.graph_simplices_used) << dim << "D";
+        EXPECT_GT(dgm.graph_simplices_used, 0);
+        EXPECT_LT(dgm.graph_simplices_used, *dgm.graph_simplices) << dim << "D";
 
-        BoundaryMotion motion(m.boundary.nodes.size());
-        for (std::size_t b = 0; b < motion.size(); ++b)
-            if (m.boundary.moving[b]) motion[b].translation = {0.01, -0.02, 0};
-        deform(plan, m.points, motion, out);
-        for (std::size_t b = 0; b < motion.size(); ++b) {
-            const NodeId n = m.boundary.nodes[b];
-            double expected[2];
-            apply_motion(motion[b], std::span(m.points).subspan(2 * n, 2), expected);
-            EXPECT_NEAR(out[2 * n], expected[0], 1e-12);
-            EXPECT_NEAR(out[2 * n + 1], expected[1], 1e-12);
-        }
-    }
-}
+        const auto file = test::scratch_dir() / "plan";
+        save_plan(file, prepare(Method::dg_idw, dim, m.points, m.boundary));
+        const PlanSummary loaded = plan_summary(load_plan(file));
+        EXPECT_FALSE(loaded.graph_simplices.has_value());
+        EXPECT_EQ(loaded.graph_simplices_used, dg_idw.graph_simplices_used);
 
-TEST(Method, EveryMethodRefusesBadStepArraysNamingTheNode) {
-    // One check for all methods (check_step_arrays): sizes, and a motion that
-    // is not finite, with the node id in the error.
-    const auto m = test::box_in_box(2, 12);
-    for (Method method : all_methods) {
-        SCOPED_TRACE(std::string(method_name(method)));
-        const Plan plan = prepare(method, m.dim, m.points, m.boundary);
-        std::vector<double> out(m.points.size());
-        BoundaryMotion motion(m.boundary.nodes.size());
-        EXPECT_THROW(deform(plan, m.points, BoundaryMotion(3), out), MeshError);
-        std::vector<double> short_out(out.size() - 2);
-        EXPECT_THROW(deform(plan, m.points, motion, short_out), MeshError);
-        std::size_t b = 0;
-        while (!m.boundary.moving[b]) ++b;
-        motion[b].rotation[2] = std::numeric_limits<double>::infinity();
-        try {
-            deform(plan, m.points, motion, out);
-            ADD_FAILURE() << "a non-finite motion was accepted";
-        } catch (const MeshError& e) {
-            EXPECT_NE(std::string(e.what()).find("boundary node " + std::to_string(m.boundary.nodes[b])),
-                      std::string::npos)
-                << e.what();
-        }
+        const PlanSummary idw = plan_summary(prepare(Method::idw, dim, m.points, m.boundary));
+        EXPECT_EQ(idw.graph_simplices, 0);
+        EXPECT_EQ(idw.graph_simplices_used, 0);
     }
 }

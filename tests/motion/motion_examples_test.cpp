@@ -30,16 +30,9 @@ std::vector<std::filesystem::path> example_files() {
     return files;
 }
 
-/// The SU2 mesh, or nullopt when it or the SU2 reader is not available.
-std::optional<Mesh> load_mesh(const std::string& name) {
-    const auto path = test::su2_meshes_dir() / name;
-    if (!std::filesystem::exists(path)) return std::nullopt;
-    try {
-        return read_mesh(path);
-    } catch (const FormatError&) {
-        return std::nullopt;  // the SU2 reader is not built in this tree
-    }
-}
+/// The real SU2 mesh `name` (tests call DGWARP_REQUIRE_SHARED_MESHES first:
+/// a reader error fails the test).
+Mesh load_mesh(const std::string& name) { return read_mesh(test::su2_meshes_dir() / name); }
 
 const std::string naca0012 = "deformation_naca0012_mesh_NACA0012_inv.su2";
 const std::string brick = "deformation_brick_hex_mesh_brick_hex_ffd.su2";
@@ -81,12 +74,10 @@ TEST(MotionExamples, EveryExampleParses) {
 }
 
 TEST(MotionExamples, EveryExampleResolvesOnItsMesh) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     std::map<std::string, Mesh> meshes;
-    for (const std::string& name : {naca0012, brick_mesh("hex"), brick_mesh("prism"), brick_mesh("pyra"), brick_mesh("tets")}) {
-        auto m = load_mesh(name);
-        if (!m) GTEST_SKIP() << "SU2 meshes or SU2 reader not available";
-        meshes.emplace(name, std::move(*m));
-    }
+    for (const std::string& name : {naca0012, brick_mesh("hex"), brick_mesh("prism"), brick_mesh("pyra"), brick_mesh("tets")})
+        meshes.emplace(name, load_mesh(name));
     for (const auto& f : example_files()) {
         SCOPED_TRACE(f.filename().string());
         const Mesh& mesh = meshes.at(mesh_of_example(f.filename().string()));
@@ -106,14 +97,14 @@ TEST(MotionExamples, EveryExampleResolvesOnItsMesh) {
 }
 
 TEST(MotionExamples, RotatedAirfoilStaysRigid) {
-    const auto mesh = load_mesh(naca0012);
-    if (!mesh) GTEST_SKIP() << "SU2 mesh or SU2 reader not available";
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const Mesh mesh = load_mesh(naca0012);
     const MotionSpec spec = read_motion_file(examples_dir() / "airfoil_rotate.json");
-    const ResolvedBoundary rb = resolve_boundary(*mesh, spec);
-    const auto airfoil = marker_nodes(find_marker(*mesh, "airfoil"));
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec);
+    const auto airfoil = marker_nodes(find_marker(mesh, "airfoil"));
     EXPECT_EQ(std::count(rb.boundary.moving.begin(), rb.boundary.moving.end(), 1),
               static_cast<std::ptrdiff_t>(airfoil.size()));
-    const auto p = moved_boundary_points(*mesh, rb.boundary, resolve_frame(*mesh, spec, rb, 0).motion);
+    const auto p = moved_boundary_points(mesh, rb.boundary, resolve_frame(mesh, spec, rb, 0).motion);
     // Distances between moved airfoil nodes equal the original ones.
     std::vector<std::size_t> slots;
     for (NodeId n : airfoil)
@@ -121,7 +112,7 @@ TEST(MotionExamples, RotatedAirfoilStaysRigid) {
             std::lower_bound(rb.boundary.nodes.begin(), rb.boundary.nodes.end(), n) - rb.boundary.nodes.begin()));
     for (std::size_t i = 0; i + 7 < airfoil.size(); i += 7) {
         const auto a = static_cast<std::size_t>(airfoil[i]), b = static_cast<std::size_t>(airfoil[i + 7]);
-        const double d0 = std::hypot(mesh->points[2 * a] - mesh->points[2 * b], mesh->points[2 * a + 1] - mesh->points[2 * b + 1]);
+        const double d0 = std::hypot(mesh.points[2 * a] - mesh.points[2 * b], mesh.points[2 * a + 1] - mesh.points[2 * b + 1]);
         const double d1 = std::hypot(p[2 * slots[i]] - p[2 * slots[i + 7]], p[2 * slots[i] + 1] - p[2 * slots[i + 7] + 1]);
         EXPECT_NEAR(d0, d1, 1e-14);
     }
@@ -130,20 +121,20 @@ TEST(MotionExamples, RotatedAirfoilStaysRigid) {
 // The 3D acceptance case: z_p turns 10° in its plane; under moving_wins its
 // edges, shared with the fixed side faces, turn with it (docs/MOTION.md).
 TEST(MotionExamples, BrickTopRotationTurnsTheSharedEdgesWithTheTop) {
-    const auto mesh = load_mesh(brick);
-    if (!mesh) GTEST_SKIP() << "SU2 mesh or SU2 reader not available";
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const Mesh mesh = load_mesh(brick);
     const MotionSpec spec = read_motion_file(examples_dir() / "brick_rotate_top.json");
     EXPECT_EQ(spec.shared_nodes, SharedNodeRule::moving_wins);
-    const ResolvedBoundary rb = resolve_boundary(*mesh, spec);
-    const auto top = marker_nodes(find_marker(*mesh, "z_p"));
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec);
+    const auto top = marker_nodes(find_marker(mesh, "z_p"));
     std::vector<NodeId> sides;
     for (const char* name : {"x_m", "x_p", "y_m", "y_p"}) {
-        const auto n = marker_nodes(find_marker(*mesh, name));
+        const auto n = marker_nodes(find_marker(mesh, name));
         sides.insert(sides.end(), n.begin(), n.end());
     }
     std::sort(sides.begin(), sides.end());
-    const auto fr = resolve_frame(*mesh, spec, rb, 0);
-    const auto p = moved_boundary_points(*mesh, rb.boundary, fr.motion);
+    const auto fr = resolve_frame(mesh, spec, rb, 0);
+    const auto p = moved_boundary_points(mesh, rb.boundary, fr.motion);
     std::size_t moving = 0, shared = 0;
     for (std::size_t b = 0; b < rb.boundary.nodes.size(); ++b) {
         const NodeId n = rb.boundary.nodes[b];
@@ -155,7 +146,7 @@ TEST(MotionExamples, BrickTopRotationTurnsTheSharedEdgesWithTheTop) {
         EXPECT_NEAR(fr.motion[b].rotation[2], 10 * std::numbers::pi / 180, 1e-15);
         EXPECT_NEAR(p[3 * b + 2], 1.0, 1e-12);  // stays in the plane z = 1
         // and at the same distance from the centre (1, 0.5).
-        const auto x = mesh->points.data() + 3 * static_cast<std::size_t>(n);
+        const auto x = mesh.points.data() + 3 * static_cast<std::size_t>(n);
         EXPECT_NEAR(std::hypot(p[3 * b] - 1, p[3 * b + 1] - 0.5), std::hypot(x[0] - 1, x[1] - 0.5), 1e-14);
     }
     EXPECT_EQ(moving, top.size());
@@ -165,16 +156,16 @@ TEST(MotionExamples, BrickTopRotationTurnsTheSharedEdgesWithTheTop) {
 // The bump files hold dz = 0.1 sin(πx/2) sin(πy) at the coordinates dgwarp reads
 // for their node ids, on every brick mesh.
 TEST(MotionExamples, BrickBumpFilesMatchTheirMeshes) {
+    DGWARP_REQUIRE_SHARED_MESHES();
     for (const std::string& kind : brick_kinds) {
         SCOPED_TRACE(kind);
-        const auto mesh = load_mesh(brick_mesh(kind));
-        if (!mesh) GTEST_SKIP() << "SU2 mesh or SU2 reader not available";
+        const Mesh mesh = load_mesh(brick_mesh(kind));
         const std::string file = kind == "hex" ? "brick_bump_top.json" : "brick_" + kind + "_bump_top.json";
         const MotionSpec spec = read_motion_file(examples_dir() / file);
         const auto& table = std::get<PrescribedDisplacements>(spec.frames.at(0).markers.at("z_p")).displacements;
-        EXPECT_EQ(table.nodes.size(), marker_nodes(find_marker(*mesh, "z_p")).size());
+        EXPECT_EQ(table.nodes.size(), marker_nodes(find_marker(mesh, "z_p")).size());
         for (std::size_t i = 0; i < table.nodes.size(); ++i) {
-            const double* x = mesh->points.data() + 3 * static_cast<std::size_t>(table.nodes[i]);
+            const double* x = mesh.points.data() + 3 * static_cast<std::size_t>(table.nodes[i]);
             EXPECT_NEAR(x[2], 1.0, 1e-15) << "node " << table.nodes[i];
             const double dz = 0.1 * std::sin(std::numbers::pi * x[0] / 2) * std::sin(std::numbers::pi * x[1]);
             EXPECT_NEAR(table.values[i][2], dz, 1e-14) << "node " << table.nodes[i];

@@ -273,6 +273,6 @@ TEST(Untangle, UnfoldsTheTwistedBarAfterTheTwistAndTheRotation) {
     const Plan plan = prepare(Method::dg_idw, 2, mesh.points, b.boundary);
     std::vector<double> points(mesh.points.size());
     deform(plan, mesh.points, motion, points);
-    ASSERT_GT(judge(mesh, points).inverted, 50);
+    ASSERT_NEAR(double(judge(mesh, points).inverted), 151.0, 8.0);  // measured 151
     repair_and_check(mesh, b.boundary.nodes, points);
 }

@@ -5,15 +5,25 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <string_view>
 
 namespace dgwarp::test {
 
 std::filesystem::path source_dir() { return DGWARP_SOURCE_DIR; }
 
-std::filesystem::path su2_meshes_dir() { return std::filesystem::path(DGWARP_SHARED_MESHES) / "su2"; }
+std::filesystem::path su2_meshes_dir() {
+    const char* meshes = std::getenv("DGWARP_SHARED_MESHES");
+    return std::filesystem::path(meshes && *meshes ? meshes : DGWARP_SHARED_MESHES) / "su2";
+}
+
+bool running_in_ci() {
+    const char* ci = std::getenv("CI");
+    return ci && std::string_view(ci) == "true";
+}
 
 std::vector<std::filesystem::path> su2_meshes() {
     std::vector<std::filesystem::path> files;

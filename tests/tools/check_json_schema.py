@@ -6,7 +6,7 @@ Usage: check_json_schema.py SCHEMA_DIR COMMAND [REPORT.json]
 Reads the report from REPORT.json, or from standard input when it is absent
 or "-", and validates it against SCHEMA_DIR/COMMAND.schema.json (JSON Schema
 draft 2020-12) with Debian's python3-jsonschema. The schemas refer to each
-other by their $id (https://schema.dgwarp.invalid/1/NAME.schema.json); every
+other by their $id (https://schema.dgwarp.invalid/2/NAME.schema.json); every
 *.schema.json file in SCHEMA_DIR is loaded, nothing is fetched.
 
 Checks first that every schema in SCHEMA_DIR is itself a valid draft 2020-12

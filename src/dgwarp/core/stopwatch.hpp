@@ -1,5 +1,6 @@
 #pragma once
-// Wall-clock timing of algorithm stages, reported to callers (benchmarks, logs).
+// Wall-clock timing of algorithm stages and of a program's phases, reported
+// to callers (benchmarks, logs, the CLI's reports).
 #include <chrono>
 
 namespace dgwarp {
@@ -10,5 +11,20 @@ using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+/// Times consecutive phases.
+class Stopwatch {
+public:
+    /// Seconds since construction or the last lap(), and restarts.
+    double lap() {
+        const Clock::time_point now = Clock::now();
+        const double s = std::chrono::duration<double>(now - start_).count();
+        start_ = now;
+        return s;
+    }
+
+private:
+    Clock::time_point start_ = Clock::now();
+};
 
 }  // namespace dgwarp

@@ -1,33 +1,45 @@
-// 2D stages of build_located_graph with CGAL's Delaunay_triangulation_2.
+// 2D stages of build_located_graph with CGAL's Delaunay_triangulation_2
+// (the implementation shared with 3D is in triangulate_cgal.hpp).
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/property_map.h>
 
-#include <numeric>
+#include <string>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
-#include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/graph/triangulate_detail.hpp"
+#include "dgwarp/graph/triangulate_cgal.hpp"
 
 namespace dgwarp::detail {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, K>;  // graph vertex id
-using Fb = CGAL::Triangulation_face_base_with_info_2<std::int32_t, K>;    // graph simplex id
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-using Point = K::Point_2;
+struct Plane {
+    static constexpr int dim = 2;
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, Kernel>;  // graph vertex id
+    using Fb = CGAL::Triangulation_face_base_with_info_2<std::int32_t, Kernel>;    // graph simplex id
+    using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vb, Fb>>;
+    using Point = Kernel::Point_2;
+    using Handle = Delaunay::Face_handle;
+    using SortTraits = CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::Pointer_property_map<Point>::type>;
 
-Point point_of(std::span<const double> points, NodeId n) {
-    return {points[2 * static_cast<std::size_t>(n)], points[2 * static_cast<std::size_t>(n) + 1]};
-}
+    static Point point_of(std::span<const double> points, NodeId n) {
+        return {points[2 * static_cast<std::size_t>(n)], points[2 * static_cast<std::size_t>(n) + 1]};
+    }
+    static void check_spans(const Delaunay& dt, std::size_t vertices) {
+        if (dt.dimension() < 2)
+            throw MeshError("the Delaunay graph needs boundary nodes that span the plane, but all " +
+                            std::to_string(vertices) + " distinct boundary points are collinear");
+    }
+    static auto finite_simplices(const Delaunay& dt) { return dt.finite_face_handles(); }
+    static std::size_t finite_simplex_count(const Delaunay& dt) { return dt.number_of_faces(); }
+    static Handle locate(const Delaunay& dt, const Point& p, Delaunay::Locate_type& lt, Handle hint) {
+        int li;
+        return dt.locate(p, lt, li, hint);
+    }
+};
 
 }  // namespace
 
@@ -35,63 +47,7 @@ TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
                                               bool hilbert_order, const ProgressFn& locate_progress) {
-    TriangulationResult result;
-    auto t0 = Clock::now();
-
-    std::vector<std::pair<Point, std::int32_t>> vertices(vertex_node.size());
-    for (std::size_t v = 0; v < vertex_node.size(); ++v)
-        vertices[v] = {point_of(points, vertex_node[v]), static_cast<std::int32_t>(v)};
-    // Range insertion with info: CGAL sorts spatially before inserting.
-    const Delaunay dt(vertices.begin(), vertices.end());
-    if (dt.dimension() < 2)
-        throw MeshError("the Delaunay graph needs boundary nodes that span the plane, but all " +
-                        std::to_string(vertex_node.size()) + " distinct boundary points are collinear");
-
-    result.simplices.reserve(3 * static_cast<std::size_t>(dt.number_of_faces()));
-    std::int32_t next = 0;
-    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-        f->info() = next++;
-        for (int k = 0; k < 3; ++k) result.simplices.push_back(f->vertex(k)->info());
-    }
-    result.timings.triangulate_seconds = seconds_since(t0);
-
-    t0 = Clock::now();
-    std::vector<Point> query(query_nodes.size());
-    for (std::size_t i = 0; i < query.size(); ++i) query[i] = point_of(points, query_nodes[i]);
-    std::vector<std::size_t> order(query.size());  // the property map's key type
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    if (hilbert_order) {
-        using Traits = CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<Point>::type>;
-        CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(query)),
-                           CGAL::Hilbert_sort_median_policy());
-    }
-    result.location.simplex.assign(query.size(), -1);
-    const auto n = static_cast<std::int64_t>(order.size());
-    const std::int64_t blocks = (n + locate_block_size - 1) / locate_block_size;
-    std::vector<std::int64_t> outside(static_cast<std::size_t>(blocks), 0);
-    ProgressCounter located(locate_progress, n);
-    parallel_for(blocks, [&](std::int64_t b) {
-        Delaunay::Face_handle hint;
-        const std::int64_t end = std::min(n, (b + 1) * locate_block_size);
-        for (std::int64_t j = b * locate_block_size; j < end; ++j) {
-            const std::size_t q = order[j];
-            Delaunay::Locate_type lt;
-            int li;
-            Delaunay::Face_handle f = dt.locate(query[q], lt, li, hint);
-            if (dt.is_infinite(f)) {
-                // Outside the hull (or on a hull edge): the finite face across the hull edge.
-                if (lt == Delaunay::OUTSIDE_CONVEX_HULL) ++outside[b];
-                f = f->neighbor(f->index(dt.infinite_vertex()));
-            }
-            result.location.simplex[q] = f->info();
-            hint = f;
-        }
-        located.add(end - b * locate_block_size);
-    }, 1);  // each index is a block of thousands of walks: always worth a thread
-    located.finish();
-    result.location.outside_count = std::accumulate(outside.begin(), outside.end(), std::int64_t{0});
-    result.timings.locate_seconds = seconds_since(t0);
-    return result;
+    return triangulate_and_locate<Plane>(points, vertex_node, query_nodes, hilbert_order, locate_progress);
 }
 
 }  // namespace dgwarp::detail

@@ -1,6 +1,7 @@
 #pragma once
-// Internal: the CGAL stages of build_located_graph, one implementation per
-// dimension (triangulate_2d.cpp, triangulate_3d.cpp). Not part of the API.
+// Internal: the CGAL stages of build_located_graph, one function per
+// dimension (triangulate_2d.cpp, triangulate_3d.cpp), both the one template
+// of triangulate_cgal.hpp. Not part of the API.
 #include <cstdint>
 #include <span>
 #include <vector>

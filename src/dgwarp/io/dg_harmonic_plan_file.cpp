@@ -103,13 +103,16 @@ void save_dg_harmonic(const std::filesystem::path& path, const DgHarmonicPlan& p
     write_plan_file(path, header, [&](auto&& f) { visit_arrays(plan, f); });
 }
 
-DgHarmonicPlan load_dg_harmonic(const PlanSource& source) {
+namespace {
+
+// The header, checked field by field (`raw`: its bytes, which the checksum covers).
+Header read_header(const PlanSource& source, std::vector<std::byte>& raw) {
     const std::filesystem::path path = source.name;
     const std::size_t header_bytes = header_size();
     if (source.size < header_bytes)
         fail(path, 0, "a DG-harmonic plan header of " + std::to_string(header_bytes) + " bytes",
              "a file of " + std::to_string(source.size) + " bytes");
-    std::vector<std::byte> raw(header_bytes);
+    raw.resize(header_bytes);
     source.read(raw.data(), raw.size(), 0);
     Header h;
     std::size_t at = dg_harmonic_magic.size();
@@ -120,30 +123,36 @@ DgHarmonicPlan load_dg_harmonic(const PlanSource& source) {
     for (std::size_t i = 0; i < h.options.size(); ++i)
         if (!std::isfinite(h.options[i])) fail(path, options_at + 8 * i, "a finite option", std::to_string(h.options[i]));
     if (h.shared > 1) fail(path, shared_at, "a shared flag 0 or 1", std::to_string(h.shared));
+    return h;
+}
 
-    DgHarmonicPlan p;
-    p.dim = static_cast<int>(h.dim);
-    p.solve.shared = h.shared == 1;
-    const std::vector<std::uint64_t> off = read_plan_arrays(source, raw, h.counts, [&](auto&& f) { visit_arrays(p, f); });
-
-    // Lengths consistent with each other.
+// The arrays' lengths agree with each other and with num_points.
+void check_array_lengths(const std::filesystem::path& path, const Header& h) {
     const auto& c = h.counts;
     const std::uint64_t corners = h.dim + 1, n = c[perm_at], nnz = c[l_row_at], nb = c[boundary_nodes_at];
     const std::uint64_t points = static_cast<std::uint64_t>(h.num_points);
     const std::uint64_t vertices = c[vertex_motion_at];
-    const bool rotation_ok = p.solve.shared ? c[r_value_at] == 0 && c[r_d_at] == 0 && c[r_weight_at] == 0
-                                            : c[r_value_at] == nnz && c[r_d_at] == n && c[r_weight_at] == c[coupling_vertex_at];
+    const bool rotation_ok = h.shared == 1 ? c[r_value_at] == 0 && c[r_d_at] == 0 && c[r_weight_at] == 0
+                                           : c[r_value_at] == nnz && c[r_d_at] == n && c[r_weight_at] == c[coupling_vertex_at];
     if (h.num_points < 0 || c[boundary_moving_at] != nb || nb > points || c[node_simplex_at] != points ||
         c[node_barycentric_at] != (points - nb) * corners || c[simplices_at] % corners != 0 || c[shared_offsets_at] < 1 ||
         h.num_boundary_vertices < 0 || static_cast<std::uint64_t>(h.num_boundary_vertices) > vertices ||
         n != vertices - static_cast<std::uint64_t>(h.num_boundary_vertices) || c[l_start_at] != n + 1 ||
         c[coupling_start_at] != n + 1 || c[t_value_at] != nnz || c[t_d_at] != n ||
         c[t_weight_at] != c[coupling_vertex_at] || !rotation_ok)
-        fail(path, header_bytes - 8 * num_arrays,
+        fail(path, header_size() - 8 * num_arrays,
              "DG-harmonic array lengths consistent with each other and num_points " + std::to_string(h.num_points),
              "inconsistent lengths");
+}
 
-    // Indices in range, so that deform never reads out of bounds.
+// Indices in range, so that deform never reads out of bounds, and the
+// factor's structure sound (a permutation, nondecreasing column starts, rows
+// below the diagonal, nonzero pivots). `off`: each array's byte offset in the file.
+void check_indices(const std::filesystem::path& path, const DgHarmonicPlan& p, const Header& h,
+                   const std::vector<std::uint64_t>& off) {
+    const auto& c = h.counts;
+    const std::uint64_t corners = h.dim + 1, n = c[perm_at], nnz = c[l_row_at], nb = c[boundary_nodes_at];
+    const std::uint64_t vertices = c[vertex_motion_at];
     const auto num_simplices = static_cast<std::int64_t>(c[simplices_at] / corners);
     const auto nbv = static_cast<std::int64_t>(h.num_boundary_vertices);
     check_boundary_arrays(path,
@@ -178,7 +187,20 @@ DgHarmonicPlan load_dg_harmonic(const PlanSource& source) {
     for (const auto& [d, d_at] : {std::pair{&p.solve.translation.d, off[t_d_at]}, std::pair{&p.solve.rotation.d, off[r_d_at]}})
         for (std::size_t i = 0; i < d->size(); ++i)
             if (!std::isfinite((*d)[i]) || (*d)[i] == 0) fail(path, d_at + 8 * i, "a finite nonzero pivot", std::to_string((*d)[i]));
+}
 
+}  // namespace
+
+DgHarmonicPlan load_dg_harmonic(const PlanSource& source) {
+    const std::filesystem::path path = source.name;
+    std::vector<std::byte> raw;
+    const Header h = read_header(source, raw);
+    DgHarmonicPlan p;
+    p.dim = static_cast<int>(h.dim);
+    p.solve.shared = h.shared == 1;
+    const std::vector<std::uint64_t> off = read_plan_arrays(source, raw, h.counts, [&](auto&& f) { visit_arrays(p, f); });
+    check_array_lengths(path, h);
+    check_indices(path, p, h, off);
     p.mesh = {h.num_points, h.points_hash, h.boundary_hash};
     p.options = {h.options[0], h.options[1], h.options[2], h.options[3], h.options[4], h.options[5]};
     p.num_boundary_vertices = h.num_boundary_vertices;

@@ -14,12 +14,6 @@ namespace dgwarp {
 
 namespace {
 
-std::string number_text(double v) {
-    std::ostringstream s;
-    write_number(s, v);
-    return s.str();
-}
-
 void read_sections(TextReader& r, msh::GmshContent& c) {
     if (!r.next_nonblank_line()) r.fail("$MeshFormat (a Gmsh .msh file)", "end of file");
     if (trim(r.line()) != "$MeshFormat") r.fail("$MeshFormat on the first line (a Gmsh .msh file)", trim(r.line()));

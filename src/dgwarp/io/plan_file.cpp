@@ -80,8 +80,11 @@ constexpr std::size_t header_size() {
 }
 constexpr std::size_t header_bytes = header_size();
 static_assert(header_bytes == 8 + 3 * 4 + 11 * 8 + num_arrays * 8);
-// Byte offset of a_translation (the options follow one another).
+// Byte offsets of auto_length_scale, of a_translation (the options follow
+// one another) and of the array counts.
+constexpr std::size_t auto_length_scale_at = 8 + 3 * 4 + 3 * 8;
 constexpr std::size_t options_at = 8 + 3 * 4 + 8 * 8;
+constexpr std::size_t counts_at = header_bytes - 8 * num_arrays;
 
 // The plan's arrays in file order, as (bytes, element size) views.
 template <class Plan, class F>
@@ -132,23 +135,20 @@ void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) 
 
 namespace {
 
-DgIdwPlan load_dg_idw(const PlanSource& source) {
+// The header of a plan file, checked field by field (`raw`: its bytes, which
+// the checksum covers).
+Header read_header(const PlanSource& source, std::array<std::byte, header_bytes>& raw) {
     const std::filesystem::path path = source.name;  // names the plan in errors
-    const std::uint64_t file_size = source.size;
-    const auto& read = source.read;
-
-    // Header.
-    if (file_size < header_bytes)
+    if (source.size < header_bytes)
         fail(path, 0, "a plan header of " + std::to_string(header_bytes) + " bytes",
-             "a file of " + std::to_string(file_size) + " bytes");
-    std::array<std::byte, header_bytes> header_raw;
-    read(header_raw.data(), header_raw.size(), 0);
-    if (std::memcmp(header_raw.data(), magic.data(), magic.size()) != 0)
+             "a file of " + std::to_string(source.size) + " bytes");
+    source.read(raw.data(), raw.size(), 0);
+    if (std::memcmp(raw.data(), magic.data(), magic.size()) != 0)
         fail(path, 0, "the plan file signature DGWPLAN", "another file type");
     Header h;
     std::size_t at = magic.size();
     visit_header(h, [&](auto& v) {
-        std::memcpy(&v, header_raw.data() + at, sizeof v);
+        std::memcpy(&v, raw.data() + at, sizeof v);
         at += sizeof v;
     });
     if (h.version != format_version)
@@ -164,29 +164,30 @@ DgIdwPlan load_dg_idw(const PlanSource& source) {
     if (!std::isfinite(h.length_scale) || h.length_scale < 0)
         fail(path, options_at + 16, "a length_scale >= 0 (0 = auto)", std::to_string(h.length_scale));
     if (!std::isfinite(h.auto_length_scale) || h.auto_length_scale < 0)
-        fail(path, options_at - 40, "an auto length scale >= 0", std::to_string(h.auto_length_scale));
+        fail(path, auto_length_scale_at, "an auto length scale >= 0", std::to_string(h.auto_length_scale));
+    return h;
+}
 
-    DgIdwPlan plan;
-    plan.dim = static_cast<int>(h.dim);
-    plan.options = {.a_translation = h.a_translation,
-                    .a_rotation = h.a_rotation,
-                    .length_scale = h.length_scale,
-                    .weighting = static_cast<DgIdwWeighting>(h.weighting)};
-    const std::vector<std::uint64_t> offsets =
-        plan_detail::read_plan_arrays(source, header_raw, h.counts, [&](auto&& f) { visit_arrays(plan, f); });
+// The arrays' lengths agree with each other and with num_points.
+void check_array_lengths(const std::filesystem::path& path, const Header& h) {
     const std::uint64_t corners = h.dim + 1;
     const auto& c = h.counts;
     const std::uint64_t n = static_cast<std::uint64_t>(h.num_points);
     if (h.num_points < 0 || c[boundary_moving_at] != c[boundary_nodes_at] || c[node_simplex_at] != n ||
         c[boundary_nodes_at] > n || c[simplex_motion_at] % corners != 0 || c[shared_offsets_at] < 1 ||
         c[node_coefficients_at] != (n - c[boundary_nodes_at]) * corners)
-        fail(path, header_bytes - 8 * num_arrays,
-             "array lengths consistent with each other and num_points " + std::to_string(h.num_points),
+        fail(path, counts_at, "array lengths consistent with each other and num_points " + std::to_string(h.num_points),
              "inconsistent lengths");
+}
 
-    // Indices must be in range, so a plan deforms without reading out of bounds.
-    const auto num_boundary = static_cast<std::int64_t>(c[boundary_nodes_at]);
-    const auto num_simplices = static_cast<std::int64_t>(c[simplex_motion_at] / corners);
+// Every index in range, so that a plan deforms without reading out of bounds,
+// and each simplex row with its moving corners first. `offsets`: each array's
+// byte offset in the file (for the messages).
+void check_indices(const std::filesystem::path& path, const DgIdwPlan& plan, const Header& h,
+                   const std::vector<std::uint64_t>& offsets) {
+    const std::uint64_t corners = h.dim + 1;
+    const auto num_boundary = static_cast<std::int64_t>(h.counts[boundary_nodes_at]);
+    const auto num_simplices = static_cast<std::int64_t>(h.counts[simplex_motion_at] / corners);
     plan_detail::check_boundary_arrays(
         path,
         {plan.boundary_nodes, plan.boundary_moving, plan.node_simplex, plan.shared_offsets, plan.shared_members,
@@ -199,6 +200,23 @@ DgIdwPlan load_dg_idw(const PlanSource& source) {
         if (k % corners != 0 && plan.simplex_motion[k] >= 0 && plan.simplex_motion[k - 1] < 0)
             fail(path, offsets[simplex_motion_at] + 4 * k, "the moving corners first in each simplex row",
                  "a moving corner after a static one");
+}
+
+DgIdwPlan load_dg_idw(const PlanSource& source) {
+    const std::filesystem::path path = source.name;  // names the plan in errors
+    std::array<std::byte, header_bytes> header_raw;
+    const Header h = read_header(source, header_raw);
+
+    DgIdwPlan plan;
+    plan.dim = static_cast<int>(h.dim);
+    plan.options = {.a_translation = h.a_translation,
+                    .a_rotation = h.a_rotation,
+                    .length_scale = h.length_scale,
+                    .weighting = static_cast<DgIdwWeighting>(h.weighting)};
+    const std::vector<std::uint64_t> offsets =
+        plan_detail::read_plan_arrays(source, header_raw, h.counts, [&](auto&& f) { visit_arrays(plan, f); });
+    check_array_lengths(path, h);
+    check_indices(path, plan, h, offsets);
     plan.mesh = {h.num_points, h.points_hash, h.boundary_hash};
     plan.auto_length_scale = h.auto_length_scale;
     plan.stats.outside_count = h.outside_count;

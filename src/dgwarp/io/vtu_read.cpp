@@ -23,12 +23,6 @@ constexpr std::int64_t max_node_count = std::numeric_limits<NodeId>::max();
 
 std::string str(std::int64_t v) { return std::to_string(v); }
 
-std::string number_text(double v) {
-    std::ostringstream s;
-    write_number(s, v);
-    return s.str();
-}
-
 /// A VTK cell type dgwarp reads: its CellType and, for VTK's pixel and voxel
 /// (axis-aligned quad and hexahedron numbered in lexicographic order), the
 /// permutation to the usual node order.

@@ -20,11 +20,21 @@
 //   s = sum_moving a L^2 u_k^2 s_k / (a L^2 P + L Q) = sigma sum_moving qhat_k s_k,
 //   qhat_k = u_k^2 / P,  rho = Q / P,  sigma = 1 / (1 + rho / (a L)).
 // The plan stores one number per corner: qhat_k for a moving corner and
-// -m u_k / P for a static one (so rho = -sum of the static slots). At deform
-// time, a and L enter only through sigma: they stay options of each step, the
+// -m u_k / P for a static one (so rho = -sum of the static slots). a and L
+// enter only through sigma, which deform computes from the plan's options
+// (DgIdwPlan::options; with L = auto, the L prepare computed,
+// DgIdwPlan::auto_length_scale): the coefficients do not depend on them, the
 // kernel needs no moving/static branch per corner, and the centre
 // c = sum_moving qhat_k c_k needs no division. Storing finished weights for
 // the two values of a instead would double the per-node plan size.
+//
+// Continuous weighting (DgIdwWeighting::continuous) multiplies each corner's
+// u_k^2 and u_k by the node's barycentric coordinate e_k of that corner
+// (clamped at 0) and sets m = 1: P = sum_moving e_k u_k^2, qhat_k =
+// e_k u_k^2 / P. The centre takes the same qhat_k, so its weights are the
+// moving corners' e_k u_k^2, normalised to sum to 1 over the moving corners
+// (a moving corner with e_k = 0, on the far side of the node's face, has no
+// say in the centre either); the formulas above are otherwise unchanged.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -58,8 +68,9 @@ struct DgIdwOptions {
     double a_translation = 7.0;  // a for the translation components (paper: 7)
     double a_rotation = 1.4;     // a for the rotation-vector components (paper: 1.4)
     /// L, the length distances are divided by. 1 reproduces the paper's
-    /// formula (which is not scale invariant); 0 = auto (DgIdwPlan::auto_length_scale),
-    /// computed at prepare time.
+    /// formula (which is not scale invariant); 0 = auto: prepare computes L
+    /// from the boundary and the a's (DgIdwPlan::auto_length_scale), the plan
+    /// keeps 0 here and deform uses that L.
     double length_scale = 1.0;
     /// Corner weights.
     DgIdwWeighting weighting = DgIdwWeighting::paper;
@@ -74,6 +85,8 @@ struct DgIdwPrepareStats {
     std::int64_t snapped_count = 0;  // volume nodes on a graph vertex (they take its motion)
     std::int64_t shared_vertex_count = 0;  // graph vertices standing for several boundary nodes
     std::int64_t graph_vertex_count = 0;   // distinct boundary points
+    std::int64_t graph_simplex_count = 0;  // simplices of the Delaunay graph (0 in a loaded plan, which keeps
+                                           //   only those holding a volume node: see simplex_motion)
     double graph_seconds = 0;    // Delaunay graph (0 in a loaded plan)
     double locate_seconds = 0;   // point location (0 in a loaded plan)
     double weights_seconds = 0;  // coefficients and fingerprint (0 in a loaded plan)
@@ -122,8 +135,10 @@ struct DgIdwPlan {
     /// num_volume_nodes × (dim + 1), in ascending node-id order of the volume
     /// nodes: per simplex corner, qhat_k (moving) or -m u_k / P (static), see
     /// above; with continuous weighting u_k^2 and m u_k are multiplied by the
-    /// node's barycentric coordinate e_k (clamped at 0), and m = 1. All zero when no corner moves; a node on a graph vertex has 1
-    /// for that corner if it moves, and 0 everywhere else.
+    /// node's barycentric coordinate e_k (clamped at 0), and m = 1 (also the
+    /// centre's weights: see the file comment). All zero when no corner
+    /// moves; a node on a graph vertex has 1 for that corner if it moves, and
+    /// 0 everywhere else.
     std::vector<double> node_coefficients;
     DgIdwPrepareStats stats;
 

@@ -8,11 +8,10 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/barycentric.hpp"
-#include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/methods/boundary_graph.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
-#include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 
 namespace dgwarp {
@@ -114,22 +113,16 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     const double moving_diagonal = boundary_diagonal(dim, points, boundary, true);
     const double all_diagonal = boundary_diagonal(dim, points, boundary, false);
 
-    // Volume nodes: every node not in the (sorted) boundary list.
-    const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
-
-    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume, {}, progress_part(progress, 0, 0.9));
-    plan.stats.graph_seconds = lg.timings.triangulate_seconds;
-    plan.stats.locate_seconds = lg.timings.locate_seconds;
-    plan.stats.outside_count = lg.location.outside_count;
+    BoundaryGraph bg =
+        prepare_boundary_graph(plan, dim, points, boundary, num_points, progress_part(progress, 0, 0.9));
+    const std::vector<NodeId>& volume = bg.volume;
+    LocatedGraph& lg = bg.located;
+    const std::vector<std::int32_t>& vertex_motion = bg.vertex_motion.vertex_motion;
 
     const auto t0 = Clock::now();
     const DelaunayGraph& g = lg.graph;
-    GraphVertexMotion vm = graph_vertex_motion(g, boundary.moving);
-    const std::vector<std::int32_t>& vertex_motion = vm.vertex_motion;
-    plan.shared_offsets = std::move(vm.shared_offsets);
-    plan.shared_members = std::move(vm.shared_members);
-    plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
     plan.stats.graph_vertex_count = static_cast<std::int64_t>(g.num_vertices());
+    plan.stats.graph_simplex_count = static_cast<std::int64_t>(g.num_simplices());
 
     // Auto length scale (dg_idw.hpp): the moving boundary's size, but small
     // enough that the zone following the moving boundary, a L, fits in the gap.

@@ -5,10 +5,9 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/barycentric.hpp"
-#include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/methods/boundary_graph.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/dgm_detail.hpp"
-#include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 
 namespace dgwarp {
@@ -49,20 +48,14 @@ DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& 
     plan.dim = dim;
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
-    const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
-
-    LocatedGraph lg = build_located_graph(dim, points, boundary.nodes, volume, {}, progress_part(progress, 0, 0.9));
-    plan.stats.graph_seconds = lg.timings.triangulate_seconds;
-    plan.stats.locate_seconds = lg.timings.locate_seconds;
-    plan.stats.outside_count = lg.location.outside_count;
+    BoundaryGraph bg =
+        prepare_boundary_graph(plan, dim, points, boundary, num_points, progress_part(progress, 0, 0.9));
+    const std::vector<NodeId>& volume = bg.volume;
+    LocatedGraph& lg = bg.located;
+    plan.vertex_motion = std::move(bg.vertex_motion.vertex_motion);
 
     const auto t0 = Clock::now();
     const DelaunayGraph& g = lg.graph;
-    GraphVertexMotion vm = graph_vertex_motion(g, boundary.moving);
-    plan.vertex_motion = std::move(vm.vertex_motion);
-    plan.shared_offsets = std::move(vm.shared_offsets);
-    plan.shared_members = std::move(vm.shared_members);
-    plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
 
     std::vector<NodeId> vertex_node(g.num_vertices());
     for (std::size_t v = 0; v < vertex_node.size(); ++v) vertex_node[v] = boundary.nodes[g.vertex_nodes[g.vertex_offsets[v]]];

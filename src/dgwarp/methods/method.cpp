@@ -1,5 +1,7 @@
 #include "dgwarp/methods/method.hpp"
 
+#include <algorithm>
+
 namespace dgwarp {
 
 namespace {
@@ -9,6 +11,16 @@ struct overloaded : F... {
 };
 template <class... F>
 overloaded(F...) -> overloaded<F...>;
+
+// How many distinct graph simplices the nodes lie in (node_simplex: a
+// simplex >= 0 per volume node, < 0 for a boundary node).
+std::int64_t simplices_holding_a_node(const std::vector<std::int32_t>& node_simplex) {
+    std::vector<std::int32_t> s;
+    for (std::int32_t k : node_simplex)
+        if (k >= 0) s.push_back(k);
+    std::sort(s.begin(), s.end());
+    return std::unique(s.begin(), s.end()) - s.begin();
+}
 }  // namespace
 
 std::string_view method_name(Method m) {
@@ -103,8 +115,11 @@ std::size_t plan_memory_bytes(const Plan& plan) {
 PlanSummary plan_summary(const Plan& plan) {
     PlanSummary s;
     std::visit(overloaded{[&](const DgIdwPlan& p) {
-                              // The plan keeps only the simplices that hold a volume node.
-                              s.graph_simplices = static_cast<std::int64_t>(p.simplex_motion.size()) / (p.dim + 1);
+                              // The plan keeps only the simplices that hold a volume node;
+                              // the graph's count is known to the plan prepare built.
+                              if (p.stats.graph_simplex_count > 0) s.graph_simplices = p.stats.graph_simplex_count;
+                              else s.graph_simplices.reset();
+                              s.graph_simplices_used = static_cast<std::int64_t>(p.simplex_motion.size()) / (p.dim + 1);
                               s.outside_hull = p.stats.outside_count;
                               s.shared_vertices = p.stats.shared_vertex_count;
                               if (p.stats.graph_seconds > 0 || p.stats.locate_seconds > 0)
@@ -114,6 +129,7 @@ PlanSummary plan_summary(const Plan& plan) {
                           },
                           [&](const DgmPlan& p) {
                               s.graph_simplices = static_cast<std::int64_t>(p.simplices.size()) / (p.dim + 1);
+                              s.graph_simplices_used = simplices_holding_a_node(p.node_simplex);
                               s.outside_hull = p.stats.outside_count;
                               s.shared_vertices = p.stats.shared_vertex_count;
                               s.phase_seconds = {{"graph", p.stats.graph_seconds},
@@ -127,6 +143,7 @@ PlanSummary plan_summary(const Plan& plan) {
                           },
                           [&](const DgHarmonicPlan& p) {
                               s.graph_simplices = static_cast<std::int64_t>(p.simplices.size()) / (p.dim + 1);
+                              s.graph_simplices_used = simplices_holding_a_node(p.node_simplex);
                               s.outside_hull = p.stats.outside_count;
                               s.shared_vertices = p.stats.shared_vertex_count;
                               s.coarse_points = p.stats.coarse_interior;

@@ -92,7 +92,13 @@ std::size_t plan_memory_bytes(const Plan& plan);
 /// What a plan holds and how long building it took, whatever the method
 /// (counts a method does not have stay 0).
 struct PlanSummary {
-    std::int64_t graph_simplices = 0;   // DG-IDW, DGM: simplices of the Delaunay graph
+    /// DG-IDW, DGM: simplices of the Delaunay graph of the boundary nodes;
+    /// DG-harmonic: of its coarse graph. nullopt for a DG-IDW plan loaded from
+    /// a file (the plan keeps only the simplices that hold a volume node).
+    std::optional<std::int64_t> graph_simplices = 0;
+    /// DG-IDW, DGM, DG-harmonic: the graph simplices holding at least one
+    /// volume node (what a DG-IDW plan keeps).
+    std::int64_t graph_simplices_used = 0;
     std::int64_t outside_hull = 0;      // DG-IDW, DGM: volume nodes outside the graph's hull
     std::int64_t shared_vertices = 0;   // DG-IDW, DGM, DG-harmonic: graph vertices standing for several boundary nodes
     std::int64_t coarse_points = 0;     // DG-harmonic: volume nodes on the coarse level

@@ -27,6 +27,8 @@ constexpr double min_pivot2 = 1e-14;
 // Boundary nodes × centres above which the error pass runs in parallel.
 constexpr std::size_t parallel_work = 200000;
 
+/// The state of the greedy loop: the centres chosen so far, the factors and
+/// the coefficients for them (see the file comment).
 struct Greedy {
     const RbfPlan& plan;
     std::span<const double> d;   // num_boundary × dim
@@ -34,164 +36,195 @@ struct Greedy {
     int np;                      // dim + 1
     std::size_t nb;              // boundary nodes
     double inv_radius;
-    std::vector<std::int32_t> centres;
-    std::vector<std::uint8_t> is_centre;
-    std::vector<double> l;       // L, packed by rows: row i holds i + 1 entries from i (i + 1) / 2
-    std::vector<double> zp;      // n × np, row-major
-    std::vector<double> zd;      // n × dim, row-major
-    std::vector<double> phi;     // column j (nb values): φ between every boundary node and centre j
-    std::vector<double> alpha;   // n × dim, row-major
-    std::vector<double> beta;    // np × dim, row-major
-    std::vector<double> error;   // |s(x_b) - d_b| per boundary node
+    std::vector<std::int32_t> centres{};
+    std::vector<std::uint8_t> is_centre{};
+    std::vector<double> l{};       // L, packed by rows: row i holds i + 1 entries from i (i + 1) / 2
+    std::vector<double> zp{};      // n × np, row-major
+    std::vector<double> zd{};      // n × dim, row-major
+    std::vector<double> phi{};     // column j (nb values): φ between every boundary node and centre j
+    std::vector<double> alpha{};   // n × dim, row-major
+    std::vector<double> beta{};    // np × dim, row-major
+    std::vector<double> error{};   // |s(x_b) - d_b| per boundary node
 
     const double* x(std::size_t b) const { return plan.centre_points.data() + b * dim; }
-
-    // Adds boundary node k as a centre; false when it is numerically dependent.
-    bool add(std::size_t k) {
-        const std::size_t n = centres.size();
-        const std::size_t needed = (nb * (n + 1) + (n + 1) * (n + 2) / 2 + (n + 1) * (np + 2 * dim)) * sizeof(double);
-        check_dense_bytes(needed, plan.max_dense_bytes,
-                          "the greedy reduction's arrays for " + std::to_string(n + 1) + " centres and " +
-                              std::to_string(nb) + " boundary nodes");
-        phi.resize(nb * (n + 1));
-        double* column = phi.data() + n * nb;
-        for (std::size_t b = 0; b < nb; ++b) column[b] = wendland_c2_r2(distance2(dim, x(b), x(k)), inv_radius);
-        // Row n of L: L[0..n) r = m, m_i = φ(|x_ci - x_k|), pivot² = φ(0) - r·r.
-        std::vector<double> r(n);
-        double rr = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double* li = l.data() + i * (i + 1) / 2;
-            double s = column[static_cast<std::size_t>(centres[i])];
-            for (std::size_t j = 0; j < i; ++j) s -= li[j] * r[j];
-            r[i] = s / li[i];
-            rr += r[i] * r[i];
-        }
-        const double pivot2 = 1.0 - rr;
-        if (!(pivot2 > min_pivot2)) {
-            phi.resize(nb * n);
-            return false;
-        }
-        const double pivot = std::sqrt(pivot2);
-        l.insert(l.end(), r.begin(), r.end());
-        l.push_back(pivot);
-        double prow[4];
-        polynomial_row(plan, x(k), prow);
-        for (int c = 0; c < np; ++c) {
-            double s = prow[c];
-            for (std::size_t i = 0; i < n; ++i) s -= r[i] * zp[i * np + c];
-            zp.push_back(s / pivot);
-        }
-        for (int c = 0; c < dim; ++c) {
-            double s = d[k * dim + c];
-            for (std::size_t i = 0; i < n; ++i) s -= r[i] * zd[i * dim + c];
-            zd.push_back(s / pivot);
-        }
-        centres.push_back(static_cast<std::int32_t>(k));
-        is_centre[k] = 1;
-        return true;
-    }
-
-    // α and β for the current centres (needs at least np affinely independent ones).
-    void solve() {
-        const std::size_t n = centres.size();
-        Eigen::MatrixXd h = Eigen::MatrixXd::Zero(np, np), rhs = Eigen::MatrixXd::Zero(np, dim);
-        for (std::size_t i = 0; i < n; ++i)
-            for (int a = 0; a < np; ++a) {
-                for (int b = 0; b < np; ++b) h(a, b) += zp[i * np + a] * zp[i * np + b];
-                for (int c = 0; c < dim; ++c) rhs(a, c) += zp[i * np + a] * zd[i * dim + c];
-            }
-        const Eigen::MatrixXd b = h.llt().solve(rhs);
-        beta.assign(static_cast<std::size_t>(np * dim), 0.0);
-        for (int a = 0; a < np; ++a)
-            for (int c = 0; c < dim; ++c) beta[a * dim + c] = b(a, c);
-        // w = Z_d - Z_P β, then α = L⁻ᵀ w (backward substitution; L's column i is row i of Lᵀ).
-        alpha.assign(n * dim, 0.0);
-        for (std::size_t i = 0; i < n; ++i)
-            for (int c = 0; c < dim; ++c) {
-                double s = zd[i * dim + c];
-                for (int a = 0; a < np; ++a) s -= zp[i * np + a] * beta[a * dim + c];
-                alpha[i * dim + c] = s;
-            }
-        for (std::size_t i = n; i-- > 0;) {
-            const double lii = l[i * (i + 1) / 2 + i];
-            for (int c = 0; c < dim; ++c) alpha[i * dim + c] /= lii;
-            for (std::size_t j = 0; j < i; ++j) {  // subtract L_ij α_i from the rows above
-                const double lij = l[i * (i + 1) / 2 + j];
-                for (int c = 0; c < dim; ++c) alpha[j * dim + c] -= lij * alpha[i * dim + c];
-            }
-        }
-    }
-
-    // error_b = |s(x_b) - d_b|; returns the largest (first index on ties).
-    std::size_t update_errors() {
-        const std::size_t n = centres.size();
-        const auto chunk = [&](std::int64_t begin, std::int64_t end) {
-            std::vector<double> s(static_cast<std::size_t>((end - begin) * dim));
-            for (std::int64_t b = begin; b < end; ++b) {
-                double prow[4];
-                polynomial_row(plan, x(static_cast<std::size_t>(b)), prow);
-                for (int c = 0; c < dim; ++c) {
-                    double v = 0;
-                    for (int a = 0; a < np; ++a) v += prow[a] * beta[a * dim + c];
-                    s[(b - begin) * dim + c] = v;
-                }
-            }
-            for (std::size_t j = 0; j < n; ++j) {
-                const double* column = phi.data() + j * nb;
-                for (std::int64_t b = begin; b < end; ++b)
-                    for (int c = 0; c < dim; ++c) s[(b - begin) * dim + c] += column[b] * alpha[j * dim + c];
-            }
-            for (std::int64_t b = begin; b < end; ++b) {
-                double e2 = 0;
-                for (int c = 0; c < dim; ++c) {
-                    const double e = s[(b - begin) * dim + c] - d[b * dim + c];
-                    e2 += e * e;
-                }
-                error[b] = std::sqrt(e2);
-            }
-        };
-        // Threads only pay off for large passes (a parallel region costs
-        // microseconds, far more on a loaded machine, and there is one per centre).
-        if (nb * n > parallel_work) parallel_for_chunks(static_cast<std::int64_t>(nb), chunk);
-        else chunk(0, static_cast<std::int64_t>(nb));
-        std::size_t worst = 0;
-        for (std::size_t b = 1; b < nb; ++b)
-            if (error[b] > error[worst]) worst = b;
-        return worst;
-    }
-
-    // Squared distance of x(b) from the affine hull of the current centres (up to 3 of them).
-    double hull_distance2(std::size_t b) const {
-        const std::size_t n = centres.size();
-        const double* a = x(static_cast<std::size_t>(centres[0]));
-        double v[3] = {}, e1[3] = {}, e2[3] = {};
-        for (int k = 0; k < dim; ++k) v[k] = x(b)[k] - a[k];
-        if (n == 1) return v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-        for (int k = 0; k < dim; ++k) e1[k] = x(static_cast<std::size_t>(centres[1]))[k] - a[k];
-        auto cross = [](const double* p, const double* q, double* out) {
-            out[0] = p[1] * q[2] - p[2] * q[1];
-            out[1] = p[2] * q[0] - p[0] * q[2];
-            out[2] = p[0] * q[1] - p[1] * q[0];
-        };
-        auto dot = [](const double* p, const double* q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
-        if (n == 2) {  // distance from the line: |e1 × v|² / |e1|²
-            double c[3];
-            cross(e1, v, c);
-            return dot(c, c) / dot(e1, e1);
-        }
-        for (int k = 0; k < dim; ++k) e2[k] = x(static_cast<std::size_t>(centres[2]))[k] - a[k];
-        double normal[3];  // n == 3 (3D): distance from the plane
-        cross(e1, e2, normal);
-        const double h = dot(normal, v);
-        return h * h / dot(normal, normal);
-    }
 };
+
+/// The index of the largest value (the first on ties).
+std::size_t index_of_largest(const std::vector<double>& v) {
+    std::size_t largest = 0;
+    for (std::size_t i = 1; i < v.size(); ++i)
+        if (v[i] > v[largest]) largest = i;
+    return largest;
+}
+
+/// Adds boundary node k as a centre; false when it is numerically dependent.
+bool add_centre(Greedy& g, std::size_t k) {
+    const std::size_t n = g.centres.size(), nb = g.nb;
+    const int dim = g.dim, np = g.np;
+    const std::size_t needed = (nb * (n + 1) + (n + 1) * (n + 2) / 2 + (n + 1) * (np + 2 * dim)) * sizeof(double);
+    check_dense_bytes(needed, g.plan.max_dense_bytes,
+                      "the greedy reduction's arrays for " + std::to_string(n + 1) + " centres and " +
+                          std::to_string(nb) + " boundary nodes");
+    g.phi.resize(nb * (n + 1));
+    double* column = g.phi.data() + n * nb;
+    for (std::size_t b = 0; b < nb; ++b) column[b] = wendland_c2_r2(distance2(dim, g.x(b), g.x(k)), g.inv_radius);
+    // Row n of L: L[0..n) r = m, m_i = φ(|x_ci - x_k|), pivot² = φ(0) - r·r.
+    std::vector<double> r(n);
+    double rr = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double* li = g.l.data() + i * (i + 1) / 2;
+        double s = column[static_cast<std::size_t>(g.centres[i])];
+        for (std::size_t j = 0; j < i; ++j) s -= li[j] * r[j];
+        r[i] = s / li[i];
+        rr += r[i] * r[i];
+    }
+    const double pivot2 = 1.0 - rr;
+    if (!(pivot2 > min_pivot2)) {
+        g.phi.resize(nb * n);
+        return false;
+    }
+    const double pivot = std::sqrt(pivot2);
+    g.l.insert(g.l.end(), r.begin(), r.end());
+    g.l.push_back(pivot);
+    double prow[4];
+    polynomial_row(g.plan, g.x(k), prow);
+    for (int c = 0; c < np; ++c) {
+        double s = prow[c];
+        for (std::size_t i = 0; i < n; ++i) s -= r[i] * g.zp[i * np + c];
+        g.zp.push_back(s / pivot);
+    }
+    for (int c = 0; c < dim; ++c) {
+        double s = g.d[k * dim + c];
+        for (std::size_t i = 0; i < n; ++i) s -= r[i] * g.zd[i * dim + c];
+        g.zd.push_back(s / pivot);
+    }
+    g.centres.push_back(static_cast<std::int32_t>(k));
+    g.is_centre[k] = 1;
+    return true;
+}
+
+/// α and β for the current centres (needs at least np affinely independent ones).
+void solve_coefficients(Greedy& g) {
+    const std::size_t n = g.centres.size();
+    const int dim = g.dim, np = g.np;
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(np, np), rhs = Eigen::MatrixXd::Zero(np, dim);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int a = 0; a < np; ++a) {
+            for (int b = 0; b < np; ++b) h(a, b) += g.zp[i * np + a] * g.zp[i * np + b];
+            for (int c = 0; c < dim; ++c) rhs(a, c) += g.zp[i * np + a] * g.zd[i * dim + c];
+        }
+    const Eigen::MatrixXd b = h.llt().solve(rhs);
+    g.beta.assign(static_cast<std::size_t>(np * dim), 0.0);
+    for (int a = 0; a < np; ++a)
+        for (int c = 0; c < dim; ++c) g.beta[a * dim + c] = b(a, c);
+    // w = Z_d - Z_P β, then α = L⁻ᵀ w (backward substitution; L's column i is row i of Lᵀ).
+    g.alpha.assign(n * dim, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < dim; ++c) {
+            double s = g.zd[i * dim + c];
+            for (int a = 0; a < np; ++a) s -= g.zp[i * np + a] * g.beta[a * dim + c];
+            g.alpha[i * dim + c] = s;
+        }
+    for (std::size_t i = n; i-- > 0;) {
+        const double lii = g.l[i * (i + 1) / 2 + i];
+        for (int c = 0; c < dim; ++c) g.alpha[i * dim + c] /= lii;
+        for (std::size_t j = 0; j < i; ++j) {  // subtract L_ij α_i from the rows above
+            const double lij = g.l[i * (i + 1) / 2 + j];
+            for (int c = 0; c < dim; ++c) g.alpha[j * dim + c] -= lij * g.alpha[i * dim + c];
+        }
+    }
+}
+
+/// error_b = |s(x_b) - d_b| for every boundary node; returns the largest's index.
+std::size_t update_errors(Greedy& g) {
+    const std::size_t n = g.centres.size(), nb = g.nb;
+    const int dim = g.dim, np = g.np;
+    const auto chunk = [&](std::int64_t begin, std::int64_t end) {
+        std::vector<double> s(static_cast<std::size_t>((end - begin) * dim));
+        for (std::int64_t b = begin; b < end; ++b) {
+            double prow[4];
+            polynomial_row(g.plan, g.x(static_cast<std::size_t>(b)), prow);
+            for (int c = 0; c < dim; ++c) {
+                double v = 0;
+                for (int a = 0; a < np; ++a) v += prow[a] * g.beta[a * dim + c];
+                s[(b - begin) * dim + c] = v;
+            }
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+            const double* column = g.phi.data() + j * nb;
+            for (std::int64_t b = begin; b < end; ++b)
+                for (int c = 0; c < dim; ++c) s[(b - begin) * dim + c] += column[b] * g.alpha[j * dim + c];
+        }
+        for (std::int64_t b = begin; b < end; ++b) {
+            double e2 = 0;
+            for (int c = 0; c < dim; ++c) {
+                const double e = s[(b - begin) * dim + c] - g.d[b * dim + c];
+                e2 += e * e;
+            }
+            g.error[b] = std::sqrt(e2);
+        }
+    };
+    // Threads only pay off for large passes (a parallel region costs
+    // microseconds, far more on a loaded machine, and there is one per centre).
+    if (nb * n > parallel_work) parallel_for_chunks(static_cast<std::int64_t>(nb), chunk);
+    else chunk(0, static_cast<std::int64_t>(nb));
+    return index_of_largest(g.error);
+}
+
+/// Squared distance of x(b) from the affine hull of the current centres (up to 3 of them).
+double hull_distance2(const Greedy& g, std::size_t b) {
+    const std::size_t n = g.centres.size();
+    const int dim = g.dim;
+    const double* a = g.x(static_cast<std::size_t>(g.centres[0]));
+    double v[3] = {}, e1[3] = {}, e2[3] = {};
+    for (int k = 0; k < dim; ++k) v[k] = g.x(b)[k] - a[k];
+    if (n == 1) return v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    for (int k = 0; k < dim; ++k) e1[k] = g.x(static_cast<std::size_t>(g.centres[1]))[k] - a[k];
+    auto cross = [](const double* p, const double* q, double* out) {
+        out[0] = p[1] * q[2] - p[2] * q[1];
+        out[1] = p[2] * q[0] - p[0] * q[2];
+        out[2] = p[0] * q[1] - p[1] * q[0];
+    };
+    auto dot = [](const double* p, const double* q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
+    if (n == 2) {  // distance from the line: |e1 × v|² / |e1|²
+        double c[3];
+        cross(e1, v, c);
+        return dot(c, c) / dot(e1, e1);
+    }
+    for (int k = 0; k < dim; ++k) e2[k] = g.x(static_cast<std::size_t>(g.centres[2]))[k] - a[k];
+    double normal[3];  // n == 3 (3D): distance from the plane
+    cross(e1, e2, normal);
+    const double h = dot(normal, v);
+    return h * h / dot(normal, normal);
+}
+
+/// The first dim + 1 centres: node `worst` (the largest displacement), then
+/// dim nodes each farthest from the affine hull of the centres so far, so that
+/// the linear polynomial is determined. Throws MeshError when the boundary
+/// nodes are all on one line (2D) or plane (3D).
+void seed_centres(Greedy& g, std::size_t worst) {
+    add_centre(g, worst);
+    for (int s = 0; s < g.dim; ++s) {
+        std::size_t far = 0;
+        double far2 = -1;
+        for (std::size_t b = 0; b < g.nb; ++b) {
+            const double h2 = g.is_centre[b] ? -1 : hull_distance2(g, b);
+            if (h2 > far2) {
+                far2 = h2;
+                far = b;
+            }
+        }
+        if (!(far2 > 1e-18 * g.plan.diagonal * g.plan.diagonal) || !add_centre(g, far))
+            throw MeshError("RBF: the boundary nodes are all " + std::string(g.dim == 2 ? "collinear" : "coplanar") +
+                            ", so the linear polynomial of the interpolant is undetermined");
+    }
+}
 
 }  // namespace
 
 void solve_greedy(const RbfPlan& plan, std::span<const double> d, RbfCoefficients& c) {
     const int dim = plan.dim;
-    Greedy g{plan, d, dim, dim + 1, plan.num_centres(), 1.0 / plan.radius, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+    Greedy g{plan, d, dim, dim + 1, plan.num_centres(), 1.0 / plan.radius};
     g.is_centre.assign(g.nb, 0);
     g.error.resize(g.nb);
     for (std::size_t b = 0; b < g.nb; ++b) {
@@ -199,36 +232,18 @@ void solve_greedy(const RbfPlan& plan, std::span<const double> d, RbfCoefficient
         for (int k = 0; k < dim; ++k) e2 += d[b * dim + k] * d[b * dim + k];
         g.error[b] = std::sqrt(e2);
     }
-    std::size_t worst = 0;
-    for (std::size_t b = 1; b < g.nb; ++b)
-        if (g.error[b] > g.error[worst]) worst = b;
-
+    std::size_t worst = index_of_largest(g.error);
     double max_error = g.error[worst];
     g.beta.assign(static_cast<std::size_t>((dim + 1) * dim), 0.0);
     if (max_error > plan.greedy_tolerance) {
-        // Seed: the largest displacement, then dim nodes farthest from the
-        // affine hull of the seeds, so that the linear polynomial is determined.
-        g.add(worst);
-        for (int s = 0; s < dim; ++s) {
-            std::size_t far = 0;
-            double far2 = -1;
-            for (std::size_t b = 0; b < g.nb; ++b) {
-                const double h2 = g.is_centre[b] ? -1 : g.hull_distance2(b);
-                if (h2 > far2) {
-                    far2 = h2;
-                    far = b;
-                }
-            }
-            if (!(far2 > 1e-18 * plan.diagonal * plan.diagonal) || !g.add(far))
-                throw MeshError("RBF: the boundary nodes are all " + std::string(dim == 2 ? "collinear" : "coplanar") +
-                                ", so the linear polynomial of the interpolant is undetermined");
-        }
+        seed_centres(g, worst);
+        // Add the node of the largest error until every error is within the tolerance.
         while (true) {
-            g.solve();
-            worst = g.update_errors();
+            solve_coefficients(g);
+            worst = update_errors(g);
             max_error = g.error[worst];
             if (max_error <= plan.greedy_tolerance || g.centres.size() == g.nb || g.is_centre[worst] ||
-                !g.add(worst))
+                !add_centre(g, worst))
                 break;
         }
     }

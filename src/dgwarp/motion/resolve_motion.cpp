@@ -134,34 +134,55 @@ bool agree(const NodeMotion& a, const NodeMotion& b, std::span<const double> x, 
     return std::sqrt(d2) <= tol;
 }
 
-/// Resolves one frame (see the header's rules). Appends warnings.
-BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
-                          std::vector<std::string>& warnings) {
-    const Mesh& mesh = c.mesh;
-    const std::size_t n_markers = mesh.markers.size();
-    std::vector<const MarkerMotion*> motions(n_markers);
-    for (std::size_t m = 0; m < n_markers; ++m) motions[m] = &marker_motion(c.spec, frame, mesh.markers[m].name);
-    const auto node_motions = marker_node_motions(mesh, c.series.marker_nodes, motions, time, at);
+using NodeMotions = std::vector<std::vector<NodeMotion>>;  // per marker, per node of the marker
 
+/// Node j of moving marker m's motion (zero when the marker has none in this frame).
+const NodeMotion& node_motion(const NodeMotions& motions, std::size_t m, std::size_t j) {
+    static const NodeMotion zero{};
+    return motions[m].empty() ? zero : motions[m][j];
+}
+
+/// Per boundary node, the motion of the first moving marker on it (`from`:
+/// that marker, -1 when none) and the first moving marker whose motion
+/// disagrees with it (`clash`, -1 when none).
+struct FirstMotions {
+    BoundaryMotion motion;
+    std::vector<std::int32_t> from, clash;
+};
+
+FirstMotions first_motions(const Context& c, const NodeMotions& motions) {
     const std::size_t n = c.boundary.nodes.size();
-    BoundaryMotion resolved(n);
-    std::vector<std::int32_t> from(n, -1), clash(n, -1);  // first moving marker; first disagreeing one
-    const NodeMotion zero{};
-    for (std::size_t m = 0; m < n_markers; ++m) {
+    FirstMotions f{BoundaryMotion(n), std::vector<std::int32_t>(n, -1), std::vector<std::int32_t>(n, -1)};
+    for (std::size_t m = 0; m < c.mesh.markers.size(); ++m) {
+        if (!c.series.marker_moving[m]) continue;
+        for (std::size_t j = 0; j < c.series.marker_nodes[m].size(); ++j) {
+            const NodeMotion& nm = node_motion(motions, m, j);
+            const auto b = static_cast<std::size_t>(c.series.slots[m][j]);
+            if (f.from[b] < 0) {
+                f.motion[b] = nm;
+                f.from[b] = static_cast<std::int32_t>(m);
+            } else if (f.clash[b] < 0 && !agree(f.motion[b], nm, point(c.mesh, c.series.marker_nodes[m][j]),
+                                                c.series.tolerance)) {
+                f.clash[b] = static_cast<std::int32_t>(m);
+            }
+        }
+    }
+    return f;
+}
+
+/// Warnings for the moving markers that turn by more than 180 degrees in one
+/// step, or move a node farther than the mesh's bounding-box diagonal.
+void warn_large_motions(const Context& c, const NodeMotions& motions, const std::string& at,
+                        std::vector<std::string>& warnings) {
+    const Mesh& mesh = c.mesh;
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
         if (!c.series.marker_moving[m]) continue;
         double largest = 0, largest_angle = 0;
         NodeId largest_node = -1;
         for (std::size_t j = 0; j < c.series.marker_nodes[m].size(); ++j) {
-            const NodeMotion& nm = node_motions[m].empty() ? zero : node_motions[m][j];
+            const NodeMotion& nm = node_motion(motions, m, j);
             const NodeId node = c.series.marker_nodes[m][j];
             const auto x = point(mesh, node);
-            const auto b = static_cast<std::size_t>(c.series.slots[m][j]);
-            if (from[b] < 0) {
-                resolved[b] = nm;
-                from[b] = static_cast<std::int32_t>(m);
-            } else if (clash[b] < 0 && !agree(resolved[b], nm, x, c.series.tolerance)) {
-                clash[b] = static_cast<std::int32_t>(m);
-            }
             double moved[3], d2 = 0;
             apply_motion(nm, x, moved);
             for (std::size_t i = 0; i < x.size(); ++i) d2 += (moved[i] - x[i]) * (moved[i] - x[i]);
@@ -186,45 +207,61 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
             warnings.push_back(w.str());
         }
     }
+}
 
-    // Static nodes stay; count the disagreements that are not overruled.
+/// Throws MeshError when moving markers disagree on a moving node they share
+/// (static nodes stay whatever their markers say), naming each pair of
+/// markers, how many nodes and an example.
+void refuse_disagreements(const Context& c, const FirstMotions& f, const NodeMotions& motions,
+                          const std::string& at) {
+    const Mesh& mesh = c.mesh;
     std::map<std::pair<std::int32_t, std::int32_t>, std::pair<std::size_t, std::size_t>> clashes;  // -> count, example
-    for (std::size_t b = 0; b < n; ++b) {
-        if (!c.boundary.moving[b]) {
-            resolved[b] = zero;
-            continue;
-        }
-        if (clash[b] < 0) continue;
-        auto& entry = clashes[{from[b], clash[b]}];
+    for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b) {
+        if (!c.boundary.moving[b] || f.clash[b] < 0) continue;
+        auto& entry = clashes[{f.from[b], f.clash[b]}];
         if (entry.first++ == 0) entry.second = b;
     }
-    if (!clashes.empty()) {
-        std::ostringstream e;
-        e << at << ": moving markers disagree on the nodes they share (rule "
-          << (c.spec.shared_nodes == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins") << "):";
-        for (const auto& [pair, entry] : clashes) {
-            const std::size_t b = entry.second;
-            const NodeId node = c.boundary.nodes[b];
-            const auto x = point(mesh, node);
-            const std::size_t m1 = static_cast<std::size_t>(pair.first), m2 = static_cast<std::size_t>(pair.second);
-            const auto j2 = static_cast<std::size_t>(
-                std::lower_bound(c.series.marker_nodes[m2].begin(), c.series.marker_nodes[m2].end(), node) - c.series.marker_nodes[m2].begin());
-            double p1[3], p2[3];
-            apply_motion(resolved[b], x, p1);
-            apply_motion(node_motions[m2].empty() ? zero : node_motions[m2][j2], x, p2);
-            e << " markers '" << mesh.markers[m1].name << "' and '" << mesh.markers[m2].name << "' on " << entry.first
-              << " node" << (entry.first == 1 ? "" : "s") << " (e.g. node " << node << " moves to "
-              << point_text({p1, x.size()}) << " with '" << mesh.markers[m1].name << "' and to "
-              << point_text({p2, x.size()}) << " with '" << mesh.markers[m2].name << "');";
-        }
-        std::string message = e.str();
-        message.back() = '.';
-        message += " Give the markers the same motion on the nodes they share (see shared_nodes in docs/MOTION.md).";
-        const auto& [pair, entry] = *clashes.begin();
-        throw MeshError(message, mesh.markers[static_cast<std::size_t>(pair.first)].name,
-                        c.boundary.nodes[entry.second]);
+    if (clashes.empty()) return;
+    std::ostringstream e;
+    e << at << ": moving markers disagree on the nodes they share (rule "
+      << (c.spec.shared_nodes == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins") << "):";
+    for (const auto& [pair, entry] : clashes) {
+        const std::size_t b = entry.second;
+        const NodeId node = c.boundary.nodes[b];
+        const auto x = point(mesh, node);
+        const std::size_t m1 = static_cast<std::size_t>(pair.first), m2 = static_cast<std::size_t>(pair.second);
+        const auto& nodes2 = c.series.marker_nodes[m2];
+        const auto j2 = static_cast<std::size_t>(std::lower_bound(nodes2.begin(), nodes2.end(), node) - nodes2.begin());
+        double p1[3], p2[3];
+        apply_motion(f.motion[b], x, p1);
+        apply_motion(node_motion(motions, m2, j2), x, p2);
+        e << " markers '" << mesh.markers[m1].name << "' and '" << mesh.markers[m2].name << "' on " << entry.first
+          << " node" << (entry.first == 1 ? "" : "s") << " (e.g. node " << node << " moves to "
+          << point_text({p1, x.size()}) << " with '" << mesh.markers[m1].name << "' and to "
+          << point_text({p2, x.size()}) << " with '" << mesh.markers[m2].name << "');";
     }
-    return resolved;
+    std::string message = e.str();
+    message.back() = '.';
+    message += " Give the markers the same motion on the nodes they share (see shared_nodes in docs/MOTION.md).";
+    const auto& [pair, entry] = *clashes.begin();
+    throw MeshError(message, mesh.markers[static_cast<std::size_t>(pair.first)].name, c.boundary.nodes[entry.second]);
+}
+
+/// Resolves one frame (see the header's rules). Appends warnings.
+BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
+                          std::vector<std::string>& warnings) {
+    const Mesh& mesh = c.mesh;
+    std::vector<const MarkerMotion*> marker_motions(mesh.markers.size());
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
+        marker_motions[m] = &marker_motion(c.spec, frame, mesh.markers[m].name);
+    const NodeMotions motions = marker_node_motions(mesh, c.series.marker_nodes, marker_motions, time, at);
+
+    FirstMotions f = first_motions(c, motions);
+    warn_large_motions(c, motions, at, warnings);
+    refuse_disagreements(c, f, motions, at);
+    for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b)
+        if (!c.boundary.moving[b]) f.motion[b] = NodeMotion{};  // static nodes stay
+    return std::move(f.motion);
 }
 
 /// Warnings for markers the motion file names that have no nodes in the mesh.

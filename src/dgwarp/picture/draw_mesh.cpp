@@ -141,6 +141,97 @@ constexpr double edge_alpha = 0.6;
 constexpr Rgb marker_color{0, 0, 0};
 constexpr Rgb frame_color{0.6, 0.6, 0.6};
 
+/// The cells drawn: their indices, in order, the inverted ones among them,
+/// each one's edge level, and whether some cell reaches outside the plot.
+struct DrawnCells {
+    std::vector<std::int64_t> shown, inverted;
+    std::vector<std::uint8_t> level;  // per shown cell
+    bool cut = false;
+};
+
+// Fills without antialiasing: neighbouring antialiased fills let the
+// background shine through their shared edges. Inverted cells go last so
+// that overlapping neighbours never hide them.
+DrawnCells fill_cells(cairo_t* cr, const PictureLayout& layout, const MeshInPixels& pixels,
+                      std::span<const double> values) {
+    DrawnCells drawn;
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+    for (std::size_t i = 0; i < pixels.mesh.cells.size(); ++i) {
+        const Polygon poly = pixels.cell(i);
+        if (poly.n == 0) continue;
+        drawn.shown.push_back(static_cast<std::int64_t>(i));
+        for (int k = 0; k < poly.n; ++k) drawn.cut = drawn.cut || !inside_box(poly.p[k], pixels.visible);
+        drawn.level.push_back(static_cast<std::uint8_t>(layout.colored ? edge_level(poly) : edge_levels));
+        if (layout.colored && !(values[i] > 0)) {
+            drawn.inverted.push_back(static_cast<std::int64_t>(i));
+            continue;
+        }
+        set_color(cr, layout.colored ? value_color(values[i]) : plain_cell_color);
+        add_polygon(cr, poly);
+        cairo_fill(cr);
+    }
+    set_color(cr, inverted_color);
+    for (std::int64_t i : drawn.inverted) add_polygon(cr, pixels.cell(static_cast<std::size_t>(i)));
+    cairo_fill(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+    return drawn;
+}
+
+// Edges: one stroke per fading level, so an edge shared by two cells is not
+// darkened twice. Inverted cells are outlined too, so that even one smaller
+// than a pixel shows.
+void stroke_cell_edges(cairo_t* cr, const MeshInPixels& pixels, const DrawnCells& drawn, double edge_width_px) {
+    if (edge_width_px > 0) {
+        cairo_set_line_width(cr, edge_width_px);
+        for (int l = 1; l <= edge_levels; ++l) {
+            for (std::size_t k = 0; k < drawn.shown.size(); ++k)
+                if (drawn.level[k] == l) add_polygon(cr, pixels.cell(static_cast<std::size_t>(drawn.shown[k])));
+            cairo_set_source_rgba(cr, edge_color.r, edge_color.g, edge_color.b, edge_alpha * l / edge_levels);
+            cairo_stroke(cr);
+        }
+    }
+    if (!drawn.inverted.empty()) {
+        cairo_set_line_width(cr, std::max(1.5, 2 * edge_width_px));
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        for (std::int64_t i : drawn.inverted) add_polygon(cr, pixels.cell(static_cast<std::size_t>(i)));
+        set_color(cr, inverted_color);
+        cairo_stroke(cr);
+    }
+}
+
+// The markers' lines (2D markers hold line elements), over the cells.
+void stroke_marker_lines(cairo_t* cr, const MeshInPixels& pixels, double edge_width_px) {
+    const Box& visible = pixels.visible;
+    cairo_set_line_width(cr, std::max(2.0, 3 * edge_width_px));
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    set_color(cr, marker_color);
+    for (const Marker& marker : pixels.mesh.markers)
+        for (std::size_t e = 0; e < marker.elements.size(); ++e) {
+            const auto nodes = marker.elements.nodes_of(e);
+            if (nodes.size() != 2) continue;
+            Point a = pixels.node(nodes[0]), b = pixels.node(nodes[1]);
+            if (std::max(a[0], b[0]) < visible.x0 || std::min(a[0], b[0]) > visible.x1 ||
+                std::max(a[1], b[1]) < visible.y0 || std::min(a[1], b[1]) > visible.y1)
+                continue;
+            if (!clip_segment(a, b, pixels.reach)) continue;
+            cairo_move_to(cr, a[0], a[1]);
+            cairo_line_to(cr, b[0], b[1]);
+        }
+    cairo_stroke(cr);
+}
+
+// A thin frame around the plot area, so that a close-up's cut-off cells end at a line.
+void draw_plot_frame(cairo_t* cr, const std::array<double, 4>& plot) {
+    cairo_save(cr);
+    cairo_rectangle(cr, std::round(plot[0]) - 0.5, std::round(plot[1]) - 0.5, std::round(plot[2]) + 1,
+                    std::round(plot[3]) + 1);
+    set_color(cr, frame_color);
+    cairo_set_line_width(cr, 1.0);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+}
+
 }  // namespace
 
 void draw_mesh(cairo_t* cr, const PictureLayout& layout, const Mesh& mesh, std::span<const double> values,
@@ -153,81 +244,11 @@ void draw_mesh(cairo_t* cr, const PictureLayout& layout, const Mesh& mesh, std::
     cairo_save(cr);
     cairo_rectangle(cr, plot[0], plot[1], plot[2], plot[3]);
     cairo_clip(cr);
-
-    // Fills without antialiasing: neighbouring antialiased fills let the
-    // background shine through their shared edges. Inverted cells go last so
-    // that overlapping neighbours never hide them.
-    std::vector<std::int64_t> shown, inverted;
-    std::vector<std::uint8_t> level;
-    bool cut = false;  // some cell reaches outside the plot
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-    for (std::size_t i = 0; i < mesh.cells.size(); ++i) {
-        const Polygon poly = pixels.cell(i);
-        if (poly.n == 0) continue;
-        shown.push_back(static_cast<std::int64_t>(i));
-        for (int k = 0; k < poly.n; ++k) cut = cut || !inside_box(poly.p[k], visible);
-        level.push_back(static_cast<std::uint8_t>(layout.colored ? edge_level(poly) : edge_levels));
-        if (layout.colored && !(values[i] > 0)) {
-            inverted.push_back(static_cast<std::int64_t>(i));
-            continue;
-        }
-        set_color(cr, layout.colored ? value_color(values[i]) : plain_cell_color);
-        add_polygon(cr, poly);
-        cairo_fill(cr);
-    }
-    set_color(cr, inverted_color);
-    for (std::int64_t i : inverted) add_polygon(cr, pixels.cell(static_cast<std::size_t>(i)));
-    cairo_fill(cr);
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
-
-    // Edges: one stroke per fading level, so an edge shared by two cells is
-    // not darkened twice.
-    if (edge_width_px > 0) {
-        cairo_set_line_width(cr, edge_width_px);
-        for (int l = 1; l <= edge_levels; ++l) {
-            for (std::size_t k = 0; k < shown.size(); ++k)
-                if (level[k] == l) add_polygon(cr, pixels.cell(static_cast<std::size_t>(shown[k])));
-            cairo_set_source_rgba(cr, edge_color.r, edge_color.g, edge_color.b, edge_alpha * l / edge_levels);
-            cairo_stroke(cr);
-        }
-    }
-    // Inverted cells are outlined too, so that even one smaller than a pixel shows.
-    if (!inverted.empty()) {
-        cairo_set_line_width(cr, std::max(1.5, 2 * edge_width_px));
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        for (std::int64_t i : inverted) add_polygon(cr, pixels.cell(static_cast<std::size_t>(i)));
-        set_color(cr, inverted_color);
-        cairo_stroke(cr);
-    }
-
-    cairo_set_line_width(cr, std::max(2.0, 3 * edge_width_px));
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    set_color(cr, marker_color);
-    for (const Marker& marker : mesh.markers)
-        for (std::size_t e = 0; e < marker.elements.size(); ++e) {
-            const auto nodes = marker.elements.nodes_of(e);
-            if (nodes.size() != 2) continue;  // 2D markers hold lines
-            Point a = pixels.node(nodes[0]), b = pixels.node(nodes[1]);
-            if (std::max(a[0], b[0]) < visible.x0 || std::min(a[0], b[0]) > visible.x1 ||
-                std::max(a[1], b[1]) < visible.y0 || std::min(a[1], b[1]) > visible.y1)
-                continue;
-            if (!clip_segment(a, b, pixels.reach)) continue;
-            cairo_move_to(cr, a[0], a[1]);
-            cairo_line_to(cr, b[0], b[1]);
-        }
-    cairo_stroke(cr);
+    const DrawnCells drawn = fill_cells(cr, layout, pixels, values);
+    stroke_cell_edges(cr, pixels, drawn, edge_width_px);
+    stroke_marker_lines(cr, pixels, edge_width_px);
     cairo_restore(cr);
-
-    // A thin frame, so that a close-up's cut-off cells end at a line.
-    if (!cut) return;
-    cairo_save(cr);
-    cairo_rectangle(cr, std::round(plot[0]) - 0.5, std::round(plot[1]) - 0.5, std::round(plot[2]) + 1,
-                    std::round(plot[3]) + 1);
-    set_color(cr, frame_color);
-    cairo_set_line_width(cr, 1.0);
-    cairo_stroke(cr);
-    cairo_restore(cr);
+    if (drawn.cut) draw_plot_frame(cr, plot);
 }
 
 }  // namespace dgwarp::picture_detail

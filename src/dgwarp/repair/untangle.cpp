@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
@@ -13,6 +15,39 @@
 namespace dgwarp {
 
 namespace {
+
+// The tuning of the search (docs/UNTANGLE.md explains each step; measured on
+// SU2's bricks and the twisted bar, where these values repair every cell).
+
+// A hexahedron's 8 nodes, in up to 3 coordinates: the largest cell.
+constexpr std::size_t max_cell_coordinates = 8 * 3;
+// The deficit counts how far cells are below this small positive quality, not
+// below 0: a cell repaired to a quality of 1e-12 would be inverted again by
+// the next round-off, and a margin pushes it clearly clear.
+constexpr double margin = 0.02;
+// k of the soft minimum -log(sum exp(-k q)) / k: within log(n) / k of the
+// smallest quality, about 0.1 for the 20 cells around a node of a
+// tetrahedral mesh; larger k is closer to the minimum but less smooth.
+constexpr double softness = 30;
+// Deficits within this are equal: round-off of a sum of qualities of order 1.
+constexpr double deficit_tolerance = 1e-14;
+// A node's first search step, as a fraction of its shortest edge: a quarter
+// leaves a fold in a few steps without jumping past a neighbour.
+constexpr double first_step_fraction = 0.25;
+// The search of one node ends when its step has halved to this fraction of
+// the first: below it the gains are round-off.
+constexpr double last_step_fraction = 1e-3;
+// Qualities of up to this many cells around a node are kept on the stack (a
+// node of a tetrahedral mesh has about 20-30); more go to the heap.
+constexpr std::size_t cells_on_stack = 64;
+// Jacobi sweeps of the smoothing restart after a stalled round: enough to
+// move a band of folded cells a few cells wide (each sweep reaches one ring further).
+constexpr int smoothing_sweeps = 20;
+// A round gains nothing when it repairs no cell and lifts the worst one by
+// less than this; after this many such rounds in a row the repair stops
+// (the first of them starts the smoothing restart).
+constexpr double min_gain = 1e-3;
+constexpr int max_stalled_rounds = 2;
 
 /// The cells around each node (compressed rows).
 struct NodeCells {
@@ -44,7 +79,7 @@ public:
 
     double quality(std::int64_t c) const {
         const auto nodes = cells_.nodes_of(static_cast<std::size_t>(c));
-        std::array<double, 8 * 3> coords{};
+        std::array<double, max_cell_coordinates> coords{};
         for (std::size_t k = 0; k < nodes.size(); ++k)
             for (int d = 0; d < dim_; ++d)
                 coords[k * dim_ + d] = points_[static_cast<std::size_t>(nodes[k]) * dim_ + d];
@@ -97,12 +132,9 @@ struct Worth {
     double worst = std::numeric_limits<double>::infinity();
 };
 
-constexpr double softness = 30;
-constexpr double margin = 0.02;
-
 Worth worth(const CellJudge& judge, std::span<const std::int64_t> around) {
     Worth w;
-    std::array<double, 64> small{};
+    std::array<double, cells_on_stack> small{};
     std::vector<double> large;
     double* q = small.data();
     if (around.size() > small.size()) {
@@ -124,9 +156,8 @@ Worth worth(const CellJudge& judge, std::span<const std::int64_t> around) {
 /// A move is better when it lowers the deficit, or keeps it and raises the
 /// soft minimum without turning a valid neighbourhood invalid.
 bool better(const Worth& candidate, const Worth& current) {
-    constexpr double tiny = 1e-14;
-    if (candidate.deficit > current.deficit + tiny) return true;
-    if (candidate.deficit < current.deficit - tiny) return false;
+    if (candidate.deficit > current.deficit + deficit_tolerance) return true;
+    if (candidate.deficit < current.deficit - deficit_tolerance) return false;
     if (current.worst > 0 && !(candidate.worst > 0)) return false;
     return candidate.soft > current.soft;
 }
@@ -142,9 +173,9 @@ void improve_node(int dim, const ElementList& cells, const CellJudge& judge, std
                   NodeId node, std::span<double> points, int max_steps) {
     double* x = points.data() + static_cast<std::size_t>(node) * dim;
     Worth current = worth(judge, around);
-    double step = 0.25 * local_length(dim, cells, around, node, points);
+    double step = first_step_fraction * local_length(dim, cells, around, node, points);
     if (!(step > 0)) return;
-    const double smallest_step = step * 1e-3;
+    const double smallest_step = step * last_step_fraction;
     for (int s = 0; s < max_steps && step > smallest_step; ++s) {
         std::array<double, 3> best_move{}, gradient{};
         Worth best = current;
@@ -213,155 +244,175 @@ void smooth(int dim, const ElementList& cells, const NodeCells& around, std::spa
     }
 }
 
-}  // namespace
+bool is_bad(double quality, double target) { return !(quality > target); }
 
-UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
-                        std::span<const NodeId> fixed_nodes, std::span<double> points, const UntangleOptions& options) {
+/// Checks the inputs (see untangle.hpp); one flag per node: 1 when it is fixed.
+std::vector<std::uint8_t> checked_fixed_flags(int dim, const ElementList& cells,
+                                              std::span<const std::int8_t> orientations,
+                                              std::span<const NodeId> fixed_nodes, std::size_t coordinates,
+                                              const UntangleOptions& options) {
     if (dim != 2 && dim != 3) throw MeshError("untangle: dimension " + std::to_string(dim) + " is not 2 or 3");
-    if (points.size() % static_cast<std::size_t>(dim) != 0)
-        throw MeshError("untangle: " + std::to_string(points.size()) + " coordinates are not a whole number of " +
+    if (coordinates % static_cast<std::size_t>(dim) != 0)
+        throw MeshError("untangle: " + std::to_string(coordinates) + " coordinates are not a whole number of " +
                         std::to_string(dim) + "D points");
     if (orientations.size() != cells.size())
         throw MeshError("untangle: " + std::to_string(orientations.size()) + " orientations for " +
                         std::to_string(cells.size()) + " cells");
-    const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
+    const std::size_t num_points = coordinates / static_cast<std::size_t>(dim);
     for (std::size_t i = 0; i < cells.nodes.size(); ++i)
         if (cells.nodes[i] < 0 || static_cast<std::size_t>(cells.nodes[i]) >= num_points)
             throw MeshError("untangle: a cell names node " + std::to_string(cells.nodes[i]) + " of " +
-                            std::to_string(num_points), {}, cells.nodes[i]);
+                                std::to_string(num_points),
+                            {}, cells.nodes[i]);
     std::vector<std::uint8_t> fixed(num_points, 0);
     for (NodeId n : fixed_nodes) {
         if (n < 0 || static_cast<std::size_t>(n) >= num_points)
             throw MeshError("untangle: fixed node " + std::to_string(n) + " is not one of the " +
-                            std::to_string(num_points) + " nodes", {}, n);
+                                std::to_string(num_points) + " nodes",
+                            {}, n);
         fixed[static_cast<std::size_t>(n)] = 1;
     }
-
     if (!(options.target_quality >= 0 && options.target_quality < 1))
         throw Error("untangle: the target quality must be in [0, 1), not " + std::to_string(options.target_quality));
+    return fixed;
+}
 
-    const CellJudge judge(dim, cells, orientations, points);
-    const double target = options.target_quality;
-    auto is_bad = [&](double q) { return !(q > target); };
-    UntangleReport report;
-    std::vector<double> quality(cells.size());
-    parallel_for(static_cast<std::int64_t>(cells.size()),
-                 [&](std::int64_t c) { quality[static_cast<std::size_t>(c)] = judge.quality(c); });
-    // The cells to repair: at or below the target, with a node free to move.
-    auto movable_cell = [&](std::int64_t c) {
-        for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c)))
+/// The cells to repair (at or below the target, with a node free to move),
+/// ascending; counts the inverted and below-target cells in `report`.
+std::vector<std::int64_t> cells_to_repair(const ElementList& cells, std::span<const double> quality,
+                                          std::span<const std::uint8_t> fixed, double target, UntangleReport& report) {
+    auto movable_cell = [&](std::size_t c) {
+        for (NodeId n : cells.nodes_of(c))
             if (!fixed[static_cast<std::size_t>(n)]) return true;
         return false;
     };
     std::vector<std::int64_t> bad;
     for (std::size_t c = 0; c < cells.size(); ++c) {
         if (!(quality[c] > 0)) ++report.inverted_before;
-        if (is_bad(quality[c])) {
+        if (is_bad(quality[c], target)) {
             ++report.below_target_before;
-            if (movable_cell(static_cast<std::int64_t>(c))) bad.push_back(static_cast<std::int64_t>(c));
+            if (movable_cell(c)) bad.push_back(static_cast<std::int64_t>(c));
         }
     }
-    report.inverted_after = report.inverted_before;
-    report.below_target_after = report.below_target_before;
-    report.min_quality_after = 1;
-    if (bad.empty()) return report;
+    return bad;
+}
 
-    const NodeCells around = node_cells(cells, num_points);
-    const std::vector<double> original(points.begin(), points.end());
-    std::vector<std::uint8_t> touched(num_points, 0);
-    std::vector<NodeId> touched_list;
-    auto score = [&](const std::vector<std::int64_t>& list) {  // how far from done: fewer, then better
-        double worst = std::numeric_limits<double>::infinity();
-        for (std::int64_t c : list) worst = std::min(worst, judge.quality(c));
-        return std::pair<std::size_t, double>(list.size(), worst);
+/// How far from done a list of cells to repair is: fewer, then a better worst quality.
+std::pair<std::size_t, double> score(const CellJudge& judge, const std::vector<std::int64_t>& bad) {
+    double worst = std::numeric_limits<double>::infinity();
+    for (std::int64_t c : bad) worst = std::min(worst, judge.quality(c));
+    return {bad.size(), worst};
+}
+
+/// The free nodes of the cells `bad` and of their neighbours up to `rings`
+/// rings out, ascending.
+std::vector<NodeId> free_nodes_around(const ElementList& cells, const NodeCells& around,
+                                      std::span<const std::uint8_t> fixed, std::span<const std::int64_t> bad,
+                                      int rings) {
+    std::vector<std::uint8_t> in_region(fixed.size(), 0);
+    std::vector<NodeId> region;
+    auto add = [&](NodeId n) {
+        if (!in_region[static_cast<std::size_t>(n)]) {
+            in_region[static_cast<std::size_t>(n)] = 1;
+            region.push_back(n);
+        }
     };
-    auto last = score(bad);
-    int stalled = 0;
-    for (int round = 1; round <= options.max_rounds && !bad.empty() && stalled < 2; ++round) {
-        report.rounds = round;
-        // The free nodes within round - 1 rings of the bad cells' nodes.
-        std::vector<std::uint8_t> in_region(num_points, 0);
-        std::vector<NodeId> region;
-        auto add = [&](NodeId n) {
-            if (!in_region[static_cast<std::size_t>(n)]) {
-                in_region[static_cast<std::size_t>(n)] = 1;
-                region.push_back(n);
-            }
-        };
-        for (std::int64_t c : bad)
-            for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c))) add(n);
-        for (int ring = 1; ring < round; ++ring) {
-            const std::size_t end = region.size();
-            for (std::size_t i = 0; i < end; ++i)
-                for (std::int64_t c : around.of(static_cast<std::size_t>(region[i])))
-                    for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c))) add(n);
-        }
-        std::vector<NodeId> movable;
-        for (NodeId n : region)
-            if (!fixed[static_cast<std::size_t>(n)]) movable.push_back(n);
-        std::sort(movable.begin(), movable.end());
-        for (NodeId n : movable)
-            if (!touched[static_cast<std::size_t>(n)]) {
-                touched[static_cast<std::size_t>(n)] = 1;
-                touched_list.push_back(n);
-            }
-        // After a round that gained nothing, the search is stuck in a fold that
-        // no single node can leave: smooth the region first (each node to the
-        // mean of its cells' centroids, which unfolds bands of flipped cells),
-        // and keep the result only if the round then ends better.
-        std::vector<double> snapshot;
-        if (stalled > 0) {
-            snapshot.reserve(movable.size() * static_cast<std::size_t>(dim));
-            for (NodeId n : movable)
-                for (int d = 0; d < dim; ++d) snapshot.push_back(points[static_cast<std::size_t>(n) * dim + d]);
-            smooth(dim, cells, around, movable, points, 20);
-        }
-        for (int sweep = 0; sweep < options.sweeps_per_round; ++sweep)
-            for (NodeId n : movable)
-                improve_node(dim, cells, judge, around.of(static_cast<std::size_t>(n)), n, points, options.max_steps);
-
-        // Only the cells around moved nodes can have changed.
-        std::vector<std::int64_t> still;
-        std::vector<std::uint8_t> seen(cells.size(), 0);
-        auto check = [&](std::int64_t c) {
-            if (seen[static_cast<std::size_t>(c)]) return;
-            seen[static_cast<std::size_t>(c)] = 1;
-            if (is_bad(judge.quality(c))) still.push_back(c);
-        };
-        for (std::int64_t c : bad) check(c);
-        for (NodeId n : movable)
-            for (std::int64_t c : around.of(static_cast<std::size_t>(n))) check(c);
-        std::sort(still.begin(), still.end());
-        if (!snapshot.empty() && !(still.size() < bad.size() || (still.size() == bad.size() && score(still).second > last.second))) {
-            for (std::size_t i = 0; i < movable.size(); ++i)  // the smoothing did not help: undo the round
-                for (int d = 0; d < dim; ++d)
-                    points[static_cast<std::size_t>(movable[i]) * dim + d] = snapshot[i * static_cast<std::size_t>(dim) + d];
-            still = bad;
-        }
-        bad = std::move(still);
-        const auto now = score(bad);
-        stalled = (now.first < last.first || now.second > last.second + 1e-3) ? 0 : stalled + 1;
-        last = now;
+    for (std::int64_t c : bad)
+        for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c))) add(n);
+    for (int ring = 0; ring < rings; ++ring) {
+        const std::size_t end = region.size();
+        for (std::size_t i = 0; i < end; ++i)
+            for (std::int64_t c : around.of(static_cast<std::size_t>(region[i])))
+                for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c))) add(n);
     }
+    std::vector<NodeId> movable;
+    for (NodeId n : region)
+        if (!fixed[static_cast<std::size_t>(n)]) movable.push_back(n);
+    std::sort(movable.begin(), movable.end());
+    return movable;
+}
 
-    // Final counts: only cells around the touched nodes changed.
-    std::sort(touched_list.begin(), touched_list.end());
-    std::vector<std::uint8_t> changed(cells.size(), 0);
-    for (NodeId n : touched_list)
-        for (std::int64_t c : around.of(static_cast<std::size_t>(n))) changed[static_cast<std::size_t>(c)] = 1;
+/// What a repair round works on.
+struct Repair {
+    int dim;
+    const ElementList& cells;
+    const CellJudge& judge;
+    const NodeCells& around;
+    std::span<double> points;
+    const UntangleOptions& options;
+};
+
+/// The cells of `bad` and around `moved` still at or below the target, ascending
+/// (only the cells around moved nodes can have changed).
+std::vector<std::int64_t> still_bad(const Repair& r, std::span<const std::int64_t> bad,
+                                    std::span<const NodeId> moved) {
+    std::vector<std::int64_t> still;
+    std::vector<std::uint8_t> seen(r.cells.size(), 0);
+    auto check = [&](std::int64_t c) {
+        if (seen[static_cast<std::size_t>(c)]) return;
+        seen[static_cast<std::size_t>(c)] = 1;
+        if (is_bad(r.judge.quality(c), r.options.target_quality)) still.push_back(c);
+    };
+    for (std::int64_t c : bad) check(c);
+    for (NodeId n : moved)
+        for (std::int64_t c : r.around.of(static_cast<std::size_t>(n))) check(c);
+    std::sort(still.begin(), still.end());
+    return still;
+}
+
+/// One round: moves each of `movable` in turn, sweeps_per_round times, and
+/// returns the cells still to repair. After a round that gained nothing
+/// (`restart`), the search is stuck in a fold that no single node can leave:
+/// the region is smoothed first (each node to the mean of its cells'
+/// centroids, which unfolds bands of flipped cells), and the round is undone
+/// unless it then ends better than `bad` (whose worst quality is `worst`).
+std::vector<std::int64_t> repair_round(const Repair& r, std::span<const NodeId> movable,
+                                       const std::vector<std::int64_t>& bad, bool restart, double worst) {
+    const int dim = r.dim;
+    std::vector<double> snapshot;
+    if (restart) {
+        snapshot.reserve(movable.size() * static_cast<std::size_t>(dim));
+        for (NodeId n : movable)
+            for (int d = 0; d < dim; ++d) snapshot.push_back(r.points[static_cast<std::size_t>(n) * dim + d]);
+        smooth(dim, r.cells, r.around, movable, r.points, smoothing_sweeps);
+    }
+    for (int sweep = 0; sweep < r.options.sweeps_per_round; ++sweep)
+        for (NodeId n : movable)
+            improve_node(dim, r.cells, r.judge, r.around.of(static_cast<std::size_t>(n)), n, r.points,
+                         r.options.max_steps);
+    std::vector<std::int64_t> still = still_bad(r, bad, movable);
+    const bool better = still.size() < bad.size() || (still.size() == bad.size() && score(r.judge, still).second > worst);
+    if (!snapshot.empty() && !better) {
+        for (std::size_t i = 0; i < movable.size(); ++i)  // the smoothing did not help: undo the round
+            for (int d = 0; d < dim; ++d)
+                r.points[static_cast<std::size_t>(movable[i]) * dim + d] = snapshot[i * static_cast<std::size_t>(dim) + d];
+        return bad;
+    }
+    return still;
+}
+
+/// The report's counts after the rounds: only the cells around the touched
+/// nodes can have changed (`quality`: every cell's quality before).
+void count_after(const Repair& r, std::span<const double> quality, std::vector<NodeId> touched,
+                 std::span<const double> original, UntangleReport& report) {
+    const int dim = r.dim;
+    std::sort(touched.begin(), touched.end());
+    std::vector<std::uint8_t> changed(r.cells.size(), 0);
+    for (NodeId n : touched)
+        for (std::int64_t c : r.around.of(static_cast<std::size_t>(n))) changed[static_cast<std::size_t>(c)] = 1;
     report.inverted_after = report.below_target_after = 0;
     double worst_changed = 1;
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        const double q = changed[c] ? judge.quality(static_cast<std::int64_t>(c)) : quality[c];
+    for (std::size_t c = 0; c < r.cells.size(); ++c) {
+        const double q = changed[c] ? r.judge.quality(static_cast<std::int64_t>(c)) : quality[c];
         if (!(q > 0)) ++report.inverted_after;
-        if (is_bad(q)) ++report.below_target_after;
+        if (is_bad(q, r.options.target_quality)) ++report.below_target_after;
         if (changed[c]) worst_changed = std::min(worst_changed, q);
     }
-    for (NodeId n : touched_list) {
+    for (NodeId n : touched) {
         double s = 0;
         for (int d = 0; d < dim; ++d) {
             const double e =
-                points[static_cast<std::size_t>(n) * dim + d] - original[static_cast<std::size_t>(n) * dim + d];
+                r.points[static_cast<std::size_t>(n) * dim + d] - original[static_cast<std::size_t>(n) * dim + d];
             s += e * e;
         }
         if (s > 0) {
@@ -370,6 +421,48 @@ UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::
         }
     }
     report.min_quality_after = worst_changed;
+}
+
+}  // namespace
+
+UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
+                        std::span<const NodeId> fixed_nodes, std::span<double> points, const UntangleOptions& options) {
+    const std::vector<std::uint8_t> fixed =
+        checked_fixed_flags(dim, cells, orientations, fixed_nodes, points.size(), options);
+    const std::size_t num_points = fixed.size();
+    const CellJudge judge(dim, cells, orientations, points);
+    UntangleReport report;
+    std::vector<double> quality(cells.size());
+    parallel_for(static_cast<std::int64_t>(cells.size()),
+                 [&](std::int64_t c) { quality[static_cast<std::size_t>(c)] = judge.quality(c); });
+    std::vector<std::int64_t> bad = cells_to_repair(cells, quality, fixed, options.target_quality, report);
+    report.inverted_after = report.inverted_before;
+    report.below_target_after = report.below_target_before;
+    report.min_quality_after = 1;
+    if (bad.empty()) return report;
+
+    const NodeCells around = node_cells(cells, num_points);
+    const Repair r{dim, cells, judge, around, points, options};
+    const std::vector<double> original(points.begin(), points.end());
+    std::vector<std::uint8_t> touched(num_points, 0);
+    std::vector<NodeId> touched_list;
+    auto last = score(judge, bad);
+    int stalled = 0;
+    for (int round = 1; round <= options.max_rounds && !bad.empty() && stalled < max_stalled_rounds; ++round) {
+        report.rounds = round;
+        // Round r moves the free nodes within r - 1 rings of the cells to repair.
+        const std::vector<NodeId> movable = free_nodes_around(cells, around, fixed, bad, round - 1);
+        for (NodeId n : movable)
+            if (!touched[static_cast<std::size_t>(n)]) {
+                touched[static_cast<std::size_t>(n)] = 1;
+                touched_list.push_back(n);
+            }
+        bad = repair_round(r, movable, bad, stalled > 0, last.second);
+        const auto now = score(judge, bad);
+        stalled = (now.first < last.first || now.second > last.second + min_gain) ? 0 : stalled + 1;
+        last = now;
+    }
+    count_after(r, quality, std::move(touched_list), original, report);
     return report;
 }
 
