@@ -33,3 +33,16 @@ def test_quality_histogram_writes_a_png(tmp_path):
     pytest.importorskip("matplotlib")
     run_example("quality_histogram.py", "--methods", "dg-idw", "-o", "q.png", cwd=tmp_path)
     assert (tmp_path / "q.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_readmes_python_block_runs(tmp_path, cli):
+    readme = (SOURCE_DIR / "README.md").read_text()
+    section = readme[readme.index("\n## Python\n"):]
+    block = section[section.index("```python\n") + len("```python\n"):]
+    block = block[: block.index("```")]
+    cli("case", "naca0012", "-o", tmp_path / "naca0012.su2")
+    (tmp_path / "readme.py").write_text(block)
+    result = subprocess.run([sys.executable, "readme.py"], cwd=tmp_path, capture_output=True, text=True,
+                            env=dict(os.environ), timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "dgwarp.Quality(" in result.stdout and (tmp_path / "turned.vtu").exists()
