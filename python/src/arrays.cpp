@@ -37,6 +37,7 @@ py::array as_array(py::handle obj, const char* name, const py::dtype& dtype, boo
     try {
         return py::array(py::module_::import("numpy").attr("asarray")(obj, dtype));
     } catch (py::error_already_set& e) {
+        if (e.matches(PyExc_KeyboardInterrupt) || e.matches(PyExc_MemoryError)) throw;
         throw py::type_error(std::string(name) + " must be an array of numbers, got " +
                              py::str(py::type::of(obj)).cast<std::string>() + " (" + e.what() + ")");
     }
@@ -60,6 +61,8 @@ void check_finite(const py::array_t<double>& a, const char* name) {
 }
 
 }  // namespace
+
+py::array float_array(py::handle obj, const char* name) { return as_array(obj, name, py::dtype::of<double>(), true); }
 
 std::string shape_text(const py::array& a) {
     std::string s = "(";

@@ -20,6 +20,11 @@ namespace dgwarp::python {
 /// Any row count.
 inline constexpr pybind11::ssize_t any_rows = -1;
 
+/// `obj` as a float64 ndarray of any shape: itself when it is one (float64
+/// and C-contiguous, else TypeError / ValueError), else converted (a list or
+/// tuple; TypeError naming `name` when that fails).
+pybind11::array float_array(pybind11::handle obj, const char* name);
+
 /// `obj` as a float64 array of shape (rows, cols) (rows may be any_rows);
 /// `cols_alt` > 0 also accepts that many columns (e.g. 2 or 3 for a 2D
 /// vector). With `finite`, NaN and infinities are refused.

@@ -23,7 +23,11 @@ Classes classes;
 
 PyObject* new_class(py::module_& m, const char* name, const char* doc, py::tuple bases) {
     const std::string qualified = std::string("dgwarp.") + name;
-    PyObject* c = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, bases.ptr(), nullptr);
+    // str(e) is the library's message, also for OSError, which would print
+    // "[Errno None] None: 'file'" once its filename is set.
+    py::dict attributes;
+    attributes["__str__"] = py::module_::import("builtins").attr("BaseException").attr("__str__");
+    PyObject* c = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, bases.ptr(), attributes.ptr());
     if (!c) throw py::error_already_set();
     m.add_object(name, py::handle(c));  // the module holds a reference; ours is never released
     return c;

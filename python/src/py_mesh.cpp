@@ -168,9 +168,7 @@ std::vector<Field> fields(py::handle obj, const char* what, std::size_t count) {
     for (auto item : py::reinterpret_borrow<py::dict>(obj)) {
         const std::string name = py::str(item.first);
         const std::string where = std::string(what) + "['" + name + "']";
-        py::array a = py::isinstance<py::array>(item.second)
-                          ? py::reinterpret_borrow<py::array>(item.second)
-                          : py::array(py::module_::import("numpy").attr("asarray")(item.second, py::dtype::of<double>()));
+        const py::array a = float_array(item.second, where.c_str());
         const py::ssize_t components = a.ndim() == 2 ? a.shape(1) : 1;
         const auto values = a.ndim() == 1 ? float_vector(a, where.c_str(), static_cast<py::ssize_t>(count))
                                           : float_matrix(a, where.c_str(), static_cast<py::ssize_t>(count),
@@ -255,9 +253,7 @@ void bind_mesh(py::module_& m) {
             "from_arrays",
             [](py::handle points, py::handle cells, py::handle markers) {
                 auto p = std::make_shared<PyMesh>();
-                const py::array pa = py::isinstance<py::array>(points)
-                                         ? py::reinterpret_borrow<py::array>(points)
-                                         : py::array(py::module_::import("numpy").attr("asarray")(points, py::dtype::of<double>()));
+                const py::array pa = float_array(points, "points");
                 const py::ssize_t dim = pa.ndim() == 2 ? pa.shape(1) : 0;
                 if (dim != 2 && dim != 3)
                     throw py::value_error("points must have shape (n, 2) or (n, 3), got " + shape_text(pa));

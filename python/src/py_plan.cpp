@@ -237,9 +237,7 @@ BoundaryMotion motion_from_arrays(const PyPlan& p, py::handle t, py::handle w, p
     // Fills component `field` of every boundary node from `obj` (rows of `width` values, 2 or 3).
     const auto fill = [&](py::handle obj, const char* name, Vec3 NodeMotion::*field, bool moving_only) {
         if (obj.is_none()) return;
-        py::array a = py::isinstance<py::array>(obj)
-                          ? py::reinterpret_borrow<py::array>(obj)
-                          : py::array(py::module_::import("numpy").attr("asarray")(obj, py::dtype::of<double>()));
+        const py::array a = float_array(obj, name);
         const py::ssize_t alt = field == &NodeMotion::rotation ? 0 : dim;
         if (a.ndim() == 1) {
             const auto v = float_vector(a, name, 3, alt);
@@ -386,9 +384,11 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
     return p;
 }
 
-py::object deform_step(const PyPlan& p, py::handle motion, std::size_t frame, py::handle translation,
+py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, py::handle translation,
                        py::handle rotation, py::handle center, py::handle out, const py::object& untangle,
                        double untangle_target, py::object progress) {
+    if (frame_arg < 0) throw py::index_error("frame " + std::to_string(frame_arg) + ": frames are numbered from 0");
+    const auto frame = static_cast<std::size_t>(frame_arg);
     const bool arrays = !translation.is_none() || !rotation.is_none() || !center.is_none();
     if (motion.is_none() && !arrays)
         throw py::type_error("deform() needs a motion (a dict in the motion-file form, a dgwarp.Motion) or "

@@ -84,7 +84,8 @@ def test_dg_harmonic_last_resort_and_untangle_equal_the_cli(tmp_path, cli, su2_m
     motion_file = MOTIONS / "brick_rotate_top.json"
     mesh = dgwarp.read(mesh_file)
     motion = dgwarp.Motion(motion_file)
-    harmonic = dgwarp.prepare(mesh, moving=motion, method="dg-harmonic")
+    with pytest.warns(dgwarp.DgwarpWarning, match="116 boundary nodes are on both a moving and a static marker"):
+        harmonic = dgwarp.prepare(mesh, moving=motion, method="dg-harmonic")  # as the CLI warns
     repaired = harmonic.deform(motion)
     raw = harmonic.deform(motion, untangle=False)
     assert dgwarp.quality(mesh, points=raw).inverted > 0  # the step alone folds cells
@@ -92,7 +93,8 @@ def test_dg_harmonic_last_resort_and_untangle_equal_the_cli(tmp_path, cli, su2_m
     out = cli_points(cli, tmp_path, mesh_file, motion_file, "--method", "dg-harmonic")
     assert np.array_equal(repaired, dgwarp.read(out).points)
     # --untangle after DG-IDW.
-    plan = dgwarp.prepare(mesh, moving=motion, length_scale="auto")
+    with pytest.warns(dgwarp.DgwarpWarning):
+        plan = dgwarp.prepare(mesh, moving=motion, length_scale="auto")
     untangled = plan.deform(motion, untangle=True)
     out = cli_points(cli, tmp_path, mesh_file, motion_file, "--length-scale", "auto", "--untangle", name="u.su2")
     assert np.array_equal(untangled, dgwarp.read(out).points)

@@ -136,6 +136,10 @@ def test_deform_refuses_bad_arrays(plan):
         plan.deform(translation=static_row)
     with pytest.raises(ValueError, match="about z only"):
         plan.deform(rotation=[0.1, 0, 0])
+    with pytest.raises(TypeError, match="translation must be an array of numbers"):
+        plan.deform(translation="abc")
+    with pytest.raises(IndexError, match="frame -1"):
+        plan.deform(TRANSLATE, frame=-1)
     with pytest.raises(TypeError, match="needs a motion"):
         plan.deform()
     with pytest.raises(TypeError, match="not both"):
