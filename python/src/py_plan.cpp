@@ -16,119 +16,17 @@
 #include "bindings.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/plan_file.hpp"
-#include "dgwarp/methods/option_names.hpp"
-#include "dgwarp/quality/mesh_quality.hpp"
-#include "dgwarp/repair/untangle.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
 #include "py_motion.hpp"
+#include "py_options.hpp"
+#include "py_step_motion.hpp"
 
 namespace py = pybind11;
 
 namespace dgwarp::python {
 
-const RepairReference& PyPlan::repair_reference() const {
-    std::call_once(repair_once_, [this] {
-        repair_.own_orientation = cell_orientations(mesh->mesh);
-        repair_.orientation = dominant_orientations(mesh->mesh, repair_.own_orientation);
-        repair_.quality = cell_qualities(mesh->mesh, repair_.orientation);
-    });
-    return repair_;
-}
-
 namespace {
-
-std::string method_list() {
-    std::string s;
-    for (Method m : all_methods) s += (s.empty() ? "" : ", ") + std::string(method_name(m));
-    return s;
-}
-
-Method method_arg(const std::string& name) {
-    std::string dashed = name;
-    std::replace(dashed.begin(), dashed.end(), '_', '-');
-    if (auto m = method_from_name(dashed)) return *m;
-    throw py::value_error("unknown method '" + name + "'; choose one of " + method_list());
-}
-
-SharedNodeRule shared_nodes_arg(const std::string& rule) {
-    if (rule == "moving_wins") return SharedNodeRule::moving_wins;
-    if (rule == "static_wins") return SharedNodeRule::static_wins;
-    throw py::value_error("shared_nodes must be 'moving_wins' or 'static_wins', got '" + rule + "'");
-}
-
-const char* shared_nodes_name(SharedNodeRule rule) {
-    return rule == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins";
-}
-
-std::string keyword(std::string_view option) {
-    std::string k(option);
-    std::replace(k.begin(), k.end(), '-', '_');
-    return k;
-}
-
-std::string option_keywords() {
-    std::string s;
-    for (const MethodOptionName& o : method_option_names) s += (s.empty() ? "" : ", ") + keyword(o.name);
-    return s;
-}
-
-double number_option(py::handle value, const std::string& name) {
-    if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
-                                              py::hasattr(value, "__float__")))
-        throw py::type_error(name + " must be a number, got " + py::str(py::type::of(value)).cast<std::string>());
-    const double v = value.cast<double>();
-    if (!std::isfinite(v)) throw py::value_error(name + " must be finite, got " + py::repr(value).cast<std::string>());
-    return v;
-}
-
-/// The method options given as keyword arguments (as the CLI's flags, with
-/// '_' for '-'); an option of another method than `method` is refused, as the
-/// CLI refuses it (deform_setup.cpp). Ranges are checked by the library.
-MethodOptions method_options(Method method, const py::kwargs& kwargs, const char* function) {
-    MethodOptions o;
-    for (auto item : kwargs) {
-        const std::string name = py::str(item.first);
-        const py::handle value = item.second;
-        const std::optional<Method> owner = option_method(name);
-        if (!owner || name.find('-') != std::string::npos)
-            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name +
-                                 "'; the method options are " + option_keywords());
-        if (*owner != method)
-            throw py::value_error(name + " is an option of " + std::string(method_name(*owner)) +
-                                  "; it does nothing with " + std::string(method_name(method)));
-        if (name == "a_translation") o.dg_idw.a_translation = number_option(value, name);
-        else if (name == "a_rotation") o.dg_idw.a_rotation = number_option(value, name);
-        else if (name == "length_scale") {
-            if (py::isinstance<py::str>(value)) {
-                if (value.cast<std::string>() != "auto")
-                    throw py::value_error("length_scale must be a positive number or 'auto', got '" +
-                                          value.cast<std::string>() + "'");
-                o.dg_idw.length_scale = 0;  // auto
-            } else {
-                o.dg_idw.length_scale = number_option(value, name);
-                if (!(o.dg_idw.length_scale > 0))
-                    throw py::value_error("length_scale must be a positive number or 'auto', got " +
-                                          py::repr(value).cast<std::string>());
-            }
-        } else if (name == "dg_idw_weights") {
-            const std::string w = py::str(value);
-            if (w != "paper" && w != "continuous")
-                throw py::value_error("dg_idw_weights must be 'paper' or 'continuous', got '" + w + "'");
-            o.dg_idw.weighting = w == "continuous" ? DgIdwWeighting::continuous : DgIdwWeighting::paper;
-        } else if (name == "dgm_substep") {
-            if (!py::isinstance<py::bool_>(value)) throw py::type_error("dgm_substep must be True or False");
-            o.dgm.on_invalid = value.cast<bool>() ? DgmOptions::OnInvalidGraph::substep : DgmOptions::OnInvalidGraph::fail;
-        } else if (name == "idw_moving_exponent") o.idw.exponent_moving = number_option(value, name);
-        else if (name == "idw_static_exponent") o.idw.exponent_static = number_option(value, name);
-        else if (name == "rbf_radius") o.rbf.support_radius = number_option(value, name);
-        else if (name == "rbf_greedy") o.rbf.greedy_tolerance = number_option(value, name);
-        else if (name == "harmonic_wall_spacing") o.dg_harmonic.wall_spacing = number_option(value, name);
-        else if (name == "harmonic_growth") o.dg_harmonic.growth = number_option(value, name);
-        else throw std::logic_error("method option " + name + " is not bound");
-    }
-    return o;
-}
 
 /// Marker names from None, one name, or a list of names.
 std::vector<std::string> marker_list(py::handle obj, const char* what) {
@@ -200,125 +98,6 @@ void warn_plan(const PyPlan& p) {
          std::string(method_name(plan_method(p.plan))) +
          " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary (far "
          "field, walls), it should be a marker of the mesh");
-}
-
-/// A motion's frame resolved against the plan's boundary, after checking the
-/// motion fits the plan: no marker the plan holds static moves, same
-/// shared-node rule (resolve_frame does the rest, as for the CLI).
-ResolvedFrame resolve_motion_frame(const PyPlan& p, const MotionSpec& spec, std::size_t frame) {
-    const std::size_t frames = frame_count(spec);
-    if (frame >= frames)
-        throw py::index_error("frame " + std::to_string(frame) + " of a motion with " + std::to_string(frames) +
-                              " frame" + (frames == 1 ? "" : "s"));
-    if (spec.shared_nodes != p.shared_nodes)
-        throw py::value_error("the motion's shared_nodes is '" + std::string(shared_nodes_name(spec.shared_nodes)) +
-                              "'; the plan was prepared with '" + shared_nodes_name(p.shared_nodes) + "'");
-    const Mesh& mesh = p.mesh->mesh;
-    check_marker_names(mesh, spec);
-    const MotionFrame& f = frame_spec(spec, frame);
-    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
-        if (!p.boundary.context.marker_moving[m] &&
-            !std::holds_alternative<FixedMotion>(marker_motion(spec, f, mesh.markers[m].name)))
-            throw MeshError((spec.source.empty() ? std::string("motion") : spec.source) + " moves marker '" +
-                                mesh.markers[m].name +
-                                "', which the plan holds static; prepare the plan with it among the moving markers",
-                            mesh.markers[m].name);
-    return resolve_frame(mesh, spec, p.boundary, frame);
-}
-
-/// One motion per boundary node from arrays (translation, rotation vector,
-/// centre): each None (zero), one vector for every moving node, or one row
-/// per boundary node in Plan.boundary_nodes order.
-BoundaryMotion motion_from_arrays(const PyPlan& p, py::handle t, py::handle w, py::handle c) {
-    const BoundarySet& b = p.boundary.boundary;
-    const auto n = static_cast<py::ssize_t>(b.nodes.size());
-    const int dim = p.mesh->mesh.dim;
-    BoundaryMotion motion(b.nodes.size());
-    // Fills component `field` of every boundary node from `obj` (rows of `width` values, 2 or 3).
-    const auto fill = [&](py::handle obj, const char* name, Vec3 NodeMotion::*field, bool moving_only) {
-        if (obj.is_none()) return;
-        const py::array a = float_array(obj, name);
-        const py::ssize_t alt = field == &NodeMotion::rotation ? 0 : dim;
-        if (a.ndim() == 1) {
-            const auto v = float_vector(a, name, 3, alt);
-            Vec3 value{};
-            std::copy(v.data(), v.data() + v.size(), value.begin());
-            for (std::size_t i = 0; i < motion.size(); ++i)
-                if (b.moving[i] || !moving_only) motion[i].*field = value;
-            return;
-        }
-        const auto v = float_matrix(a, name, n, 3, alt);
-        const auto width = static_cast<std::size_t>(v.shape(1));
-        const double* d = v.data();
-        for (std::size_t i = 0; i < motion.size(); ++i) {
-            Vec3& value = motion[i].*field;
-            for (std::size_t k = 0; k < width; ++k) value[k] = d[i * width + k];
-            if (moving_only && !b.moving[i] && value != Vec3{})
-                throw py::value_error(std::string(name) + "[" + std::to_string(i) + "] is not zero, but boundary node " +
-                                      std::to_string(i) + " (mesh node " + std::to_string(b.nodes[i]) +
-                                      ") is static; static nodes' rows must be zero (Plan.moving says which move)");
-        }
-    };
-    fill(t, "translation", &NodeMotion::translation, true);
-    fill(w, "rotation", &NodeMotion::rotation, true);
-    fill(c, "center", &NodeMotion::center, false);
-    if (dim == 2)
-        for (std::size_t i = 0; i < motion.size(); ++i) {
-            if (motion[i].rotation[0] != 0 || motion[i].rotation[1] != 0)
-                throw py::value_error("rotation of boundary node " + std::to_string(i) +
-                                      ": a 2D mesh turns about z only (rotation vector (0, 0, angle))");
-            if (motion[i].translation[2] != 0)
-                throw py::value_error("translation of boundary node " + std::to_string(i) +
-                                      ": a 2D mesh moves in the xy plane only (z = 0)");
-        }
-    return motion;
-}
-
-/// DG-harmonic's last resort, or the untangle step asked for: what
-/// `dgwarp deform` does after each step (cmd_deform.cpp, repair_and_measure).
-void repair_after_step(const PyPlan& p, std::span<double> points, const py::object& untangle, double target) {
-    const bool asked = !untangle.is_none() && untangle.cast<bool>();
-    const bool last_resort = untangle.is_none() && plan_method(p.plan) == Method::dg_harmonic;
-    if (!asked && !last_resort) return;
-    const Mesh& mesh = p.mesh->mesh;
-    py::gil_scoped_release release;
-    const RepairReference& ref = p.repair_reference();
-    if (asked) {
-        UntangleOptions options;
-        options.target_quality = target;
-        dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points, options);
-        return;
-    }
-    const std::vector<double> q = cell_qualities(mesh, points, ref.orientation);
-    if (!newly_inverted_cells(q, ref.quality).empty())
-        dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points);
-}
-
-py::dict options_dict(const PyPlan& p) {
-    const MethodOptions& o = p.options;
-    py::dict d;
-    switch (plan_method(p.plan)) {
-        case Method::dg_idw:
-            d["a_translation"] = o.dg_idw.a_translation;
-            d["a_rotation"] = o.dg_idw.a_rotation;
-            d["length_scale"] = o.dg_idw.length_scale == 0 ? py::object(py::str("auto")) : py::object(py::float_(o.dg_idw.length_scale));
-            d["dg_idw_weights"] = weighting_name(o.dg_idw.weighting);
-            break;
-        case Method::dgm: d["dgm_substep"] = o.dgm.on_invalid == DgmOptions::OnInvalidGraph::substep; break;
-        case Method::idw:
-            d["idw_moving_exponent"] = o.idw.exponent_moving;
-            d["idw_static_exponent"] = o.idw.exponent_static;
-            break;
-        case Method::rbf:
-            d["rbf_radius"] = o.rbf.support_radius;
-            d["rbf_greedy"] = o.rbf.greedy_tolerance;
-            break;
-        case Method::dg_harmonic:
-            d["harmonic_wall_spacing"] = o.dg_harmonic.wall_spacing;
-            d["harmonic_growth"] = o.dg_harmonic.growth;
-            break;
-    }
-    return d;
 }
 
 std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle moving, py::handle static_markers,
@@ -474,7 +253,8 @@ void bind_plan(py::module_& m) {
              "reads it back; so does `dgwarp deform --plan`.")
         .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(p.plan))); },
                                "The method's name ('dg-idw', 'dgm', 'idw', 'rbf', 'dg-harmonic').")
-        .def_property_readonly("options", &options_dict, "The method's options as used (keyword-argument names).")
+        .def_property_readonly("options", [](const PyPlan& p) { return options_dict(plan_method(p.plan), p.options); },
+                               "The method's options as used (keyword-argument names).")
         .def_property_readonly("mesh", [](const PyPlan& p) { return std::const_pointer_cast<PyMesh>(p.mesh); },
                                "The mesh the plan was prepared for.")
         .def_property_readonly(
