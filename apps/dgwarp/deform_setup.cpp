@@ -10,6 +10,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/methods/option_names.hpp"
 #include "flag_values.hpp"
 #include "report.hpp"
 
@@ -48,26 +49,17 @@ void refuse_conflict(const SetupArgs& args, const std::string& plan_file, const 
                                              "; prepare it again with the option, or drop it");
 }
 
-// The method each method option belongs to.
-Method option_method(const std::string& flag) {
-    if (flag.starts_with("--dgm-")) return Method::dgm;
-    if (flag.starts_with("--idw-")) return Method::idw;
-    if (flag.starts_with("--rbf-")) return Method::rbf;
-    if (flag.starts_with("--harmonic-")) return Method::dg_harmonic;
-    return Method::dg_idw;  // --a-translation, --a-rotation, --length-scale, --dg-idw-weights
-}
-
 // An option of another method than the one that runs would be silently
 // ignored: a usage error instead (with --method all, every option applies).
 void refuse_other_methods_options(const SetupArgs& args, Method method) {
     if (args.method == "all") return;
     for (const std::string& flag : args.given)
-        if (option_method(flag) != method)
-            throw CLI::ValidationError(flag, "is an option of " + std::string(method_name(option_method(flag))) +
+        if (const Method owner = option_method(flag).value(); owner != method)
+            throw CLI::ValidationError(flag, "is an option of " + std::string(method_name(owner)) +
                                                  "; it does nothing with " + std::string(method_name(method)) +
                                                  (args.method_given ? std::string()
                                                                     : " (the default method): add --method " +
-                                                                          std::string(method_name(option_method(flag)))));
+                                                                          std::string(method_name(owner))));
 }
 
 std::int64_t moving_count(const BoundarySet& b) {

@@ -80,13 +80,4 @@ std::string milliseconds(double seconds) {
     return s.str();
 }
 
-std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output) {
-    const std::vector<std::string> dropped = dropped_extras(extras, output);
-    if (dropped.empty()) return "";
-    std::string list;
-    for (const auto& d : dropped) list += (list.empty() ? "" : ", ") + d;
-    return output.string() + " holds the mesh only: " + input + " also has " + list +
-           " (an .su2 output keeps them)";
-}
-
 }  // namespace dgwarp::cli

@@ -29,10 +29,6 @@ nlohmann::json ratio_json(const RatioSummary& r);
 void print_quality(std::ostream& out, const QualitySummary& q, bool histogram);
 void print_ratio(std::ostream& out, const RatioSummary& r);
 
-/// The warning for an output that cannot hold what the input file has besides
-/// the mesh (dropped_extras; "" when nothing is dropped).
-std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output);
-
 /// A duration for people: "12.3 ms" (two decimals below 10 ms).
 std::string milliseconds(double seconds);
 

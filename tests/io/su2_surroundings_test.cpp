@@ -107,4 +107,7 @@ TEST(Su2Surroundings, WriteMeshKeepsThemForSu2AndSaysWhatOtherFormatsDrop) {
     EXPECT_TRUE(dropped_extras(extras, dir / "out.su2").empty());
     EXPECT_EQ(dropped_extras(extras, dir / "out.vtu"), (std::vector<std::string>{"NPERIODIC= 1", "FFD_NBOX= 1"}));
     EXPECT_EQ(dropped_extras(extras, dir / "out.msh").size(), 2u);
+    EXPECT_EQ(dropped_extras_warning(extras, "in.su2", "out.vtu"),
+              "out.vtu holds the mesh only: in.su2 also has NPERIODIC= 1, FFD_NBOX= 1 (an .su2 output keeps them)");
+    EXPECT_EQ(dropped_extras_warning(extras, "in.su2", "out.su2"), "");
 }

@@ -113,6 +113,13 @@ TEST(MotionResolve, UnknownMarkerNamesItAndListsTheMeshMarkers) {
     EXPECT_TRUE(contains(f.what(), "frame 1")) << f.what();
 }
 
+TEST(MotionResolve, CheckMarkerNamesAloneRefusesWhatResolveBoundaryRefuses) {
+    EXPECT_NO_THROW(check_marker_names(two_squares(), spec_of(R"({"markers": {"airfoil": "fixed"}})")));
+    const MeshError e = mesh_error_of([] { check_marker_names(two_squares(), spec_of(R"({"markers": {"wing": "fixed"}})")); });
+    EXPECT_EQ(e.marker(), "wing");
+    EXPECT_TRUE(contains(e.what(), "airfoil, farfield")) << e.what();
+}
+
 TEST(MotionResolve, DisplacementFileGivesTranslationPerNode) {
     const auto dir = test::scratch_dir();
     write(dir / "d.csv", "node,dx,dy\n4,0.1,0\n5,0.2,0\n6,0.3,-0.1\n7,0,0\n");

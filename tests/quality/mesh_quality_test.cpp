@@ -132,6 +132,20 @@ TEST(QualityDriver, ReferenceOrientationsJudgeADeformedMesh) {
     EXPECT_GE(s.inverted, 1);
 }
 
+TEST(QualityDriver, OtherPointsGiveWhatACopyOfTheMeshWithThemGives) {
+    const Mesh reference = perturbed_hex_grid(3, 3, 3, 2);
+    const auto orientation = cell_orientations(reference);
+    Mesh deformed = reference;
+    for (std::size_t i = 0; i < deformed.points.size(); ++i) deformed.points[i] += 0.05 * std::sin(3.0 * i);
+    const NodeId n4 = deformed.cells.nodes_of(0)[4];
+    deformed.points[3 * static_cast<std::size_t>(n4) + 2] = -1.0;  // one inverted cell among them
+    const auto from_copy = cell_qualities(deformed, orientation);
+    const auto from_points = cell_qualities(reference, deformed.points, orientation);
+    EXPECT_EQ(from_points, from_copy);  // bit for bit
+    EXPECT_LE(from_points[0], 0);
+    EXPECT_EQ(cell_qualities(reference, reference.points, orientation), cell_qualities(reference, orientation));
+}
+
 TEST(QualityDriver, ThreadCountDoesNotChangeTheResult) {
     const Mesh m = perturbed_hex_grid(24, 20, 16, 9);
     const int threads = num_threads();

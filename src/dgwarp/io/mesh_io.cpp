@@ -53,6 +53,15 @@ std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::fil
     return extras.su2->contents;
 }
 
+std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output) {
+    const std::vector<std::string> dropped = dropped_extras(extras, output);
+    if (dropped.empty()) return "";
+    std::string list;
+    for (const auto& d : dropped) list += (list.empty() ? "" : ", ") + d;
+    return output.string() + " holds the mesh only: " + input + " also has " + list +
+           " (an .su2 output keeps them)";
+}
+
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                 const WriteOptions& options) {
     const std::string ext = lower_case_extension(path);

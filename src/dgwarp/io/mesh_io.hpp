@@ -66,6 +66,11 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
 /// when an SU2 input's surroundings go to a .vtu; empty when all is kept.
 std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path);
 
+/// The warning for writing a mesh read from `input` with `extras` to
+/// `output`, which cannot hold them (dropped_extras; "" when nothing is
+/// dropped). The CLI and the Python package print it.
+std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output);
+
 /// Writes a mesh atomically (temporary file, then rename); the format comes
 /// from the extension.
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields = {},

@@ -39,23 +39,6 @@ std::string point_text(std::span<const double> p) {
     return s.str();
 }
 
-void check_marker_names(const Mesh& mesh, const MotionSpec& spec) {
-    for (std::size_t f = 0; f < spec.frames.size(); ++f)
-        for (const auto& entry : spec.frames[f].markers) {
-            // Not a structured binding: clang before 16 cannot capture one in a lambda.
-            const std::string& name = entry.first;
-            const bool known = std::any_of(mesh.markers.begin(), mesh.markers.end(),
-                                           [&](const Marker& m) { return m.name == name; });
-            if (known) continue;
-            std::string list;
-            for (const Marker& m : mesh.markers) list += (list.empty() ? "" : ", ") + m.name;
-            throw MeshError(where(spec, spec.time ? 0 : f) + " names marker '" + name +
-                                "', which the mesh does not have; the mesh has: " +
-                                (list.empty() ? std::string("no markers") : list),
-                            name);
-        }
-}
-
 double bounding_box_diagonal(const Mesh& mesh) {
     const auto dim = static_cast<std::size_t>(mesh.dim);
     if (mesh.num_points() == 0) return 0;
@@ -301,6 +284,23 @@ void warn_coincident_boundary_nodes(const Context& c, std::vector<std::string>& 
 }
 
 }  // namespace
+
+void check_marker_names(const Mesh& mesh, const MotionSpec& spec) {
+    for (std::size_t f = 0; f < spec.frames.size(); ++f)
+        for (const auto& entry : spec.frames[f].markers) {
+            // Not a structured binding: clang before 16 cannot capture one in a lambda.
+            const std::string& name = entry.first;
+            const bool known = std::any_of(mesh.markers.begin(), mesh.markers.end(),
+                                           [&](const Marker& m) { return m.name == name; });
+            if (known) continue;
+            std::string list;
+            for (const Marker& m : mesh.markers) list += (list.empty() ? "" : ", ") + m.name;
+            throw MeshError(where(spec, spec.time ? 0 : f) + " names marker '" + name +
+                                "', which the mesh does not have; the mesh has: " +
+                                (list.empty() ? std::string("no markers") : list),
+                            name);
+        }
+}
 
 ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
     Series series = make_series(mesh, spec);

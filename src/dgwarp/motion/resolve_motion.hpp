@@ -52,6 +52,12 @@ struct ResolvedBoundary {
     SeriesContext context;                    // what resolve_frame reuses for every frame
 };
 
+/// Throws MeshError (naming the marker, and listing the mesh's markers) when
+/// a frame of `spec` names a marker `mesh` does not have. resolve_boundary
+/// checks it; a caller resolving frames of another spec against a
+/// ResolvedBoundary (the Python package's plans) checks it with this.
+void check_marker_names(const Mesh& mesh, const MotionSpec& spec);
+
 /// Classifies markers and boundary nodes, and checks everything about `spec`
 /// against `mesh` that can fail: unknown marker names, node files (coverage,
 /// ids, dimension), 2D motions out of the plane, and the shared-node rule in

@@ -31,13 +31,14 @@ private:
     double sum_ = 0, compensation_ = 0;
 };
 
-/// Copies the coordinates of cell i into `out` (nodes × dim, row-major).
-std::span<const double> cell_coords(const Mesh& mesh, std::size_t i, std::array<double, 24>& out) {
+/// Copies the coordinates (from `points`) of cell i into `out` (nodes × dim, row-major).
+std::span<const double> cell_coords(const Mesh& mesh, std::span<const double> points, std::size_t i,
+                                    std::array<double, 24>& out) {
     const auto nodes = mesh.cells.nodes_of(i);
     const std::size_t dim = static_cast<std::size_t>(mesh.dim);
     assert(nodes.size() * dim <= out.size());
     for (std::size_t n = 0; n < nodes.size(); ++n)
-        for (std::size_t c = 0; c < dim; ++c) out[n * dim + c] = mesh.points[static_cast<std::size_t>(nodes[n]) * dim + c];
+        for (std::size_t c = 0; c < dim; ++c) out[n * dim + c] = points[static_cast<std::size_t>(nodes[n]) * dim + c];
     return {out.data(), nodes.size() * dim};
 }
 
@@ -49,7 +50,7 @@ std::vector<std::int8_t> cell_orientations(const Mesh& reference) {
         std::array<double, 24> coords;
         const auto k = static_cast<std::size_t>(i);
         orientation[k] = static_cast<std::int8_t>(
-            cell_orientation(reference.cells.types[k], cell_coords(reference, k, coords), reference.dim));
+            cell_orientation(reference.cells.types[k], cell_coords(reference, reference.points, k, coords), reference.dim));
     });
     return orientation;
 }
@@ -73,12 +74,18 @@ std::vector<std::int8_t> dominant_orientations(const Mesh& mesh, std::vector<std
 }
 
 std::vector<double> cell_qualities(const Mesh& mesh, std::span<const std::int8_t> orientations) {
+    return cell_qualities(mesh, mesh.points, orientations);
+}
+
+std::vector<double> cell_qualities(const Mesh& mesh, std::span<const double> points,
+                                   std::span<const std::int8_t> orientations) {
     assert(orientations.size() == mesh.cells.size());
+    assert(points.size() == mesh.points.size());
     std::vector<double> quality(mesh.cells.size());
     parallel_for(static_cast<std::int64_t>(quality.size()), [&](std::int64_t i) {
         std::array<double, 24> coords;
         const auto k = static_cast<std::size_t>(i);
-        quality[k] = cell_shape_quality(mesh.cells.types[k], cell_coords(mesh, k, coords), mesh.dim, orientations[k]);
+        quality[k] = cell_shape_quality(mesh.cells.types[k], cell_coords(mesh, points, k, coords), mesh.dim, orientations[k]);
     });
     return quality;
 }

@@ -27,6 +27,10 @@ std::vector<std::int8_t> dominant_orientations(const Mesh& mesh, std::vector<std
 /// judged against `orientations` (size mesh.cells.size()). Threaded (each cell
 /// is computed on its own); the result is independent of the thread count.
 std::vector<double> cell_qualities(const Mesh& mesh, std::span<const std::int8_t> orientations);
+/// The same for the cells of `mesh` at other coordinates `points` (num_points
+/// × dim, e.g. a deformed copy of mesh.points), without copying the mesh.
+std::vector<double> cell_qualities(const Mesh& mesh, std::span<const double> points,
+                                   std::span<const std::int8_t> orientations);
 
 struct QualityHistogram {
     std::vector<double> edges;          // bin edges, size counts.size() + 1; first bin is (-inf, 0]

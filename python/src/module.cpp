@@ -1,0 +1,19 @@
+// The extension module dgwarp._core; the package's public API is
+// python/dgwarp/__init__.py, which re-exports what is bound here.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "errors.hpp"
+#include "py_mesh.hpp"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "dgwarp's C++ library (import the dgwarp package, not this module)";
+    dgwarp::python::bind_errors(m);
+    dgwarp::python::bind_mesh(m);
+    dgwarp::python::bind_quality(m);
+    dgwarp::python::bind_motion(m);
+    dgwarp::python::bind_plan(m);
+    dgwarp::python::bind_extras(m);
+}

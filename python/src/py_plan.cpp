@@ -1,0 +1,352 @@
+// dgwarp.prepare, dgwarp.load_plan and dgwarp.Plan: the library's prepare /
+// deform (methods/method.hpp) and plan files (io/plan_file.hpp) for Python,
+// with the boundary classified and each step's motion resolved as the CLI's
+// `dgwarp prepare` / `dgwarp deform` do (apps/dgwarp/deform_setup.cpp,
+// cmd_deform.cpp), through the same library calls.
+#include "py_plan.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/plan_file.hpp"
+#include "errors.hpp"
+#include "progress_bridge.hpp"
+#include "py_motion.hpp"
+#include "py_options.hpp"
+#include "py_step_motion.hpp"
+
+namespace py = pybind11;
+
+namespace dgwarp::python {
+
+namespace {
+
+/// Marker names from None, one name, or a list of names.
+std::vector<std::string> marker_list(py::handle obj, const char* what) {
+    std::vector<std::string> names;
+    if (obj.is_none()) return names;
+    if (py::isinstance<py::str>(obj)) return {obj.cast<std::string>()};
+    if (!py::isinstance<py::sequence>(obj))
+        throw py::type_error(std::string(what) + " must be a list of marker names, got " +
+                             py::str(py::type::of(obj)).cast<std::string>());
+    for (auto item : obj) {
+        if (!py::isinstance<py::str>(item))
+            throw py::type_error(std::string(what) + " must hold marker names (str), got " +
+                                 py::str(py::type::of(item)).cast<std::string>());
+        names.push_back(item.cast<std::string>());
+    }
+    return names;
+}
+
+/// The boundary classified as `dgwarp prepare` classifies it for a motion
+/// file that moves exactly the `moving` markers (resolve_boundary, with the
+/// shared-node rule and tolerance of such a file); or, for a motion, as that
+/// motion classifies it.
+ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle static_markers, SharedNodeRule rule,
+                          double tolerance, SharedNodeRule& rule_used) {
+    MotionSpec spec;
+    if (py::isinstance<PyMotion>(moving) || py::isinstance<py::dict>(moving)) {
+        if (!static_markers.is_none())
+            throw py::type_error("static: a motion classifies the markers itself (markers it does not move are static)");
+        spec = motion_arg(moving)->spec;
+    } else {
+        const std::vector<std::string> moved = marker_list(moving, "moving");
+        std::vector<std::string> fixed = marker_list(static_markers, "static");
+        for (const std::string& name : moved) find_marker(mesh.mesh, name);  // MeshError naming the mesh's markers
+        for (const std::string& name : fixed) {
+            find_marker(mesh.mesh, name);
+            if (std::find(moved.begin(), moved.end(), name) != moved.end())
+                throw py::value_error("marker '" + name + "' is both moving and static");
+        }
+        if (!static_markers.is_none())
+            for (const Marker& marker : mesh.mesh.markers)
+                if (std::find(moved.begin(), moved.end(), marker.name) == moved.end() &&
+                    std::find(fixed.begin(), fixed.end(), marker.name) == fixed.end())
+                    throw py::value_error("marker '" + marker.name +
+                                          "' is neither moving nor static: every marker's nodes are boundary nodes; "
+                                          "list it in one of them (or leave static=None: every marker not moving)");
+        MotionFrame frame;
+        for (const std::string& name : moved) frame.markers[name] = RigidMotion{};  // moving, whatever its motion
+        spec.frames.push_back(std::move(frame));
+        spec.shared_nodes = rule;
+        spec.shared_tolerance = tolerance;
+        spec.source = "prepare";
+    }
+    rule_used = spec.shared_nodes;
+    ResolvedBoundary resolved;
+    {
+        py::gil_scoped_release release;
+        resolved = resolve_boundary(mesh.mesh, spec);
+    }
+    warn_all(resolved.warnings);
+    return resolved;
+}
+
+/// What `dgwarp deform` warns about a plan (volume nodes outside the graph's hull).
+void warn_plan(const PyPlan& p) {
+    const PlanSummary s = plan_summary(p.plan);
+    if (s.outside_hull == 0) return;
+    warn(std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
+         " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
+         std::string(method_name(plan_method(p.plan))) +
+         " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary (far "
+         "field, walls), it should be a marker of the mesh");
+}
+
+std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle moving, py::handle static_markers,
+                                     const std::string& method_name_arg, const std::string& shared_nodes,
+                                     double shared_tolerance, py::object progress, const py::kwargs& kwargs) {
+    const Method method = method_arg(method_name_arg);
+    auto p = std::make_shared<PyPlan>();
+    p->options = method_options(method, kwargs, "prepare");
+    p->mesh = mesh;
+    p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
+                           p->shared_nodes);
+    ProgressBridge bridge(progress);
+    bridge.run([&] {
+        p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, p->boundary.boundary, p->options,
+                          bridge.function());
+    });
+    warn_plan(*p);
+    return p;
+}
+
+std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::shared_ptr<PyMesh> mesh,
+                                       py::handle moving, py::handle static_markers, const std::string& shared_nodes,
+                                       double shared_tolerance) {
+    auto p = std::make_shared<PyPlan>();
+    p->mesh = mesh;
+    {
+        py::gil_scoped_release release;
+        p->plan = load_plan(path);
+    }
+    const std::vector<NodeId>* nodes = nullptr;
+    const std::vector<std::uint8_t>* flags = nullptr;
+    if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) {
+        nodes = &d->boundary_nodes, flags = &d->boundary_moving;
+        p->options.dg_idw = d->options;
+    } else if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
+        nodes = &h->boundary_nodes, flags = &h->boundary_moving;
+        p->options.dg_harmonic = h->options;
+    }
+    py::object moving_names = py::reinterpret_borrow<py::object>(moving);
+    if (moving.is_none() && nodes) {
+        // The markers all of whose nodes the plan moves (moving_wins: a moving
+        // marker's nodes all move; a static marker's move only where shared).
+        py::list names;
+        for (const Marker& marker : mesh->mesh.markers) {
+            const std::vector<NodeId> ids = marker_nodes(marker);
+            const bool all_moving = !ids.empty() && std::all_of(ids.begin(), ids.end(), [&](NodeId id) {
+                const auto it = std::lower_bound(nodes->begin(), nodes->end(), id);
+                return it != nodes->end() && *it == id && (*flags)[static_cast<std::size_t>(it - nodes->begin())];
+            });
+            if (all_moving) names.append(marker.name);
+        }
+        moving_names = names;
+    }
+    p->boundary = classify(*mesh, moving_names, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
+                           p->shared_nodes);
+    {
+        py::gil_scoped_release release;
+        if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) check_plan_fits(*d, mesh->mesh.points, p->boundary.boundary);
+        if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan))
+            check_plan_fits(*h, mesh->mesh.points, p->boundary.boundary);
+    }
+    warn_plan(*p);
+    return p;
+}
+
+py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, py::handle translation,
+                       py::handle rotation, py::handle center, py::handle out, const py::object& untangle,
+                       double untangle_target, py::object progress) {
+    if (frame_arg < 0) throw py::index_error("frame " + std::to_string(frame_arg) + ": frames are numbered from 0");
+    const auto frame = static_cast<std::size_t>(frame_arg);
+    const bool arrays = !translation.is_none() || !rotation.is_none() || !center.is_none();
+    if (motion.is_none() && !arrays)
+        throw py::type_error("deform() needs a motion (a dict in the motion-file form, a dgwarp.Motion) or "
+                             "translation= / rotation= / center= arrays");
+    BoundaryMotion boundary_motion;
+    std::vector<std::string> warnings;
+    if (!motion.is_none()) {
+        if (py::isinstance<py::array>(motion) && !arrays) {
+            boundary_motion = motion_from_arrays(p, motion, py::none(), py::none());  // a translation per node
+        } else {
+            if (arrays)
+                throw py::type_error("deform(): give a motion or translation= / rotation= / center=, not both");
+            if (py::isinstance<py::str>(motion))
+                throw py::type_error("deform(): a str motion is ambiguous; pass dgwarp.Motion(path) for a motion file");
+            const MotionPtr m = motion_arg(motion);
+            ResolvedFrame resolved = resolve_motion_frame(p, m->spec, frame);
+            boundary_motion = std::move(resolved.motion);
+            warnings = std::move(resolved.warnings);
+        }
+    } else {
+        if (frame != 0) throw py::value_error("frame is for a motion of several frames, not for arrays");
+        boundary_motion = motion_from_arrays(p, translation, rotation, center);
+    }
+    if (!untangle.is_none() && !py::isinstance<py::bool_>(untangle))
+        throw py::type_error("untangle must be None (the method's default), True or False");
+    if (!(untangle_target >= 0 && untangle_target < 1))
+        throw py::value_error("untangle_target must be in [0, 1), got " + std::to_string(untangle_target));
+    const Mesh& mesh = p.mesh->mesh;
+    const auto rows = static_cast<py::ssize_t>(mesh.num_points());
+    py::array_t<double> result = out.is_none() ? py::array_t<double>({rows, static_cast<py::ssize_t>(mesh.dim)})
+                                               : output_matrix(out, "out", rows, mesh.dim);
+    const std::span<double> xs(result.mutable_data(), static_cast<std::size_t>(result.size()));
+    StepReport report;
+    ProgressBridge bridge(progress);
+    bridge.run([&] { report = deform(p.plan, mesh.points, boundary_motion, xs, p.options, bridge.function()); });
+    repair_after_step(p, xs, untangle, untangle_target);
+    warn_all(warnings);
+    if (report.conflicting_shared_vertices > 0)
+        warn(std::to_string(report.conflicting_shared_vertices) + " group" +
+             (report.conflicting_shared_vertices == 1 ? " of boundary nodes at the same coordinates was"
+                                                      : "s of boundary nodes at the same coordinates were") +
+             " given different motions: the nodes separate, and the volume nodes follow the first moving node of "
+             "each group");
+    return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+}
+
+}  // namespace
+
+void bind_plan(py::module_& m) {
+    py::class_<PyPlan, std::shared_ptr<PyPlan>>(
+        m, "Plan",
+        "A method's plan for one mesh and one split of its markers into moving and static ones:\n"
+        "prepare once (dgwarp.prepare, dgwarp.load_plan), deform every step (Plan.deform).\n"
+        "Immutable: several threads may deform with one plan at the same time.")
+        .def("deform", &deform_step, py::arg("motion") = py::none(), py::kw_only(), py::arg("frame") = 0,
+             py::arg("translation") = py::none(), py::arg("rotation") = py::none(), py::arg("center") = py::none(),
+             py::arg("out") = py::none(), py::arg("untangle") = py::none(), py::arg("untangle_target") = 0.0,
+             py::arg("progress") = py::none(),
+             "One step: the new coordinates of every node, (num_points, dim) float64, measured from the\n"
+             "original mesh (not from the previous step).\n"
+             "The motion, either:\n"
+             "  motion:  a dict in the motion-file form (docs/MOTION.md) or a dgwarp.Motion, and `frame`\n"
+             "           (0-based) for a motion of several frames; markers it does not name stay fixed;\n"
+             "           it may not move a marker the plan holds static;\n"
+             "  or arrays per boundary node (Plan.boundary_nodes order), each None (zero), one vector\n"
+             "  for every moving node, or (n_boundary, 3) rows (translation and center also (n, dim)):\n"
+             "  translation, rotation (axis x angle, radians; about z only in 2D), center; rows of\n"
+             "  static nodes must be zero. A bare array as `motion` is the translation.\n"
+             "  out:     a float64 C-contiguous (num_points, dim) array to write into (no allocation);\n"
+             "           it is returned.\n"
+             "  untangle: None (default: DG-harmonic repairs cells its step inverted, its last resort;\n"
+             "           the other methods do nothing), True (repair cells at or below untangle_target\n"
+             "           by moving volume nodes, as `dgwarp deform --untangle`), False (no repair).\n"
+             "  progress: a callable taking the fraction done.\n"
+             "The GIL is released while the step runs. Raises InvalidResultError (ValueError) when the\n"
+             "method cannot move the mesh validly (DGM without dgm_substep).")
+        .def("save", [](const PyPlan& p, const std::filesystem::path& path) {
+                 py::gil_scoped_release release;
+                 save_plan(path, p.plan);
+             },
+             py::arg("path"),
+             "Writes the plan to `path` (atomically; DG-IDW and DG-harmonic plans). dgwarp.load_plan(path, mesh)\n"
+             "reads it back; so does `dgwarp deform --plan`.")
+        .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(p.plan))); },
+                               "The method's name ('dg-idw', 'dgm', 'idw', 'rbf', 'dg-harmonic').")
+        .def_property_readonly("options", [](const PyPlan& p) { return options_dict(plan_method(p.plan), p.options); },
+                               "The method's options as used (keyword-argument names).")
+        .def_property_readonly("mesh", [](const PyPlan& p) { return std::const_pointer_cast<PyMesh>(p.mesh); },
+                               "The mesh the plan was prepared for.")
+        .def_property_readonly(
+            "boundary_nodes",
+            [](py::object self) {
+                const auto& nodes = self.cast<const PyPlan&>().boundary.boundary.nodes;
+                return read_only_view(nodes.data(), {static_cast<py::ssize_t>(nodes.size())}, self);
+            },
+            "The boundary nodes' mesh ids, sorted (int32, read-only view): the order of per-node motion arrays.")
+        .def_property_readonly(
+            "moving",
+            [](py::object self) {
+                const auto& flags = self.cast<const PyPlan&>().boundary.boundary.moving;
+                py::array a(py::dtype("bool"), {static_cast<py::ssize_t>(flags.size())}, {}, flags.data(), self);
+                py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+                return a;
+            },
+            "Per boundary node, whether it moves (bool, read-only view).")
+        .def_property_readonly(
+            "boundary_points",
+            [](const PyPlan& p) {
+                const Mesh& mesh = p.mesh->mesh;
+                const auto& nodes = p.boundary.boundary.nodes;
+                const auto dim = static_cast<std::size_t>(mesh.dim);
+                py::array_t<double> a({static_cast<py::ssize_t>(nodes.size()), static_cast<py::ssize_t>(dim)});
+                double* d = a.mutable_data();
+                for (NodeId n : nodes)
+                    for (std::size_t k = 0; k < dim; ++k) *d++ = mesh.points[static_cast<std::size_t>(n) * dim + k];
+                return a;
+            },
+            "The boundary nodes' original coordinates, (n_boundary, dim) (a copy).")
+        .def_property_readonly("moving_markers", [](const PyPlan& p) { return p.boundary.moving_markers; },
+                               "The markers that move, in mesh order.")
+        .def_property_readonly("static_markers", [](const PyPlan& p) { return p.boundary.static_markers; },
+                               "The markers that stay, in mesh order.")
+        .def_property_readonly("shared_nodes", [](const PyPlan& p) { return std::string(shared_nodes_name(p.shared_nodes)); },
+                               "What nodes on a moving and a static marker do: 'moving_wins' or 'static_wins'.")
+        .def_property_readonly("memory_bytes", [](const PyPlan& p) { return plan_memory_bytes(p.plan); },
+                               "Bytes held by the plan's arrays.")
+        .def_property_readonly(
+            "summary",
+            [](const PyPlan& p) {
+                const PlanSummary s = plan_summary(p.plan);
+                py::dict d;
+                d["graph_simplices"] = s.graph_simplices;
+                d["outside_hull"] = s.outside_hull;
+                d["shared_vertices"] = s.shared_vertices;
+                d["coarse_points"] = s.coarse_points;
+                py::dict phases;
+                for (const auto& [name, seconds] : s.phase_seconds) phases[py::str(name)] = seconds;
+                d["phase_seconds"] = phases;
+                return d;
+            },
+            "What the plan holds (graph simplices, volume nodes outside the graph's hull, shared graph vertices,\n"
+            "coarse points) and how long each prepare phase took (empty for a loaded plan).")
+        .def("__repr__", [](const PyPlan& p) {
+            std::string moving;
+            for (const auto& name : p.boundary.moving_markers) moving += (moving.empty() ? "" : ", ") + name;
+            return "dgwarp.Plan(" + std::string(method_name(plan_method(p.plan))) + ", " +
+                   std::to_string(p.mesh->mesh.num_points()) + " nodes, " +
+                   std::to_string(p.boundary.boundary.nodes.size()) + " boundary nodes, moving: " +
+                   (moving.empty() ? "none" : moving) + ")";
+        });
+
+    m.def("prepare", &prepare_plan, py::arg("mesh"), py::arg("moving"), py::arg("static") = py::none(),
+          py::arg("method") = "dg-harmonic", py::kw_only(), py::arg("shared_nodes") = "moving_wins",
+          py::arg("shared_tolerance") = 0.0, py::arg("progress") = py::none(),
+          "Prepares `method`'s plan for `mesh`, once; Plan.deform then moves the mesh every step.\n"
+          "  moving: the markers that move (a list of names, or one name), or a motion (dict or\n"
+          "          dgwarp.Motion: the markers it moves, as `dgwarp prepare -m` classifies them);\n"
+          "  static: the markers that stay (default: every other marker); every marker's nodes are\n"
+          "          boundary nodes, so the two lists must cover all markers;\n"
+          "  method: 'dg-harmonic' (default: the robust method), 'dg-idw', 'dgm', 'idw', 'rbf';\n"
+          "  shared_nodes: 'moving_wins' (default) or 'static_wins': what nodes on a moving and a\n"
+          "          static marker do; shared_tolerance as in motion files (0: 1e-9 x the diagonal);\n"
+          "  progress: a callable taking the fraction done;\n"
+          "  **options: the method's options, named as the CLI's flags with '_' for '-':\n"
+          "          dg-idw: a_translation, a_rotation, length_scale (a number or 'auto'),\n"
+          "          dg_idw_weights ('paper' or 'continuous'); dgm: dgm_substep (bool); idw:\n"
+          "          idw_moving_exponent, idw_static_exponent; rbf: rbf_radius, rbf_greedy;\n"
+          "          dg-harmonic: harmonic_wall_spacing, harmonic_growth.\n"
+          "The GIL is released while the plan is built. Raises MeshError for an unknown marker or a\n"
+          "degenerate boundary, InputError (ValueError) for an option out of range, ValueError for an\n"
+          "option of another method, TypeError for an unknown keyword.");
+
+    m.def("load_plan", &load_plan_file, py::arg("path"), py::arg("mesh"), py::arg("moving") = py::none(),
+          py::arg("static") = py::none(), py::kw_only(), py::arg("shared_nodes") = "moving_wins",
+          py::arg("shared_tolerance") = 0.0,
+          "Reads a plan saved by Plan.save (or `dgwarp prepare`) for `mesh`, checked to be for this mesh\n"
+          "(MeshError otherwise). The moving markers are the markers all of whose nodes the plan moves;\n"
+          "give `moving` (and `static`, `shared_nodes`) when the plan was prepared otherwise. The plan\n"
+          "keeps its method and options. Raises IoError, ParseError for a damaged file.");
+}
+
+}  // namespace dgwarp::python

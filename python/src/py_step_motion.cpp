@@ -1,0 +1,115 @@
+#include "py_step_motion.hpp"
+
+#include <algorithm>
+
+#include "arrays.hpp"
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/repair/last_resort.hpp"
+#include "dgwarp/repair/unrepairable_cells.hpp"
+#include "dgwarp/repair/untangle.hpp"
+#include "py_options.hpp"
+
+namespace py = pybind11;
+
+namespace dgwarp::python {
+
+const RepairReference& PyPlan::repair_reference() const {
+    std::call_once(repair_once_, [this] {
+        repair_.own_orientation = cell_orientations(mesh->mesh);
+        repair_.orientation = dominant_orientations(mesh->mesh, repair_.own_orientation);
+        repair_.quality = cell_qualities(mesh->mesh, repair_.orientation);
+    });
+    return repair_;
+}
+
+ResolvedFrame resolve_motion_frame(const PyPlan& p, const MotionSpec& spec, std::size_t frame) {
+    const std::size_t frames = frame_count(spec);
+    if (frame >= frames)
+        throw py::index_error("frame " + std::to_string(frame) + " of a motion with " + std::to_string(frames) +
+                              " frame" + (frames == 1 ? "" : "s"));
+    if (spec.shared_nodes != p.shared_nodes)
+        throw py::value_error("the motion's shared_nodes is '" + std::string(shared_nodes_name(spec.shared_nodes)) +
+                              "'; the plan was prepared with '" + shared_nodes_name(p.shared_nodes) + "'");
+    const Mesh& mesh = p.mesh->mesh;
+    check_marker_names(mesh, spec);
+    const MotionFrame& f = frame_spec(spec, frame);
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
+        if (!p.boundary.context.marker_moving[m] &&
+            !std::holds_alternative<FixedMotion>(marker_motion(spec, f, mesh.markers[m].name)))
+            throw MeshError((spec.source.empty() ? std::string("motion") : spec.source) + " moves marker '" +
+                                mesh.markers[m].name +
+                                "', which the plan holds static; prepare the plan with it among the moving markers",
+                            mesh.markers[m].name);
+    return resolve_frame(mesh, spec, p.boundary, frame);
+}
+
+BoundaryMotion motion_from_arrays(const PyPlan& p, py::handle t, py::handle w, py::handle c) {
+    const BoundarySet& b = p.boundary.boundary;
+    const auto n = static_cast<py::ssize_t>(b.nodes.size());
+    const int dim = p.mesh->mesh.dim;
+    BoundaryMotion motion(b.nodes.size());
+    // Fills component `field` of every boundary node from `obj` (rows of `width` values, 2 or 3).
+    const auto fill = [&](py::handle obj, const char* name, Vec3 NodeMotion::*field, bool moving_only) {
+        if (obj.is_none()) return;
+        const py::array a = float_array(obj, name);
+        const py::ssize_t alt = field == &NodeMotion::rotation ? 0 : dim;
+        if (a.ndim() == 1) {
+            const auto v = float_vector(a, name, 3, alt);
+            Vec3 value{};
+            std::copy(v.data(), v.data() + v.size(), value.begin());
+            for (std::size_t i = 0; i < motion.size(); ++i)
+                if (b.moving[i] || !moving_only) motion[i].*field = value;
+            return;
+        }
+        const auto v = float_matrix(a, name, n, 3, alt);
+        const auto width = static_cast<std::size_t>(v.shape(1));
+        const double* d = v.data();
+        for (std::size_t i = 0; i < motion.size(); ++i) {
+            Vec3& value = motion[i].*field;
+            for (std::size_t k = 0; k < width; ++k) value[k] = d[i * width + k];
+            if (moving_only && !b.moving[i] && value != Vec3{})
+                throw py::value_error(std::string(name) + "[" + std::to_string(i) + "] is not zero, but boundary node " +
+                                      std::to_string(i) + " (mesh node " + std::to_string(b.nodes[i]) +
+                                      ") is static; static nodes' rows must be zero (Plan.moving says which move)");
+        }
+    };
+    fill(t, "translation", &NodeMotion::translation, true);
+    fill(w, "rotation", &NodeMotion::rotation, true);
+    fill(c, "center", &NodeMotion::center, false);
+    if (dim == 2)
+        for (std::size_t i = 0; i < motion.size(); ++i) {
+            if (motion[i].rotation[0] != 0 || motion[i].rotation[1] != 0)
+                throw py::value_error("rotation of boundary node " + std::to_string(i) +
+                                      ": a 2D mesh turns about z only (rotation vector (0, 0, angle))");
+            if (motion[i].translation[2] != 0)
+                throw py::value_error("translation of boundary node " + std::to_string(i) +
+                                      ": a 2D mesh moves in the xy plane only (z = 0)");
+        }
+    return motion;
+}
+
+// As cmd_deform.cpp's repair_and_measure.
+void repair_after_step(const PyPlan& p, std::span<double> points, const py::object& untangle, double target) {
+    const bool asked = !untangle.is_none() && untangle.cast<bool>();
+    const bool last_resort = untangle.is_none() && plan_method(p.plan) == Method::dg_harmonic;
+    if (!asked && !last_resort) return;
+    const Mesh& mesh = p.mesh->mesh;
+    py::gil_scoped_release release;
+    const RepairReference& ref = p.repair_reference();
+    if (asked) {
+        UntangleOptions options;
+        options.target_quality = target;
+        dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points, options);
+        return;
+    }
+    // The last resort: with its budget, and not where the boundary motion itself
+    // folds a cell (every node on the boundary: no repair of the volume can help).
+    const std::vector<double> q = cell_qualities(mesh, points, ref.orientation);
+    const std::vector<std::int64_t> folded = newly_inverted_cells(q, ref.quality);
+    if (!folded.empty() && cells_with_only_fixed_nodes(mesh.cells, p.boundary.boundary.nodes, folded).empty())
+        dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points,
+                         last_resort_untangle_options());
+}
+
+}  // namespace dgwarp::python

@@ -1,0 +1,140 @@
+"""dgwarp.read, Mesh (zero-copy views, from_arrays, write) and their errors."""
+
+import numpy as np
+import pytest
+
+import dgwarp
+
+from conftest import cli_json
+
+
+def square_mesh():
+    """Two triangles on the unit square, its four sides as two markers."""
+    points = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=np.float64)
+    cells = {"triangle": np.array([[0, 1, 2], [0, 2, 3]])}
+    markers = {"bottom": np.array([[0, 1]]), "rest": {"line": [[1, 2], [2, 3], [3, 0]]}}
+    return dgwarp.Mesh.from_arrays(points, cells, markers)
+
+
+def test_read_gives_the_file_content(naca_file):
+    mesh = dgwarp.read(naca_file)
+    assert (mesh.dim, mesh.num_points, mesh.num_cells) == (2, 1656, 3070)
+    assert mesh.marker_names == ["airfoil", "farfield"]
+    assert mesh.points.shape == (1656, 2) and mesh.points.dtype == np.float64
+    assert mesh.cells["triangle"].shape == (3070, 3) and mesh.cells["triangle"].dtype == np.int32
+    airfoil = mesh.markers["airfoil"]
+    assert airfoil.name == "airfoil" and len(airfoil.nodes) == 200
+    assert np.array_equal(airfoil.nodes, np.unique(airfoil.elements["line"]))
+    assert mesh.source == str(naca_file)
+
+
+def test_points_and_cells_are_read_only_views_without_copy(naca_file):
+    mesh = dgwarp.read(naca_file)
+    a, b = mesh.points, mesh.points
+    assert np.shares_memory(a, b)  # both view the mesh's own array
+    assert not a.flags.writeable and not a.flags.owndata
+    with pytest.raises(ValueError):
+        a[0, 0] = 1.0
+    assert np.shares_memory(mesh.cells["triangle"], mesh.cells["triangle"])
+    del mesh  # the view keeps the mesh alive
+    assert np.isfinite(a).all()
+
+
+def test_mixed_cells_come_by_type_with_their_positions(su2_meshes):
+    mesh = dgwarp.read(su2_meshes / "unsteady_square_cylinder_mesh_square_turb_hybrid.su2")
+    assert set(mesh.cells) == {"triangle", "quadrilateral"}
+    assert sum(len(v) for v in mesh.cells.values()) == mesh.num_cells
+    order = np.sort(np.concatenate(list(mesh.cell_index.values())))
+    assert np.array_equal(order, np.arange(mesh.num_cells))
+
+
+def test_from_arrays_round_trips_through_every_format(tmp_path):
+    mesh = square_mesh()
+    assert mesh.marker_names == ["bottom", "rest"]
+    for ext in ("su2", "msh", "vtu"):
+        path = tmp_path / f"square.{ext}"
+        mesh.write(path)
+        back = dgwarp.read(path)
+        assert np.array_equal(back.points, mesh.points), ext
+        assert np.array_equal(back.cells["triangle"], mesh.cells["triangle"]), ext
+        assert np.array_equal(back.markers["rest"].elements["line"], mesh.markers["rest"].elements["line"]), ext
+
+
+def test_write_with_other_points_and_fields(tmp_path):
+    mesh = square_mesh()
+    moved = mesh.points + 0.5
+    path = tmp_path / "moved.vtu"
+    mesh.write(path, points=moved, point_data={"d": moved - mesh.points}, cell_data={"q": [1.0, 2.0]})
+    assert np.array_equal(dgwarp.read(path).points, moved)
+    assert np.array_equal(mesh.points[0], [0, 0])  # the mesh itself is unchanged
+
+
+def test_su2_output_keeps_the_other_zones(tmp_path, su2_meshes):
+    # SU2's multi-zone pin array: zone 2 read, written back with zone 1 around it.
+    source = su2_meshes / "incomp_navierstokes_streamwise_periodic_chtPinArray_3d_3D_chtPinArray_coarse.su2"
+    mesh = dgwarp.read(source, zone=2)
+    out = tmp_path / "zone2.su2"
+    mesh.write(out)
+    again = dgwarp.read(out, zone=1)
+    assert np.array_equal(again.points, dgwarp.read(source, zone=1).points)
+    with pytest.warns(dgwarp.DgwarpWarning, match="holds the mesh only"):
+        mesh.write(tmp_path / "zone2.vtu")
+
+
+def test_cli_reads_what_python_writes(tmp_path, cli):
+    path = tmp_path / "square.su2"
+    square_mesh().write(path)
+    info = cli_json("info", path)["mesh"]
+    assert (info["dim"], info["nodes"], info["cells"]) == (2, 4, 2)
+    assert [m["name"] for m in info["markers"]] == ["bottom", "rest"]
+
+
+def test_read_errors_carry_the_library_message(tmp_path):
+    with pytest.raises(dgwarp.IoError) as e:
+        dgwarp.read(tmp_path / "missing.su2")
+    assert isinstance(e.value, OSError) and isinstance(e.value, dgwarp.Error)
+    assert e.value.filename == str(tmp_path / "missing.su2")
+    assert str(e.value) == f"{tmp_path / 'missing.su2'}: cannot open file for reading: No such file or directory"
+
+    bad = tmp_path / "bad.su2"
+    bad.write_text("NDIME= 2\nNELEM= 1\n5 0 1 2 0\nNPOIN= x\n")
+    with pytest.raises(dgwarp.ParseError) as e:
+        dgwarp.read(bad)
+    assert isinstance(e.value, ValueError) and e.value.file == str(bad) and e.value.line > 0
+    assert str(e.value).startswith(f"{bad}:")
+
+    with pytest.raises(dgwarp.FormatError, match="obj"):
+        dgwarp.read(tmp_path / "mesh.obj")
+    with pytest.raises(ValueError, match="zone"):
+        dgwarp.read(bad, zone=0)
+
+
+def test_from_arrays_refuses_bad_input():
+    points = np.zeros((3, 2))
+    with pytest.raises(dgwarp.MeshError, match="7"):
+        dgwarp.Mesh.from_arrays(points, {"triangle": [[0, 1, 7]]})
+    with pytest.raises(TypeError, match="integer"):
+        dgwarp.Mesh.from_arrays(points, {"triangle": np.array([[0.0, 1.0, 2.0]])})
+    with pytest.raises(ValueError, match=r"shape \(n, 3\)"):
+        dgwarp.Mesh.from_arrays(points, {"triangle": [[0, 1, 2, 0]]})
+    with pytest.raises(ValueError, match="unknown cell type 'tri'"):
+        dgwarp.Mesh.from_arrays(points, {"tri": [[0, 1, 2]]})
+    with pytest.raises(ValueError, match="finite"):
+        dgwarp.Mesh.from_arrays(np.array([[0, 0], [1, np.nan], [0, 1]], dtype=float), {"triangle": [[0, 1, 2]]})
+    with pytest.raises(TypeError, match="float64"):
+        dgwarp.Mesh.from_arrays(np.zeros((3, 2), dtype=np.float32), {"triangle": [[0, 1, 2]]})
+    with pytest.raises(ValueError, match="C-contiguous"):
+        dgwarp.Mesh.from_arrays(np.zeros((3, 4))[:, ::2], {"triangle": [[0, 1, 2]]})
+    with pytest.raises(ValueError, match=r"\(n, 2\) or \(n, 3\)"):
+        dgwarp.Mesh.from_arrays(np.zeros(6), {"triangle": [[0, 1, 2]]})
+    with pytest.raises(ValueError, match="cannot tell the element type"):
+        dgwarp.Mesh.from_arrays(points, {"triangle": [[0, 1, 2]]}, {"m": np.zeros((1, 3), dtype=int)})
+
+
+def test_write_refuses_bad_points(tmp_path):
+    mesh = square_mesh()
+    with pytest.raises(ValueError, match=r"points must have shape \(4, 2\), got \(4, 3\)"):
+        mesh.write(tmp_path / "x.vtu", points=np.zeros((4, 3)))
+    with pytest.raises(ValueError, match=r"points\[1, 0\] is nan"):
+        mesh.write(tmp_path / "x.vtu", points=np.array([[0, 0], [np.nan, 0], [1, 1], [0, 1]]))
+    assert not (tmp_path / "x.vtu").exists()

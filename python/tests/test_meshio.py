@@ -1,0 +1,45 @@
+"""to_meshio / from_meshio (Debian's python3-meshio)."""
+
+import numpy as np
+import pytest
+
+import dgwarp
+
+meshio = pytest.importorskip("meshio")
+
+
+def test_round_trip_keeps_cells_markers_and_order(su2_meshes):
+    mesh = dgwarp.read(su2_meshes / "unsteady_square_cylinder_mesh_square_turb_hybrid.su2")  # triangles and quads
+    m = dgwarp.to_meshio(mesh, cell_data={"q": dgwarp.quality(mesh).cells})
+    assert set(m.cell_sets) == set(mesh.marker_names)
+    back = dgwarp.from_meshio(m)
+    assert np.array_equal(back.points, mesh.points)
+    for t in mesh.cells:
+        assert np.array_equal(back.cells[t], mesh.cells[t])
+        assert np.array_equal(back.cell_index[t], mesh.cell_index[t])  # the cell order is kept
+    for name, marker in mesh.markers.items():
+        assert np.array_equal(back.markers[name].nodes, marker.nodes)
+    # cell data follows the cells: the volume blocks in cell order
+    volume = [b for b in m.cells if b.type in ("triangle", "quad")]
+    q = np.concatenate(m.cell_data["q"][: len(volume)])
+    assert np.array_equal(q, dgwarp.quality(mesh).cells)
+
+
+def test_deformed_points_through_meshio_files(tmp_path, naca_file):
+    mesh = dgwarp.read(naca_file)
+    points = dgwarp.prepare(mesh, moving=["airfoil"]).deform(translation=[0.01, 0.02])
+    path = tmp_path / "moved.vtu"
+    dgwarp.to_meshio(mesh, points=points).write(path)
+    assert np.array_equal(meshio.read(path).points[:, :2], points)
+    # Gmsh's physical groups become markers.
+    msh = tmp_path / "naca.msh"
+    mesh.write(msh)
+    back = dgwarp.from_meshio(meshio.read(msh))
+    assert back.marker_names == mesh.marker_names and back.dim == 2
+    assert np.array_equal(back.markers["airfoil"].nodes, mesh.markers["airfoil"].nodes)
+
+
+def test_unsupported_cells_are_refused():
+    m = meshio.Mesh(np.zeros((6, 2)), [("triangle6", np.arange(6).reshape(1, 6))])
+    with pytest.raises(ValueError, match="triangle6"):
+        dgwarp.from_meshio(m)
