@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -39,9 +40,9 @@ inline std::vector<double> foam_body_numbers(const std::string& text) {
     while (i < body.size()) {
         const char c = body[i];
         if ((c >= '0' && c <= '9') || c == '-' || c == '.') {
-            std::size_t used = 0;
-            numbers.push_back(std::stod(body.substr(i), &used));
-            i += used;
+            char* end = nullptr;
+            numbers.push_back(std::strtod(body.c_str() + i, &end));
+            i = static_cast<std::size_t>(end - body.c_str());
         } else {
             ++i;
         }
