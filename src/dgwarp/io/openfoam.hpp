@@ -118,4 +118,22 @@ std::string openfoam_points_text(std::span<const double> points, foam::Format fo
 void write_openfoam_points(const std::filesystem::path& file, std::span<const double> points, foam::Format format,
                            const std::string& location);
 
+/// Where moved points go in the case folder `out` at time `time` (a time
+/// folder's name, or "constant"): out/<time>/polyMesh/points (OpenFOAM reads
+/// a time folder's points with constant/polyMesh's faces), or
+/// out/constant/polyMesh/points; out/points when `out` is a polyMesh folder
+/// (its name is polyMesh). `location` is the points file's header entry.
+struct OpenFoamPointsFile {
+    std::filesystem::path file;
+    std::string location;
+};
+OpenFoamPointsFile openfoam_points_file(const std::filesystem::path& out, const std::string& time);
+
+/// Copies the regular files of the polyMesh folder `from` (points, faces,
+/// owner, neighbour, boundary, zones, ...) into `to`, creating it, byte for
+/// byte, each atomically; files named in `except` are left out. Sub-folders
+/// (sets) are not copied.
+void copy_poly_mesh(const std::filesystem::path& from, const std::filesystem::path& to,
+                    const std::vector<std::string>& except = {});
+
 }  // namespace dgwarp

@@ -150,4 +150,30 @@ void write_openfoam_points(const fs::path& file, std::span<const double> points,
     write_file_atomically(file, [&](std::ostream& out) { out << text; });
 }
 
+OpenFoamPointsFile openfoam_points_file(const fs::path& out, const std::string& time) {
+    const fs::path p = without_trailing_slash(out);
+    if (p.filename() == "polyMesh") {
+        const std::string parent = p.parent_path().filename().string();
+        return {p / "points", (parent.empty() ? std::string("constant") : parent) + "/polyMesh"};
+    }
+    return {p / time / "polyMesh" / "points", time + "/polyMesh"};
+}
+
+void copy_poly_mesh(const fs::path& from, const fs::path& to, const std::vector<std::string>& except) {
+    std::error_code ec;
+    fs::create_directories(to, ec);
+    if (ec) throw IoError(to.string(), "cannot create this folder: " + ec.message());
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(from, ec))
+        if (entry.is_regular_file() &&
+            std::find(except.begin(), except.end(), entry.path().filename().string()) == except.end())
+            files.push_back(entry.path());
+    if (ec) throw IoError(from.string(), "cannot list this folder: " + ec.message());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& file : files) {
+        const std::string bytes = read_file_text(file);
+        write_file_atomically(to / file.filename(), [&](std::ostream& out) { out << bytes; });
+    }
+}
+
 }  // namespace dgwarp
