@@ -67,8 +67,30 @@ std::vector<std::string> foam_time_names(const MotionSpec& spec, std::size_t fra
     return names;
 }
 
+/// processorN under `out`.
+static std::filesystem::path foam_processor_folder(const std::filesystem::path& out, std::size_t p) {
+    return out / ("processor" + std::to_string(p));
+}
+
 void check_foam_outputs(const std::filesystem::path& out, const std::vector<std::string>& times,
                         const std::filesystem::path& input_mesh, const std::vector<std::filesystem::path>& inputs) {
+    std::vector<std::filesystem::path> processors;
+    try {
+        processors = openfoam_processor_meshes(input_mesh);
+    } catch (const Error&) {
+        // reading the mesh will say why
+    }
+    if (!processors.empty()) {
+        check_nearest_folder_writable(out);
+        for (std::size_t p = 0; p < processors.size(); ++p) {
+            const std::filesystem::path base = openfoam_output_poly_mesh(foam_processor_folder(out, p));
+            for (const std::string& time : times) check_output(openfoam_points_file(foam_processor_folder(out, p), time).file, inputs);
+            if (same_folder(base, processors[p])) continue;
+            for (const char* name : poly_mesh_file_names) check_output(base / name, inputs);
+            for (const char* name : processor_addressing_file_names) check_output(base / name, inputs);
+        }
+        return;
+    }
     const std::filesystem::path base = openfoam_output_poly_mesh(out);
     check_nearest_folder_writable(base);
     for (const std::string& time : times) check_output(openfoam_points_file(out, time).file, inputs);
@@ -77,6 +99,17 @@ void check_foam_outputs(const std::filesystem::path& out, const std::vector<std:
 }
 
 void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time) {
+    if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
+        const auto& processors = in.extras.openfoam->processors;
+        for (std::size_t p = 0; p < processors.size(); ++p) {
+            const std::filesystem::path base = openfoam_output_poly_mesh(foam_processor_folder(out, p));
+            if (same_folder(base, processors[p].poly_mesh)) continue;
+            const bool points_here = openfoam_points_file(foam_processor_folder(out, p), time).file.parent_path() == base;
+            copy_poly_mesh(processors[p].poly_mesh, base,
+                           points_here ? std::vector<std::string>{"points", "points.gz"} : std::vector<std::string>{});
+        }
+        return;
+    }
     const std::filesystem::path base = openfoam_output_poly_mesh(out);
     const bool points_here = openfoam_points_file(out, time).file.parent_path() == base;
     if (in.extras.openfoam) {
@@ -90,6 +123,16 @@ void write_foam_base(const Inputs& in, const std::filesystem::path& out, const s
 
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
                                         const std::vector<double>& points) {
+    if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
+        // Each processor's points, in its own numbering and format.
+        const auto& processors = in.extras.openfoam->processors;
+        for (std::size_t p = 0; p < processors.size(); ++p) {
+            const OpenFoamPointsFile file = openfoam_points_file(foam_processor_folder(out, p), time);
+            write_openfoam_points(file.file, processor_points(processors[p], points), processors[p].points_format,
+                                  file.location);
+        }
+        return openfoam_points_file(out / "processor*", time).file;
+    }
     const OpenFoamPointsFile file = openfoam_points_file(out, time);
     write_openfoam_points(file.file, points, in.extras.openfoam ? in.extras.openfoam->points_format : foam::Format::ascii,
                           file.location);

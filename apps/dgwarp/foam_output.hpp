@@ -4,7 +4,8 @@
 // constant/polyMesh's faces), or to constant/polyMesh/points
 // (--foam-time constant); the case's constant/polyMesh is the input's (copied
 // byte for byte unless the output is the input case, or written from a mesh
-// of another format). docs/OPENFOAM.md.
+// of another format). A decomposed input: the same in each processorN folder,
+// with the processor's own points. docs/OPENFOAM.md.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -36,7 +37,8 @@ void check_foam_outputs(const std::filesystem::path& out, const std::vector<std:
 void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time);
 
 /// Writes frame points `points` to out's points file for `time`, in the
-/// format of the OpenFOAM input (ascii for another format); returns its path.
+/// format of the OpenFOAM input (ascii for another format); returns its path
+/// (OUT/processor*/<time>/polyMesh/points for a decomposed input).
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
                                         const std::vector<double>& points);
 

@@ -44,6 +44,20 @@ void require_mesh_extension(const std::string& flag, const std::filesystem::path
 
 std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path& path) {
     if (!reads_openfoam(path)) return {path};
+    std::vector<std::filesystem::path> processors;
+    try {
+        processors = openfoam_processor_meshes(path);
+    } catch (const Error&) {
+        return {path};  // reading it will say why
+    }
+    if (!processors.empty()) {
+        std::vector<std::filesystem::path> files;
+        for (const auto& dir : processors) {
+            for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+            for (const char* name : processor_addressing_file_names) files.push_back(dir / name);
+        }
+        return files;
+    }
     std::filesystem::path dir;
     try {
         dir = find_poly_mesh(path);

@@ -134,6 +134,45 @@ TEST(CliOpenFoam, ASeriesWritesOneTimeFolderPerFrame) {
     EXPECT_NE(r.err.find("this motion has 2 frames"), std::string::npos) << r.err;
 }
 
+// A decomposed case: each processor gets its own points, in its numbering and
+// format; the processors' files are otherwise untouched (or copied).
+TEST(CliOpenFoam, DeformADecomposedCaseWritesEachProcessorsPoints) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    ASSERT_EQ(run_cli("deform " + quoted(openfoam_case("mixed")) + " -q -m " + quoted(motion) + " -o " +
+                      quoted(dir / "whole.su2"))
+                  .exit_code,
+              0);
+    const Mesh moved = read_mesh(dir / "whole.su2");
+    const auto c = foam_case_copy("mixed-decomposed", dir);
+    const auto before = foam_tree(c);
+    CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote " + (c / "processor*" / "0" / "polyMesh" / "points").string()), std::string::npos) << r.out;
+    auto after = foam_tree(c);
+    OpenFoamSource source;
+    read_openfoam(c, {}, &source);
+    ASSERT_EQ(source.processors.size(), 2u);
+    for (std::size_t p = 0; p < 2; ++p) {
+        const std::string file = "processor" + std::to_string(p) + "/0/polyMesh/points";
+        ASSERT_EQ(after.count(file), 1u) << file;
+        EXPECT_EQ(after.at(file),
+                  openfoam_points_text(processor_points(source.processors[p], moved.points), foam::Format::ascii, "0/polyMesh"));
+        after.erase(file);
+    }
+    EXPECT_EQ(after, before);
+    // Into another folder: each processor's polyMesh copied, then its points.
+    r = run_cli("deform " + quoted(c) + " -q -m " + quoted(motion) + " -o " + quoted(dir / "out/") + " --foam-time constant");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_mesh(dir / "out").points, moved.points);
+    EXPECT_EQ(slurp(dir / "out/processor1/constant/polyMesh/faceProcAddressing"),
+              slurp(c / "processor1/constant/polyMesh/faceProcAddressing"));
+    // The input's points are not an output.
+    r = run_cli("deform " + quoted(c) + " -q -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time constant");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("processor0/constant/polyMesh/points is an input of this command"), std::string::npos) << r.err;
+}
+
 TEST(CliOpenFoam, ConvertRoundTripsThroughEveryFormatExactly) {
     const auto dir = scratch_dir();
     for (const std::string name : {"mixed", "cavity-binary"}) {

@@ -117,7 +117,7 @@ TEST(OpenFoamRead, PolyhedralCellsAreRefusedNamingHowManyAndTheFirst) {
     }
 }
 
-TEST(OpenFoamRead, NotACaseAndDecomposedCasesAreRefusedClearly) {
+TEST(OpenFoamRead, NotACaseAndBrokenDecomposedCasesAreRefusedClearly) {
     const auto dir = scratch_dir();
     EXPECT_THROW(read_openfoam(dir / "missing"), IoError);
     std::filesystem::create_directories(dir / "empty");
@@ -127,18 +127,104 @@ TEST(OpenFoamRead, NotACaseAndDecomposedCasesAreRefusedClearly) {
     } catch (const FormatError& e) {
         EXPECT_NE(std::string(e.what()).find("not an OpenFOAM case"), std::string::npos) << e.what();
     }
+    // A decomposed case with an empty processor polyMesh: the file it misses.
     std::filesystem::create_directories(dir / "decomposed" / "processor0" / "constant" / "polyMesh");
     try {
         read_mesh(dir / "decomposed");
         FAIL();
+    } catch (const IoError& e) {
+        EXPECT_EQ(e.file(), (dir / "decomposed" / "processor0" / "constant" / "polyMesh" / "points").string()) << e.what();
+    }
+    // processor0 and processor2: processor1 is missing.
+    std::filesystem::create_directories(dir / "decomposed" / "processor2" / "constant" / "polyMesh");
+    try {
+        read_mesh(dir / "decomposed");
+        FAIL();
     } catch (const FormatError& e) {
-        EXPECT_NE(std::string(e.what()).find("reconstructPar"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("processor1 is missing"), std::string::npos) << e.what();
+    }
+    // OpenFOAM's collated layout.
+    std::filesystem::create_directories(dir / "collated" / "processors2" / "constant" / "polyMesh");
+    try {
+        read_mesh(dir / "collated");
+        FAIL();
+    } catch (const FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find("collated"), std::string::npos) << e.what();
+    }
+    // One processor's polyMesh on its own: its processor patches say what it is.
+    try {
+        read_mesh(openfoam_case("mixed-decomposed") / "processor1");
+        FAIL();
+    } catch (const FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find("one processor's part of a decomposed case"), std::string::npos) << e.what();
+    }
+}
+
+// decomposePar's processors, read as one mesh, are the case they came from.
+TEST(OpenFoamRead, DecomposedCasesReadAsTheWholeCase) {
+    for (const std::string name : {"mixed", "cavity-binary"}) {
+        OpenFoamSource source;
+        const Mesh whole = read_openfoam(openfoam_case(name));
+        const Mesh decomposed = read_openfoam(openfoam_case(name + "-decomposed"), {}, &source);
+        EXPECT_TRUE(decomposed == whole) << name;
+        ASSERT_EQ(source.processors.size(), 2u);
+        EXPECT_EQ(source.patches.size(), whole.markers.size());
+        EXPECT_TRUE(source.poly_mesh.empty());
+        for (const OpenFoamProcessor& p : source.processors) {
+            EXPECT_EQ(p.points_format, name == "mixed" ? foam::Format::ascii : foam::Format::binary);
+            // Its points, taken from the whole mesh's, are its own file's in its order: the data
+            // between the list's brackets is the same, byte for byte.
+            const std::string file = slurp(p.poly_mesh / "points");
+            const std::string ours = openfoam_points_text(processor_points(p, decomposed.points), p.points_format, "x");
+            const auto data = [](const std::string& text) {
+                const std::size_t open = text.find("\n(", text.find("// * *"));
+                return text.substr(open, text.rfind(')') - open);
+            };
+            if (p.points_format == foam::Format::binary) {
+                EXPECT_EQ(data(ours), data(file));
+            } else {
+                EXPECT_EQ(foam_body_numbers(ours), foam_body_numbers(file));
+            }
+        }
     }
 }
 
 // The cell order's rule (openfoam_poly_mesh.hpp): whatever the order of a
 // cell's faces and their first nodes, order_cell gives the same cell, with
 // positive orientation, bounded by those faces.
+TEST(OpenFoamRead, DecomposedCasesWhoseProcessorsDisagreeAreRefused) {
+    const auto dir = scratch_dir();
+    std::filesystem::copy(openfoam_case("mixed-decomposed"), dir / "case", std::filesystem::copy_options::recursive);
+    const auto addressing = dir / "case" / "processor1" / "constant" / "polyMesh" / "pointProcAddressing";
+    const std::string good = slurp(addressing);
+    // Processor 1's first two points swapped in the case's numbering: shared points at two places.
+    std::string bad = good;
+    const std::size_t open = bad.find("\n(\n") + 3;
+    const std::size_t second = bad.find('\n', open) + 1, third = bad.find('\n', second) + 1;
+    bad = bad.substr(0, open) + bad.substr(second, third - second) + bad.substr(open, second - open) + bad.substr(third);
+    write_text(addressing, bad);
+    try {
+        read_mesh(dir / "case");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_NE(e.file().find("processor1"), std::string::npos) << e.what();
+    }
+    // One label too few: the list without its first label.
+    const std::size_t paren = good.find("\n(\n"), count = good.rfind('\n', paren - 1) + 1;
+    const auto labels = foam_ascii_labels(good);
+    std::string shorter = good.substr(0, count) + std::to_string(labels.size() - 1) + "\n(\n";
+    for (std::size_t i = 1; i < labels.size(); ++i) shorter += std::to_string(labels[i]) + "\n";
+    shorter += ")\n";
+    write_text(addressing, shorter);
+    try {
+        read_mesh(dir / "case");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.file(), addressing.string()) << e.what();
+        EXPECT_NE(e.expected().find("one per point"), std::string::npos) << e.what();
+    }
+}
+
 TEST(OpenFoamRead, CellOrderDependsOnlyOnTheFacesAsCycles) {
     std::mt19937 rng(15);
     // Ideal elements (positive orientation in VTK order).

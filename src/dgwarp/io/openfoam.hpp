@@ -36,12 +36,20 @@ struct OpenFoamPatch {
     bool operator==(const OpenFoamPatch&) const = default;
 };
 
+/// One processor of a decomposed case read as one mesh.
+struct OpenFoamProcessor {
+    std::filesystem::path poly_mesh;                   // CASE/processorN/constant/polyMesh
+    foam::Format points_format = foam::Format::ascii;  // the format of its points file
+    std::vector<NodeId> points;                        // its pointProcAddressing: the mesh's id of each of its points
+};
+
 /// What read_openfoam keeps besides the mesh, so that its points can be
 /// written back in place and a whole polyMesh written from it keeps its patches.
 struct OpenFoamSource {
-    std::filesystem::path poly_mesh;                   // the polyMesh folder read ("" when read from memory)
-    foam::Format points_format = foam::Format::ascii;  // the format of its points file
+    std::filesystem::path poly_mesh;                   // the polyMesh folder read ("" when read from memory or decomposed)
+    foam::Format points_format = foam::Format::ascii;  // the format of its points file (processor 0's)
     std::vector<OpenFoamPatch> patches;                // one per marker, in marker order
+    std::vector<OpenFoamProcessor> processors;         // a decomposed case's, in order; empty for one polyMesh
 };
 
 /// The five files of a polyMesh, in memory.
@@ -55,9 +63,26 @@ inline constexpr const char* poly_mesh_file_names[] = {"points", "faces", "owner
 /// The polyMesh folder of `path`: path/constant/polyMesh for a case folder,
 /// `path` itself when it holds the polyMesh files (faces, owner). Throws
 /// FormatError for a decomposed case (processor* folders and no
-/// constant/polyMesh: "run reconstructPar first") or a folder that is
-/// neither; IoError when `path` is not a folder.
+/// constant/polyMesh: read_openfoam reads it, through
+/// openfoam_processor_meshes) or a folder that is neither; IoError when
+/// `path` is not a folder.
 std::filesystem::path find_poly_mesh(const std::filesystem::path& path);
+
+/// The processors' polyMesh folders (CASE/processor0/constant/polyMesh,
+/// processor1, ...) when `path` is a decomposed case: a case folder without
+/// constant/polyMesh whose processorN folders, N = 0, 1, ... without a gap,
+/// hold polyMeshes; empty for any other path. Throws FormatError for a
+/// collated decomposition (one processors<N> folder).
+std::vector<std::filesystem::path> openfoam_processor_meshes(const std::filesystem::path& path);
+
+/// The decomposition's files read besides the five polyMesh files, in each
+/// processor's polyMesh folder.
+inline constexpr const char* processor_addressing_file_names[] = {"pointProcAddressing", "faceProcAddressing",
+                                                                  "cellProcAddressing"};
+
+/// Processor p's points (its num_points × 3, row-major) taken from the
+/// whole mesh's `points` (num_points × 3) through p.points.
+std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const double> points);
 
 /// True when `path` is a folder: read_mesh reads it as an OpenFOAM case.
 bool is_openfoam_input(const std::filesystem::path& path);
@@ -70,7 +95,14 @@ bool is_openfoam_output(const std::filesystem::path& path);
 /// last name is "polyMesh", else path/constant/polyMesh.
 std::filesystem::path openfoam_output_poly_mesh(const std::filesystem::path& path);
 
-/// Reads the polyMesh of the case or polyMesh folder `path` (find_poly_mesh).
+/// Reads the polyMesh of the case or polyMesh folder `path` (find_poly_mesh),
+/// or the processors of a decomposed case (openfoam_processor_meshes) as one
+/// mesh: point i and cell i are the reconstructed case's (pointProcAddressing,
+/// cellProcAddressing), the markers are the patches other than processor
+/// patches, their faces in the reconstructed case's order (faceProcAddressing);
+/// the result equals reading the reconstructed case. ParseError when the
+/// processors disagree (a shared point at two places, a cell or point missing
+/// or given twice, different patches).
 /// Fills `source` (when given) with what a write back needs.
 /// Throws IoError when a file cannot be read (compressed files, `points.gz`,
 /// are read too); ParseError naming the file and line for malformed content:

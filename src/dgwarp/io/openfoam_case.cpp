@@ -12,6 +12,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
 #include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp {
@@ -66,13 +67,12 @@ std::string gunzip(const fs::path& path) {
     return out;
 }
 
-/// dir/name, or dir/name.gz uncompressed.
-std::string read_mesh_file(const fs::path& dir, const char* name) {
+}  // namespace
+
+std::string foam::read_mesh_file(const fs::path& dir, const char* name) {
     if (!is_file(dir / name) && is_file(dir / (std::string(name) + ".gz"))) return gunzip(dir / (std::string(name) + ".gz"));
     return read_file_text(dir / name);
 }
-
-}  // namespace
 
 fs::path find_poly_mesh(const fs::path& path) {
     if (!is_folder(path)) {
@@ -90,8 +90,8 @@ fs::path find_poly_mesh(const fs::path& path) {
     if (has_mesh_file(path, "faces") || has_mesh_file(path, "owner")) return path;
     if (is_folder(path / "processor0"))
         throw FormatError(path.string() +
-                          ": a decomposed case (processor* folders without constant/polyMesh): dgwarp reads one "
-                          "polyMesh; run reconstructParMesh -constant (or reconstructPar) first");
+                          ": a decomposed case (processor* folders without constant/polyMesh): read_openfoam reads "
+                          "it, find_poly_mesh finds one polyMesh");
     throw FormatError(path.string() +
                       ": not an OpenFOAM case (no constant/polyMesh folder) nor a polyMesh folder (no faces file); "
                       "dgwarp reads a folder as an OpenFOAM mesh");
@@ -109,6 +109,8 @@ fs::path openfoam_output_poly_mesh(const fs::path& path) {
 }
 
 Mesh read_openfoam(const fs::path& path, const ProgressFn& progress, OpenFoamSource* source) {
+    if (const auto meshes = openfoam_processor_meshes(path); !meshes.empty())
+        return foam::read_openfoam_decomposed(meshes, progress, source);
     const fs::path dir = find_poly_mesh(path);
     PolyMeshFiles files;
     std::string* parts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
@@ -120,7 +122,7 @@ Mesh read_openfoam(const fs::path& path, const ProgressFn& progress, OpenFoamSou
         total += ec ? 0 : size;
     }
     for (int k = 0; k < 5; ++k) {
-        *parts[k] = read_mesh_file(dir, poly_mesh_file_names[k]);
+        *parts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
         done += parts[k]->size();
         if (progress && total > 0) progress(std::min(1.0, static_cast<double>(done) / static_cast<double>(total)));
     }

@@ -9,8 +9,10 @@
 // each with owner < neighbour; the boundary faces follow, grouped by patch.
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dgwarp/io/openfoam.hpp"
@@ -25,6 +27,7 @@ struct Patch {
     std::int64_t start = 0;  // startFace
     std::int64_t size = 0;   // nFaces
     std::size_t line = 0;    // line of its name in the boundary file (0 when written)
+    bool processor = false;  // type processor or processorCyclic: faces shared with another processor
 };
 
 struct PolyMesh {
@@ -43,6 +46,29 @@ struct FaceLines {
     std::string faces_file, owner_file;
     std::vector<std::uint32_t> line;  // per face: its line in the faces file
 };
+
+/// One polyMesh folder's files read (read_openfoam_files is its mesh): the
+/// mesh, whose markers are the patches other than processor patches, and
+/// every patch. `processor_patches`: whether processor patches are accepted
+/// (one processor's part of a decomposed case) or refused (FormatError).
+struct PolyMeshPart {
+    Mesh mesh;
+    std::vector<Patch> patches;
+    Format points_format = Format::ascii;
+    std::int64_t num_faces = 0;
+};
+PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files, bool processor_patches);
+
+/// The file dir/name, or dir/name.gz uncompressed (IoError when neither can be read).
+std::string read_mesh_file(const std::filesystem::path& dir, const char* name);
+
+/// read_openfoam of a decomposed case whose processors' polyMesh folders
+/// are `meshes` (openfoam_processor_meshes).
+Mesh read_openfoam_decomposed(const std::vector<std::filesystem::path>& meshes, const ProgressFn& progress,
+                              OpenFoamSource* source);
+
+/// A labelList file (a decomposed case's pointProcAddressing, ...).
+std::vector<std::int32_t> read_label_list_file(const std::string& file, std::string_view content);
 
 /// The outward faces of a cell of the neutral Mesh in VTK node order with
 /// positive orientation (cell_orientation +1): node positions within the cell,

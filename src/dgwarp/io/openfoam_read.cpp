@@ -217,7 +217,8 @@ void expect_end(Scanner& s) {
 }
 
 /// The boundary file: `N ( name { type ...; nFaces n; startFace s; ... } ... )`.
-std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, std::int64_t num_faces) {
+std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, std::int64_t num_faces,
+                                       bool processor_patches) {
     open_file(s, {"polyBoundaryMesh"});
     const ListStart l = open_list(s, "patches", 8, 0);
     if (l.uniform) s.fail_at(l.line, "'(' opening the list of patches", "{");
@@ -249,11 +250,13 @@ std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, st
             if (key == "type") {
                 patch.info.type = value;
                 has_type = true;
-                if (value == "processor" || value == "processorCyclic")
+                patch.processor = value == "processor" || value == "processorCyclic";
+                if (patch.processor && !processor_patches)
                     throw FormatError(s.file() + ":" + str(static_cast<std::int64_t>(line)) + ": patch '" + patch.name +
                                       "' is of type " + value +
-                                      ": this is one processor's part of a decomposed case; run reconstructPar "
-                                      "(or reconstructParMesh) and read the reconstructed case");
+                                      ": this is one processor's part of a decomposed case; read the case folder "
+                                      "(dgwarp reads its processor folders as one mesh) or reconstruct it "
+                                      "(reconstructParMesh -constant)");
             } else if (key == "nFaces") {
                 number("its face count");
                 patch.size = v;
@@ -298,7 +301,16 @@ std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, st
 
 }  // namespace
 
-Mesh read_openfoam_files(const std::filesystem::path& dir, const PolyMeshFiles& files, OpenFoamSource* source) {
+std::vector<std::int32_t> foam::read_label_list_file(const std::string& file, std::string_view content) {
+    Scanner s(file, content);
+    open_file(s, {"labelList"});
+    std::vector<std::int32_t> labels = read_labels(s, "labels", [](std::int64_t, std::int64_t, std::size_t) {});
+    expect_end(s);
+    return labels;
+}
+
+foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files,
+                                             bool processor_patches) {
     const auto name = [&](const char* file) { return (dir / file).string(); };
     foam::PolyMesh pm;
     foam::FaceLines where{name("faces"), name("owner"), {}};
@@ -350,13 +362,14 @@ Mesh read_openfoam_files(const std::filesystem::path& dir, const PolyMeshFiles& 
     expect_end(neighbour);
 
     Scanner boundary(name("boundary"), files.boundary);
-    pm.patches = read_boundary(boundary, static_cast<std::int64_t>(pm.neighbour.size()), num_faces);
+    pm.patches = read_boundary(boundary, static_cast<std::int64_t>(pm.neighbour.size()), num_faces, processor_patches);
 
     Mesh mesh;
     mesh.dim = 3;
     mesh.cells = foam::cells_from_faces(pm, num_cells, where);
     mesh.points = std::move(pm.points);
     for (const foam::Patch& patch : pm.patches) {
+        if (patch.processor) continue;  // faces another processor shares: inner faces of the whole mesh
         Marker marker{patch.name, {}};
         marker.elements.reserve(static_cast<std::size_t>(patch.size), 4);
         for (std::int64_t f = patch.start; f < patch.start + patch.size; ++f) {
@@ -368,12 +381,17 @@ Mesh read_openfoam_files(const std::filesystem::path& dir, const PolyMeshFiles& 
         mesh.markers.push_back(std::move(marker));
     }
     validate(mesh);
+    return {std::move(mesh), std::move(pm.patches), points_header.format, num_faces};
+}
+
+Mesh read_openfoam_files(const std::filesystem::path& dir, const PolyMeshFiles& files, OpenFoamSource* source) {
+    foam::PolyMeshPart part = foam::read_poly_mesh_part(dir, files, false);
     if (source) {
-        source->points_format = points_header.format;
+        source->points_format = part.points_format;
         source->patches.clear();
-        for (const foam::Patch& patch : pm.patches) source->patches.push_back(patch.info);
+        for (const foam::Patch& patch : part.patches) source->patches.push_back(patch.info);
     }
-    return mesh;
+    return std::move(part.mesh);
 }
 
 }  // namespace dgwarp
