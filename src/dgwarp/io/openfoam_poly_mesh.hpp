@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the OpenFOAM reader and writer: OpenFOAM's face-based mesh as
 // its polyMesh files hold it, and the conversions between it and the cells
-// of the neutral Mesh (openfoam_cells.cpp).
+// of the neutral Mesh (openfoam_cells.cpp: cells from faces; openfoam_faces.cpp: faces from cells).
 //
 // OpenFOAM's conventions (OpenFOAM user guide, "Mesh description"): a face is
 // a list of point labels whose order makes its normal (right-hand rule) point
@@ -79,6 +79,9 @@ struct FaceTable {
     std::array<std::array<int, 4>, 6> node{};
 };
 const FaceTable& outward_faces(CellType type);
+
+/// True when the n nodes `b` are the n nodes `a` rotated (the same cycle).
+bool same_cycle(const NodeId* a, const NodeId* b, int n);
 
 /// A cell given by its outward faces (at most 6 faces of at most 4 nodes).
 struct CellFaces {
