@@ -116,11 +116,42 @@ std::string_view Scanner::word(std::string_view what) {
         return s_.substr(start, end - start);
     }
     const std::size_t start = pos_;
-    while (pos_ < s_.size() && !is_delimiter(s_[pos_]) &&
-           !(s_[pos_] == '/' && pos_ + 1 < s_.size() && (s_[pos_ + 1] == '/' || s_[pos_ + 1] == '*')))
-        ++pos_;
+    pos_ = word_end();
     if (pos_ == start) fail(what, s_.substr(start, 1));
     return s_.substr(start, pos_ - start);
+}
+
+std::size_t Scanner::word_end() const {
+    std::size_t end = pos_;
+    while (end < s_.size() && !is_delimiter(s_[end]) &&
+           !(s_[end] == '/' && end + 1 < s_.size() && (s_[end + 1] == '/' || s_[end + 1] == '*')))
+        ++end;
+    return end;
+}
+
+bool Scanner::try_integer(std::int64_t& v) {
+    skip_blanks();
+    if (pos_ >= s_.size() || s_[pos_] == '"') return false;
+    const std::size_t end = word_end();
+    if (end == pos_ || !parse_int(s_.substr(pos_, end - pos_), v)) return false;
+    pos_ = end;
+    return true;
+}
+
+bool Scanner::try_number(double& v) {
+    skip_blanks();
+    if (pos_ >= s_.size() || s_[pos_] == '"') return false;
+    const std::size_t end = word_end();
+    if (end == pos_ || !parse_double(s_.substr(pos_, end - pos_), v)) return false;
+    pos_ = end;
+    return true;
+}
+
+bool Scanner::try_char(char c) {
+    skip_blanks();
+    if (pos_ >= s_.size() || s_[pos_] != c) return false;
+    ++pos_;
+    return true;
 }
 
 std::int64_t Scanner::integer(std::string_view what) {

@@ -62,6 +62,16 @@ public:
     /// A word parsed as an integer / a finite number; fails naming `what`.
     std::int64_t integer(std::string_view what);
     double number(std::string_view what);
+    /// The fast paths of the lists' items: skip blanks and comments, then take
+    /// an integer / a finite number / the byte `c` and return true; return
+    /// false, taking nothing, when the next token is something else (the
+    /// caller then calls integer, number or expect, which throw with its words).
+    bool try_integer(std::int64_t& v);
+    bool try_number(double& v);
+    bool try_char(char c);
+    /// Bytes not read yet.
+    std::size_t remaining() const { return s_.size() - pos_; }
+
     /// The next `bytes` bytes as they are (binary list data: no blank is
     /// skipped); fails when the file is shorter.
     std::string_view raw(std::size_t bytes, std::string_view what);
@@ -87,6 +97,8 @@ public:
 
 private:
     void skip_blanks();
+    /// The end of the word starting at pos_ (see word()).
+    std::size_t word_end() const;
     void check_arch(std::string_view arch, std::size_t line) const;
 
     std::string file_;

@@ -100,7 +100,7 @@ std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const
 Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const ProgressFn& progress,
                                     OpenFoamSource* source) {
     std::vector<ProcessorPart> parts;
-    std::int64_t num_points = 0, num_cells = 0;
+    std::int64_t num_points = 0, num_cells = 0, local_points = 0;
     for (std::size_t p = 0; p < meshes.size(); ++p) {
         const fs::path& dir = meshes[p];
         PolyMeshFiles files;
@@ -113,9 +113,17 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
         part.cell_of = read_addressing(dir, "cellProcAddressing", static_cast<std::int64_t>(m.cells.size()), false);
         for (std::int32_t g : part.point_of) num_points = std::max<std::int64_t>(num_points, g + std::int64_t{1});
         num_cells += static_cast<std::int64_t>(m.cells.size());
+        local_points += static_cast<std::int64_t>(m.num_points());
         parts.push_back(std::move(part));
         if (progress) progress(0.9 * static_cast<double>(p + 1) / static_cast<double>(meshes.size()));
     }
+
+    // Each point of the case is some processor's: a larger number is a damaged label
+    // (checked before the points are allocated).
+    if (num_points > local_points)
+        throw ParseError((meshes[0] / "pointProcAddressing").string(), 0,
+                         "point numbers below " + str(local_points) + " (the processors have that many points)",
+                         str(num_points - 1));
 
     Mesh mesh;
     mesh.dim = 3;

@@ -87,8 +87,12 @@ std::vector<std::int32_t> read_labels(Scanner& s, const std::string& what, Check
         for (std::int64_t i = 0; i < l.size; ++i) {
             s.peek();
             const std::size_t line = s.line();
-            if (s.peek() == ')') s.fail(l.item("label", i), ")");
-            out[static_cast<std::size_t>(i)] = put(i, s.integer(l.item("label", i)), line);
+            std::int64_t v = 0;
+            if (!s.try_integer(v)) {  // the error, in words (built only here: lists are long)
+                if (s.peek() == ')') s.fail(l.item("label", i), ")");
+                s.integer(l.item("label", i));
+            }
+            out[static_cast<std::size_t>(i)] = put(i, v, line);
         }
     }
     close_list(s, l);
@@ -110,12 +114,13 @@ std::vector<double> read_points(Scanner& s) {
         }
     } else {
         for (std::int64_t i = 0; i < (l.uniform ? 1 : l.size); ++i) {
-            const std::string name = l.item("point", i);
-            s.expect('(', "'(' opening " + name);
-            for (int d = 0; d < 3; ++d)
-                points[static_cast<std::size_t>(i) * 3 + static_cast<std::size_t>(d)] =
-                    s.number("coordinate " + str(d + 1) + " of 3 of " + name);
-            s.expect(')', "')' ending " + name + " (3 coordinates)");
+            // The error messages are built only on an error: lists are long.
+            if (!s.try_char('(')) s.expect('(', "'(' opening " + l.item("point", i));
+            for (int d = 0; d < 3; ++d) {
+                double& x = points[static_cast<std::size_t>(i) * 3 + static_cast<std::size_t>(d)];
+                if (!s.try_number(x)) x = s.number("coordinate " + str(d + 1) + " of 3 of " + l.item("point", i));
+            }
+            if (!s.try_char(')')) s.expect(')', "')' ending " + l.item("point", i) + " (3 coordinates)");
         }
     }
     close_list(s, l);
@@ -140,27 +145,35 @@ void read_face_list(Scanner& s, FaceSink& sink) {
     if (l.uniform) s.fail_at(l.line, "'(' opening the list of faces (a uniform list of faces is no mesh)", "{");
     sink.mesh.face_offsets.reserve(static_cast<std::size_t>(l.size) + 1);
     sink.where.line.reserve(static_cast<std::size_t>(l.size));
+    const std::size_t label_text = s.binary() ? Scanner::label_bytes : 2;  // the fewest bytes a label takes
+    sink.mesh.face_nodes.reserve(static_cast<std::size_t>(l.size) * 4);
+    // The error messages are built only on an error: lists are long.
     for (std::int64_t f = 0; f < l.size; ++f) {
-        const std::string name = l.item("face", f);
         s.peek();
         const std::size_t line = s.line();
-        if (s.peek() == ')') s.fail(name, ")");
-        const std::int64_t k = s.list_size("the points of " + name, s.binary() ? Scanner::label_bytes : 2);
-        if (k < 3) s.fail_at(line, name + " with at least 3 points", str(k));
-        s.expect('(', "'(' opening the points of " + name);
-        const std::string_view data = s.binary() ? s.raw(static_cast<std::size_t>(k) * Scanner::label_bytes, name)
+        std::int64_t k = 0;
+        if (!s.try_integer(k)) {
+            if (s.peek() == ')') s.fail(l.item("face", f), ")");
+            s.integer("the size of " + l.item("face", f));
+        }
+        if (k < 3) s.fail_at(line, l.item("face", f) + " with at least 3 points", str(k));
+        if (static_cast<std::uint64_t>(k) > s.remaining() / label_text)
+            s.fail_at(line, "a size of " + l.item("face", f) + " that the rest of the file can hold", str(k));
+        if (!s.try_char('(')) s.expect('(', "'(' opening the points of " + l.item("face", f));
+        const std::string_view data = s.binary() ? s.raw(static_cast<std::size_t>(k) * Scanner::label_bytes, "the point labels of a face")
                                                  : std::string_view();
         for (std::int64_t i = 0; i < k; ++i) {
             const std::size_t at = s.binary() ? line : (s.peek(), s.line());
-            const std::int64_t p = s.binary() ? foam::binary_label(data.data() + i * Scanner::label_bytes)
-                                              : s.integer("point " + str(i) + " of " + name);
+            std::int64_t p = 0;
+            if (s.binary()) p = foam::binary_label(data.data() + i * Scanner::label_bytes);
+            else if (!s.try_integer(p)) s.integer("point " + str(i) + " of " + l.item("face", f));
             if (p < 0 || p >= sink.num_points)
-                s.fail_at(at, "point labels of " + name + " from 0 to " + str(sink.num_points - 1) +
+                s.fail_at(at, "point labels of " + l.item("face", f) + " from 0 to " + str(sink.num_points - 1) +
                                   " (the points file has " + str(sink.num_points) + ")",
                           str(p));
             sink.mesh.face_nodes.push_back(static_cast<NodeId>(p));
         }
-        s.expect(')', "')' ending the " + str(k) + " points of " + name);
+        if (!s.try_char(')')) s.expect(')', "')' ending the " + str(k) + " points of " + l.item("face", f));
         sink.mesh.face_offsets.push_back(static_cast<std::int64_t>(sink.mesh.face_nodes.size()));
         sink.where.line.push_back(static_cast<std::uint32_t>(line));
     }
@@ -334,6 +347,11 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
     Scanner owner(name("owner"), files.owner);
     open_file(owner, {"labelList"});
     std::int64_t num_cells = 0;
+    struct {
+        std::int64_t cells = 0;  // the largest cell number + 1, and where it is
+        std::size_t line = 0;
+        bool in_neighbour = false;
+    } largest;
     owner.peek();
     const std::size_t owner_line = owner.line();
     pm.owner = read_labels(owner, "owners", [&](std::int64_t i, std::int64_t c, std::size_t line) {
@@ -341,6 +359,7 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
             owner.fail_at(owner_line, "one owner per face: " + str(num_faces) + " (the faces file has them)",
                           "more");
         if (c < 0) owner.fail_at(line, "the owner of face " + str(i) + " (a cell number >= 0)", str(c));
+        if (c + 1 > num_cells) largest = {c + 1, line, false};
         num_cells = std::max(num_cells, c + 1);
     });
     if (static_cast<std::int64_t>(pm.owner.size()) != num_faces)
@@ -357,9 +376,20 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
         if (c < 0) neighbour.fail_at(line, "the neighbour of face " + str(i) + " (a cell number >= 0)", str(c));
         if (c == pm.owner[static_cast<std::size_t>(i)])
             neighbour.fail_at(line, "a neighbour of face " + str(i) + " other than its owner", str(c));
+        if (c + 1 > num_cells) largest = {c + 1, line, true};
         num_cells = std::max(num_cells, c + 1);
     });
     expect_end(neighbour);
+    // Every cell has at least 4 faces and a face at most 2 cells: more cells
+    // than that is a damaged label (checked before the cells are allocated).
+    const auto most_cells = static_cast<std::int64_t>((pm.owner.size() + pm.neighbour.size()) / 4);
+    if (num_cells > most_cells)
+        (largest.in_neighbour ? neighbour : owner)
+            .fail_at(largest.line,
+                     "cell numbers below " + str(most_cells) + " (the " + str(num_faces) + " faces, " +
+                         str(static_cast<std::int64_t>(pm.neighbour.size())) +
+                         " of them internal, can bound no more cells of 4 faces or more)",
+                     str(largest.cells - 1));
 
     Scanner boundary(name("boundary"), files.boundary);
     pm.patches = read_boundary(boundary, static_cast<std::int64_t>(pm.neighbour.size()), num_faces, processor_patches);
