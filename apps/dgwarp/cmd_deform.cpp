@@ -510,7 +510,8 @@ void add_deform_command(CLI::App& app) {
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json -o cmp.su2 --method all\n"
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_pitch_plunge.json -o pitch.su2"
         "   (one file per frame)\n"
-        "  dgwarp deform cavity/ --motion lid.json -o cavity/           (OpenFOAM: cavity/0/polyMesh/points)\n"
+        "  dgwarp deform tests/data/openfoam/mixed --motion examples/motions/openfoam_mixed_lift.json -o mixed/\n"
+        "      (an OpenFOAM case: mixed/0/polyMesh/points beside a copy of its constant/polyMesh)\n"
         "  dgwarp prepare naca0012.su2 --motion examples/motions/airfoil_rotate.json -o naca0012.plan\n"
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json --plan naca0012.plan -o turned.su2 "
         "--json");
