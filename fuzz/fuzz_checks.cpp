@@ -14,6 +14,7 @@
 #include "dgwarp/core/hash.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/motion_file.hpp"
+#include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "dgwarp/io/su2.hpp"
 
@@ -84,6 +85,33 @@ void check_gmsh(std::span<const std::uint8_t> data) {
             return;  // a mesh the writer cannot store (e.g. a marker name with a quote)
         }
         require(read_gmsh_text("fuzz-written.msh", out.str()) == mesh, "Gmsh write then read changed the mesh");
+    }
+}
+
+void check_openfoam(std::span<const std::uint8_t> data) {
+    const std::string text = as_text(data);
+    PolyMeshFiles files;
+    std::string* parts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
+    const std::string separator = openfoam_file_separator;
+    std::size_t at = 0;
+    for (std::string* part : parts) {
+        if (at > text.size()) break;
+        const std::size_t end = std::min(text.find(separator, at), text.size());
+        *part = text.substr(at, end - at);
+        at = end + separator.size();
+    }
+    OpenFoamSource source;
+    const Mesh mesh = read_openfoam_files("fuzz", files, &source);
+    for (const foam::Format format : {foam::Format::ascii, foam::Format::binary}) {
+        PolyMeshFiles written;
+        try {
+            written = write_openfoam_files(mesh, {format, &source});
+        } catch (const Error&) {
+            return;  // a mesh no polyMesh of dgwarp's can hold (a face in two patches, a patch name with a blank)
+        }
+        OpenFoamSource again;
+        require(read_openfoam_files("fuzz-written", written, &again) == mesh, "OpenFOAM write then read changed the mesh");
+        require(again.patches == source.patches, "OpenFOAM write then read changed the patches");
     }
 }
 

@@ -30,6 +30,16 @@ void check_su2(std::span<const std::uint8_t> data);
 /// read_gmsh_text unchanged (unless the writer refuses it with a dgwarp::Error).
 void check_gmsh(std::span<const std::uint8_t> data);
 
+/// The separator between the polyMesh files of an OpenFOAM fuzz input.
+inline constexpr const char* openfoam_file_separator = "\n//dgwarp-next-file\n";
+
+/// read_openfoam_files on the input split at openfoam_file_separator into
+/// points, faces, owner, neighbour and boundary (missing ones empty); a mesh
+/// read must survive write_openfoam_files (ascii and binary, with the patches
+/// read) then read_openfoam_files unchanged, patches included (unless the
+/// writer refuses it with a dgwarp::Error).
+void check_openfoam(std::span<const std::uint8_t> data);
+
 /// parse_motion_file with an empty base folder, so the files a motion names
 /// are never found. Inputs with a '/' in a JSON string are skipped: a path
 /// such as /dev/zero would make the fuzzer read the machine's files.

@@ -15,6 +15,7 @@ import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "fuzz" / "corpus"
+FOAM_SEPARATOR = b"\n//dgwarp-next-file\n"  # fuzz_checks.hpp: openfoam_file_separator
 
 
 def write(target, name, text):
@@ -234,6 +235,23 @@ def main():
                 subprocess.run([cli, "prepare", big, "-m", motion_file, "-o", out, "-q", "--method", method, *extra],
                                check=True)
                 write("plan", out.name, out.read_bytes())
+
+    # OpenFOAM: the five polyMesh files of a case joined by the separator of
+    # fuzz_checks.hpp; the committed cases and the mixed SU2 mesh written by dgwarp.
+    def foam_seed(poly_mesh):
+        names = ("points", "faces", "owner", "neighbour", "boundary")
+        return FOAM_SEPARATOR.join((poly_mesh / n).read_bytes() for n in names)
+
+    for case in ("cavity", "cavity-binary", "mixed-binary"):
+        write("openfoam", f"{case}.foam", foam_seed(ROOT / "tests" / "data" / "openfoam" / case / "constant" / "polyMesh"))
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = pathlib.Path(tmp)
+        # MIXED_3D's prism turns its first triangle toward the second (mirrored in
+        # VTK's order): OpenFOAM's faces cannot hold it beside the hexahedron.
+        (tmp / "mixed_3d.su2").write_text(MIXED_3D.replace("13 1 8 2 5 9 6", "13 1 2 8 5 6 9"))
+        for fmt in ("ascii", "binary"):
+            subprocess.run([cli, "convert", "-q", tmp / "mixed_3d.su2", tmp / fmt, "--foam-format", fmt], check=True)
+            write("openfoam", f"mixed_3d_{fmt}.foam", foam_seed(tmp / fmt / "constant" / "polyMesh"))
 
     total = sum(p.stat().st_size for p in CORPUS.rglob("*") if p.is_file())
     print(f"wrote {sum(1 for p in CORPUS.rglob('*') if p.is_file())} seeds, {total} bytes, in {CORPUS}")

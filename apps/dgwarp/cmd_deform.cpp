@@ -16,6 +16,7 @@
 #include "dgwarp/repair/unrepairable_cells.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "flag_values.hpp"
+#include "foam_output.hpp"
 #include "frame_output.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
@@ -33,6 +34,7 @@ struct DeformArgs {
     bool untangle = false;
     bool no_untangle = false;  // dg-harmonic without its last resort
     double untangle_target = UntangleOptions{}.target_quality;
+    std::string foam_time;  // OpenFOAM output: a single frame's time folder, or "constant"
     bool quiet = false;
 };
 
@@ -243,8 +245,9 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
     return false;
 }
 
+/// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
-                     ProgressLine& progress, WarningPrinter& warnings) {
+                     const std::vector<std::string>& foam_times, ProgressLine& progress, WarningPrinter& warnings) {
     MethodRun run;
     const std::size_t frames = frame_count(in.spec);
     if (!plan_run(in, method, a, several, progress, run)) return run;
@@ -252,7 +255,9 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
     if (text && several)
         for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w);
     const auto out = method_output(a.output, method, several);
-    if (const std::string w = dropped_extras_warning(in.extras, in.args.mesh, out); !w.empty() && !a.quiet)
+    const bool foam = !foam_times.empty();
+    bool foam_base_written = false;
+    if (const std::string w = foam ? "" : dropped_extras_warning(in.extras, in.args.mesh, out); !w.empty() && !a.quiet)
         std::cerr << "warning: " << w << "\n";
     WriteOptions write_options;
     write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
@@ -289,7 +294,12 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
         const FrameQuality measured = repair_and_measure(in, method, a, deformed, f, sw, progress);
         const bool invalid = f.inverted_by_motion > 0;
-        if (!invalid || a.allow_invalid) {
+        if ((!invalid || a.allow_invalid) && foam) {
+            if (!foam_base_written) write_foam_base(in, out, foam_times[k]);
+            foam_base_written = true;
+            f.output = write_foam_points(in, out, foam_times[k], deformed.points).string();
+            f.write_seconds = sw.lap();
+        } else if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, k, frames);
             write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, measured.quality, measured.ratio),
                        write_options);
@@ -362,7 +372,18 @@ void print_written(const std::vector<MethodRun>& runs) {
     }
 }
 
-void run_deform(const DeformArgs& a) {
+void run_deform(const DeformArgs& given) {
+    DeformArgs a = given;
+    const bool foam = writes_openfoam(a.output);
+    if (foam) {
+        // "case/" names the folder "case": --method all writes case_dg-idw, ...
+        std::filesystem::path out = a.output;
+        while (out.filename().empty() && out.has_parent_path() && out.parent_path() != out) out = out.parent_path();
+        a.output = out.string();
+    } else if (!a.foam_time.empty()) {
+        throw CLI::ValidationError("--foam-time", "is for an OpenFOAM case output (a folder, a name ending in '/')");
+    }
+    std::vector<std::string> foam_times;
     const std::vector<Method> methods = chosen_methods(a.setup, true);
     const bool several = methods.size() > 1;
     if (several && !a.plan.empty())
@@ -374,18 +395,27 @@ void run_deform(const DeformArgs& a) {
         // Every file this run may write (each method's, each frame's), before any work.
         std::vector<std::filesystem::path> inputs = motion_files(spec);
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
+        for (const auto& file : mesh_input_files(a.setup.mesh)) inputs.push_back(file);
         if (!a.plan.empty()) inputs.emplace_back(a.plan);
-        check_folder_writable(std::filesystem::path(a.output).parent_path());
         const std::size_t frames = frame_count(spec);
+        if (foam) {
+            foam_times = foam_time_names(spec, frames, a.foam_time);
+            for (Method m : methods) check_foam_outputs(method_output(a.output, m, several), foam_times, a.setup.mesh, inputs);
+            return;
+        }
+        check_folder_writable(std::filesystem::path(a.output).parent_path());
         for (Method m : methods)
             for (std::size_t k = 0; k < frames; ++k) check_output(frame_path(method_output(a.output, m, several), k, frames), inputs);
     });
+    if (foam && in.mesh.dim != 3)
+        throw MeshError("OpenFOAM meshes are 3D: the " + std::to_string(in.mesh.dim) + "D mesh " + a.setup.mesh +
+                        " cannot be written to the OpenFOAM case " + a.output);
     const std::size_t frames = frame_count(in.spec);
     WarningPrinter warnings(text);
     if (text) print_inputs(std::cout, in, frames, warnings);
 
     std::vector<MethodRun> runs;
-    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, progress, warnings));
+    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, foam_times, progress, warnings));
     if (text && several) {
         print_table(in, runs);
         print_written(runs);
@@ -471,8 +501,13 @@ void add_deform_command(CLI::App& app) {
     add_setup_options(cmd, args->setup);
     cmd->add_option("-o,--output", args->output,
                     "Output mesh (.su2, .msh, .vtu; VTU adds displacement and quality); a time series writes "
-                    "one file per frame, numbered before the extension; --method all one per method")
+                    "one file per frame, numbered before the extension; --method all one per method. An "
+                    "OpenFOAM case folder (a folder, a name ending in '/'): the moved points go to "
+                    "CASE/<time>/polyMesh/points (--foam-time)")
         ->required();
+    cmd->add_option("--foam-time", args->foam_time,
+                    "OpenFOAM output: the time folder of the moved points (default 0; 'constant' replaces "
+                    "constant/polyMesh/points); a series writes one per frame, named by its time (or number)");
     cmd->add_option("--plan", args->plan, "Use a plan saved by 'dgwarp prepare' instead of building it");
     cmd->add_flag("--allow-invalid", args->allow_invalid, "Write the result even if cells are inverted");
     CLI::Option* untangle_flag =
@@ -494,13 +529,18 @@ void add_deform_command(CLI::App& app) {
         "The motion file names each moving marker's motion (docs/MOTION.md); markers not named stay fixed.\n"
         "--method all runs every method and prints a comparison table (as the paper's tables).\n"
         "Exit code 3 when a cell is inverted: nothing is written for that frame unless --allow-invalid.\n"
-        "No output (nor a frame's or a method's) may be an input; outputs are checked before the work.\n\n"
+        "No output (nor a frame's or a method's) may be an input; outputs are checked before the work.\n"
+        "OpenFOAM (docs/OPENFOAM.md): CASE/constant/polyMesh is read; the moved points are written to\n"
+        "OUT/0/polyMesh/points (OUT may be CASE itself: nothing else in it changes; another OUT gets a copy\n"
+        "of CASE's constant/polyMesh).\n\n"
         "Examples (in the repository's folder: examples/motions/ has a motion file of every kind):\n"
         "  dgwarp case naca0012 -o naca0012.su2\n"
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json -o turned.vtu\n"
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json -o cmp.su2 --method all\n"
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_pitch_plunge.json -o pitch.su2"
         "   (one file per frame)\n"
+        "  dgwarp deform tests/data/openfoam/mixed --motion examples/motions/openfoam_mixed_lift.json -o mixed/\n"
+        "      (an OpenFOAM case: mixed/0/polyMesh/points beside a copy of its constant/polyMesh)\n"
         "  dgwarp prepare naca0012.su2 --motion examples/motions/airfoil_rotate.json -o naca0012.plan\n"
         "  dgwarp deform naca0012.su2 --motion examples/motions/airfoil_rotate.json --plan naca0012.plan -o turned.su2 "
         "--json");

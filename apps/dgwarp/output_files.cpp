@@ -36,7 +36,53 @@ void require_extension(const std::string& flag, const std::filesystem::path& out
 }
 
 void require_mesh_extension(const std::string& flag, const std::filesystem::path& output) {
-    require_extension(flag, output, writable_extensions(), "a mesh (the format is chosen by the extension)");
+    if (writes_openfoam(output)) return;
+    require_extension(flag, output, writable_extensions(),
+                      "a mesh (the format is chosen by the extension; an OpenFOAM case is a folder, a name ending "
+                      "in '/')");
+}
+
+std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path& path) {
+    if (!reads_openfoam(path)) return {path};
+    std::vector<std::filesystem::path> processors;
+    try {
+        processors = openfoam_processor_meshes(path);
+    } catch (const Error&) {
+        return {path};  // reading it will say why
+    }
+    if (!processors.empty()) {
+        std::vector<std::filesystem::path> files;
+        for (const auto& dir : processors) {
+            for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+            for (const char* name : processor_addressing_file_names) files.push_back(dir / name);
+        }
+        return files;
+    }
+    std::filesystem::path dir;
+    try {
+        dir = find_poly_mesh(path);
+    } catch (const Error&) {
+        return {path};  // reading it will say why
+    }
+    std::vector<std::filesystem::path> files;
+    for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+    return files;
+}
+
+void check_nearest_folder_writable(const std::filesystem::path& folder) {
+    std::filesystem::path p = folder;
+    std::error_code ec;
+    while (!p.empty() && !std::filesystem::exists(p, ec) && p.has_parent_path() && p.parent_path() != p)
+        p = p.parent_path();
+    if (!p.empty() && !std::filesystem::exists(p, ec)) p.clear();
+    check_folder_writable(p);
+}
+
+void check_mesh_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs) {
+    if (!writes_openfoam(output)) return check_output_file(output, inputs);
+    const std::filesystem::path dir = openfoam_output_poly_mesh(output);
+    for (const char* name : poly_mesh_file_names) check_output(dir / name, inputs);
+    check_nearest_folder_writable(dir);
 }
 
 void check_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs) {

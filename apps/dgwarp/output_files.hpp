@@ -17,8 +17,24 @@ namespace dgwarp::cli {
 void require_extension(const std::string& flag, const std::filesystem::path& output,
                        const std::vector<std::string>& extensions, const std::string& what);
 
-/// require_extension for a mesh output: .su2, .msh or .vtu (writable_extensions()).
+/// require_extension for a mesh output: .su2, .msh or .vtu (writable_extensions()),
+/// or an OpenFOAM case folder (writes_openfoam: a folder, a name ending in '/'
+/// or without extension).
 void require_mesh_extension(const std::string& flag, const std::filesystem::path& output);
+
+/// The files reading the mesh `path` reads: an OpenFOAM case's polyMesh
+/// files (points, faces, owner, neighbour, boundary), else `path` itself.
+std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path& path);
+
+/// check_output_file for a mesh output; for an OpenFOAM case folder, for each
+/// file write_mesh writes there, and that the nearest existing folder on its
+/// path is writable (the case folder may not exist yet).
+void check_mesh_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs);
+
+/// Throws IoError (check_folder_writable) unless files can be created in
+/// `folder` or, when it does not exist yet, in the nearest folder above it
+/// that exists.
+void check_nearest_folder_writable(const std::filesystem::path& folder);
 
 /// Refuses `output` when it is one of `inputs` (usage error, exit 1): the same
 /// file, also through symbolic or hard links or another spelling of its path

@@ -71,6 +71,13 @@ TEST(FuzzRegression, Gmsh) {
     EXPECT_EQ(replay(seeds("gmsh"), fuzz::check_gmsh), 0u);
 }
 
+TEST(FuzzRegression, OpenFoam) {
+    // Every hand-made hostile input fails cleanly; every seed is read.
+    const std::size_t hostile = files_in(regressions("openfoam")).size();
+    EXPECT_EQ(replay(regressions("openfoam"), fuzz::check_openfoam), hostile);
+    EXPECT_EQ(replay(seeds("openfoam"), fuzz::check_openfoam), 0u);
+}
+
 TEST(FuzzRegression, Motion) {
     replay(regressions("motion"), fuzz::check_motion);
     // Seeds that name a CSV or SU2 file fail with an IoError: the fuzz target's

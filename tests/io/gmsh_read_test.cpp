@@ -520,7 +520,7 @@ TEST(GmshLibrary, ExtrudedPrismsAndHexahedraKeepVtkOrientation) {
     for (const Variant& v : variants) {
         SCOPED_TRACE(testing::Message() << "MSH " << v.version << (v.parametric ? " parametric" : ""));
         const Mesh m = write_with_gmsh_and_read(dir / "layers.msh", v.version, v.parametric);
-        const auto counts = test::count_by_type(m.cells);
+        const auto counts = test::cell_type_map(m.cells);
         EXPECT_EQ(counts.at(CellType::prism), prisms);
         EXPECT_EQ(counts.at(CellType::hexahedron), hexes);
         ASSERT_EQ(m.markers.size(), 1u);

@@ -109,7 +109,7 @@ inline void expect_same_mesh(const Mesh& actual, const Mesh& expected) {
 }
 
 /// How many cells of each type.
-inline std::map<CellType, std::size_t> count_by_type(const ElementList& list) {
+inline std::map<CellType, std::size_t> cell_type_map(const ElementList& list) {
     std::map<CellType, std::size_t> counts;
     for (CellType t : list.types) ++counts[t];
     return counts;

@@ -185,7 +185,7 @@ void expect_gmsh_sees(const std::filesystem::path& file, const Mesh& m) {
             ASSERT_EQ(coord[3 * k + c], m.points[(tags[k] - 1) * m.dim + c]) << "node tag " << tags[k];
 
     std::map<int, std::size_t> cells;
-    for (const auto& [type, n] : test::count_by_type(m.cells)) cells[type == CellType::triangle ? 2
+    for (const auto& [type, n] : test::cell_type_map(m.cells)) cells[type == CellType::triangle ? 2
                                                                      : type == CellType::quadrilateral ? 3
                                                                      : type == CellType::tetrahedron ? 4
                                                                      : type == CellType::hexahedron ? 5

@@ -2,7 +2,8 @@
 // SU2 meshes they were written for: airfoil_* on SU2's NACA0012 mesh,
 // brick_prism_*, brick_pyra_*, brick_tets_* on its prism, pyramid and
 // tetrahedral bricks, the other brick_* on its hexahedral brick (all the box
-// [0,2]×[0,1]×[0,1], markers x_m … z_p).
+// [0,2]×[0,1]×[0,1], markers x_m … z_p); openfoam_mixed_* on the OpenFOAM case
+// tests/data/openfoam/mixed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,8 +43,11 @@ std::string brick_mesh(const std::string& kind) {
     return "deformation_brick_" + kind + "_mesh_brick_" + kind + "_ffd.su2";
 }
 
+const std::string openfoam_mixed = "tests/data/openfoam/mixed";
+
 /// The mesh an example file is for (see the file comment).
 std::string mesh_of_example(const std::string& file_name) {
+    if (file_name.rfind("openfoam_mixed", 0) == 0) return openfoam_mixed;
     if (file_name.rfind("airfoil", 0) == 0) return naca0012;
     for (const std::string& kind : brick_kinds)
         if (file_name.rfind("brick_" + kind + "_", 0) == 0) return brick_mesh(kind);
@@ -78,6 +82,7 @@ TEST(MotionExamples, EveryExampleResolvesOnItsMesh) {
     std::map<std::string, Mesh> meshes;
     for (const std::string& name : {naca0012, brick_mesh("hex"), brick_mesh("prism"), brick_mesh("pyra"), brick_mesh("tets")})
         meshes.emplace(name, load_mesh(name));
+    meshes.emplace(openfoam_mixed, read_mesh(test::source_dir() / openfoam_mixed));
     for (const auto& f : example_files()) {
         SCOPED_TRACE(f.filename().string());
         const Mesh& mesh = meshes.at(mesh_of_example(f.filename().string()));

@@ -29,18 +29,35 @@ std::string lower_case_extension(const std::filesystem::path& path) {
 std::vector<std::string> readable_extensions() { return {".su2", ".msh", ".vtu"}; }
 std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
 
+namespace {
+bool has_mesh_extension(const std::filesystem::path& path) {
+    const auto known = readable_extensions();
+    return std::find(known.begin(), known.end(), lower_case_extension(path)) != known.end();
+}
+}  // namespace
+
+bool reads_openfoam(const std::filesystem::path& path) { return !has_mesh_extension(path) && is_openfoam_input(path); }
+bool writes_openfoam(const std::filesystem::path& path) { return !has_mesh_extension(path) && is_openfoam_output(path); }
+
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress) {
+    if (reads_openfoam(path)) return read_openfoam(path, progress);
     const std::string ext = lower_case_extension(path);
     if (ext == ".su2") return read_su2(path, options.zone, progress);
     if (ext == ".msh") return read_gmsh(path, progress);
     if (ext == ".vtu") return read_vtu(path, progress);
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
-                      joined(readable_extensions()));
+                      joined(readable_extensions()) + " and OpenFOAM case folders");
 }
 
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress,
                MeshExtras& extras) {
     extras = {};
+    if (reads_openfoam(path)) {
+        OpenFoamSource source;
+        Mesh mesh = read_openfoam(path, progress, &source);
+        extras.openfoam = std::move(source);
+        return mesh;
+    }
     if (lower_case_extension(path) != ".su2") return read_mesh(path, options, progress);
     Su2Surroundings surroundings;
     Mesh mesh = read_su2(path, options.zone, progress, surroundings);
@@ -64,13 +81,20 @@ std::string dropped_extras_warning(const MeshExtras& extras, const std::string& 
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                 const WriteOptions& options) {
+    if (writes_openfoam(path)) {
+        OpenFoamWriteOptions foam;
+        const OpenFoamSource* source = options.extras && options.extras->openfoam ? &*options.extras->openfoam : nullptr;
+        foam.format = options.foam_format ? *options.foam_format : source ? source->points_format : foam::Format::ascii;
+        foam.source = source;
+        return write_openfoam(path, mesh, foam);
+    }
     const std::string ext = lower_case_extension(path);
     if (ext == ".su2" && options.extras && options.extras->su2) return write_su2(path, mesh, *options.extras->su2);
     if (ext == ".su2") return write_su2(path, mesh);
     if (ext == ".msh") return write_gmsh(path, mesh, options.gmsh_version);
     if (ext == ".vtu") return write_vtu(path, mesh, fields);
     throw FormatError(path.string() + ": cannot write files of type '" + ext + "'; dgwarp writes " +
-                      joined(writable_extensions()));
+                      joined(writable_extensions()) + " and OpenFOAM case folders (a name ending in '/')");
 }
 
 }  // namespace dgwarp

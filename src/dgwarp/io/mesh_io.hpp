@@ -4,12 +4,17 @@
 //   .msh  Gmsh ASCII 4.1 or 2.2 (read both; write 4.1 by default)
 //   .vtu  VTK XML unstructured grid (read: ascii, binary, appended, zlib; write:
 //         binary, with markers and point and cell data; see vtu.hpp)
+//   a folder: an OpenFOAM case or polyMesh folder (read and write, ascii and
+//         binary; see openfoam.hpp). A path without one of the extensions
+//         above is one when it is a folder (input), or when it is a folder,
+//         its name ends in '/' or has no extension (output).
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "dgwarp/core/progress.hpp"
+#include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
@@ -38,17 +43,22 @@ struct MeshExtras {
     /// An SU2 file's text around the zone read: other zones, FFD boxes,
     /// periodic data, comments (read_su2).
     std::optional<Su2Surroundings> su2;
+    /// An OpenFOAM mesh's folder, points format and patch dictionaries (read_openfoam).
+    std::optional<OpenFoamSource> openfoam;
 };
 
 struct WriteOptions {
     int gmsh_version = 41;  // 41 (MSH 4.1) or 22 (MSH 2.2)
+    /// OpenFOAM output: ascii or binary; unset: the format of an OpenFOAM input
+    /// (extras), else ascii.
+    std::optional<foam::Format> foam_format;
     /// The input's extras: an SU2 output then keeps them around the mesh
     /// (write_su2 with surroundings); other formats cannot hold them
     /// (dropped_extras says what is lost).
     const MeshExtras* extras = nullptr;
 };
 
-/// Reads a mesh; the format comes from the extension. Throws FormatError for
+/// Reads a mesh; the format comes from the extension (a folder: OpenFOAM). Throws FormatError for
 /// an unsupported extension, IoError when the file cannot be read, ParseError
 /// (file, line, what was expected) when it is malformed, and MeshError when
 /// its content is inconsistent.
@@ -72,13 +82,20 @@ std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::fil
 std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output);
 
 /// Writes a mesh atomically (temporary file, then rename); the format comes
-/// from the extension.
+/// from the extension. An OpenFOAM case folder (is_openfoam_output) gets a
+/// whole polyMesh (write_openfoam; each file atomically), with the patch
+/// dictionaries of an OpenFOAM input whose markers it has (options.extras).
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields = {},
                 const WriteOptions& options = {});
 
 /// The extension of `path` in lower case (".su2" for "WING.SU2"): formats
 /// are chosen by it without regard to case.
 std::string lower_case_extension(const std::filesystem::path& path);
+
+/// True when read_mesh / write_mesh take `path` as an OpenFOAM case or
+/// polyMesh folder (see above).
+bool reads_openfoam(const std::filesystem::path& path);
+bool writes_openfoam(const std::filesystem::path& path);
 
 /// The extensions read_mesh / write_mesh accept, for help texts.
 std::vector<std::string> readable_extensions();

@@ -1,0 +1,278 @@
+// Cells from OpenFOAM's faces (openfoam_poly_mesh.hpp).
+#include <algorithm>
+#include <span>
+#include <string>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
+
+namespace dgwarp::foam {
+
+bool same_cycle(const NodeId* a, const NodeId* b, int n) {
+    for (int r = 0; r < n; ++r) {
+        bool equal = true;
+        for (int i = 0; i < n && equal; ++i) equal = a[i] == b[(i + r) % n];
+        if (equal) return true;
+    }
+    return false;
+}
+
+const FaceTable& outward_faces(CellType type) {
+    // VTK node order, positive orientation (cell_orientation +1): a
+    // tetrahedron's and a pyramid's base and a hexahedron's bottom face turn
+    // counter-clockwise seen from the rest of the cell, a prism's first
+    // triangle clockwise (docs/QUALITY.md).
+    static const FaceTable tet{4, {3, 3, 3, 3}, {{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}}};
+    static const FaceTable pyramid{5, {4, 3, 3, 3, 3}, {{{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}}};
+    static const FaceTable prism{5, {3, 3, 4, 4, 4}, {{{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}}}};
+    static const FaceTable hex{
+        6, {4, 4, 4, 4, 4, 4}, {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}}};
+    static const FaceTable none{};
+    switch (type) {
+        case CellType::tetrahedron: return tet;
+        case CellType::pyramid: return pyramid;
+        case CellType::prism: return prism;
+        case CellType::hexahedron: return hex;
+        default: return none;
+    }
+}
+
+namespace {
+
+/// The face of `f` holding the directed edge a -> b: its index and the
+/// position of a in it, or index -1.
+struct FaceAt {
+    int face = -1;
+    int at = 0;
+};
+
+FaceAt face_with_edge(const CellFaces& f, NodeId a, NodeId b) {
+    for (int k = 0; k < f.count; ++k)
+        for (int i = 0; i < f.size[k]; ++i)
+            if (f.node[k][i] == a && f.node[k][(i + 1) % f.size[k]] == b) return {k, i};
+    return {};
+}
+
+/// Node j after `at` along face k.
+NodeId along(const CellFaces& f, FaceAt p, int j) { return f.node[p.face][(p.at + j) % f.size[p.face]]; }
+
+/// The nodes joined to v by an edge of a face, without repeats.
+int neighbours_of(const CellFaces& f, NodeId v, std::array<NodeId, 8>& out) {
+    int n = 0;
+    for (int k = 0; k < f.count; ++k)
+        for (int i = 0; i < f.size[k]; ++i)
+            if (f.node[k][i] == v) {
+                const NodeId w = f.node[k][(i + 1) % f.size[k]];
+                if (std::find(out.begin(), out.begin() + n, w) == out.begin() + n) {
+                    if (n == 8) return n;
+                    out[n++] = w;
+                }
+            }
+    return n;
+}
+
+/// The one neighbour of v that is not among `base` (-1 when there is none or several).
+NodeId partner(const CellFaces& f, NodeId v, std::span<const NodeId> base) {
+    std::array<NodeId, 8> nb{};
+    const int n = neighbours_of(f, v, nb);
+    NodeId found = -1;
+    for (int i = 0; i < n; ++i)
+        if (std::find(base.begin(), base.end(), nb[i]) == base.end()) {
+            if (found >= 0) return -1;
+            found = nb[i];
+        }
+    return found;
+}
+
+/// Every face of the ordered cell is one of `f` (as a cycle), and the nodes are distinct.
+bool faces_match(const CellFaces& f, CellType type, const std::array<NodeId, 8>& node) {
+    const int n = nodes_per_cell(type);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < i; ++j)
+            if (node[i] == node[j] || node[i] < 0) return false;
+    const FaceTable& table = outward_faces(type);
+    if (table.count != f.count) return false;
+    for (int k = 0; k < table.count; ++k) {
+        NodeId face[4];
+        for (int i = 0; i < table.size[k]; ++i) face[i] = node[table.node[k][i]];
+        bool found = false;
+        for (int j = 0; j < f.count && !found; ++j)
+            found = f.size[j] == table.size[k] && same_cycle(face, f.node[j].data(), f.size[j]);
+        if (!found) return false;
+    }
+    return true;
+}
+
+NodeId smallest_node(const CellFaces& f) {
+    NodeId m = f.node[0][0];
+    for (int k = 0; k < f.count; ++k)
+        for (int i = 0; i < f.size[k]; ++i) m = std::min(m, f.node[k][i]);
+    return m;
+}
+
+/// Tetrahedron or hexahedron: v0 the smallest node, v1 its smallest neighbour,
+/// the base the face turning v0 -> v1 seen from inside (the outward face
+/// holding v1 -> v0, reversed).
+bool order_from_smallest_edge(const CellFaces& f, int base_size, std::array<NodeId, 8>& node) {
+    const NodeId v0 = smallest_node(f);
+    std::array<NodeId, 8> nb{};
+    const int n = neighbours_of(f, v0, nb);
+    if (n == 0) return false;
+    const NodeId v1 = *std::min_element(nb.begin(), nb.begin() + n);
+    const FaceAt p = face_with_edge(f, v1, v0);
+    if (p.face < 0 || f.size[p.face] != base_size) return false;
+    node[0] = v0;
+    for (int j = 1; j < base_size; ++j) node[j] = along(f, p, base_size - j + 1);  // v1, then backwards
+    return true;
+}
+
+/// The partner of each of the first `base_size` nodes goes `base_size` places later.
+bool add_partners(const CellFaces& f, int base_size, std::array<NodeId, 8>& node) {
+    const std::span<const NodeId> base(node.data(), static_cast<std::size_t>(base_size));
+    for (int j = 0; j < base_size; ++j)
+        if ((node[base_size + j] = partner(f, node[j], base)) < 0) return false;
+    return true;
+}
+
+}  // namespace
+
+OrderedCell order_cell(const CellFaces& f) {
+    OrderedCell c;
+    int tris = 0, quads = 0;
+    for (int k = 0; k < f.count; ++k) {
+        if (f.size[k] == 3) ++tris;
+        else if (f.size[k] == 4) ++quads;
+        else return c;  // polyhedron
+    }
+    if (f.count == 4 && tris == 4) c.type = CellType::tetrahedron;
+    else if (f.count == 5 && tris == 4) c.type = CellType::pyramid;
+    else if (f.count == 5 && tris == 2) c.type = CellType::prism;
+    else if (f.count == 6 && quads == 6) c.type = CellType::hexahedron;
+    else return c;
+    c.shape = CellShape::not_closed;
+    bool ok = false;
+    switch (c.type) {
+        case CellType::tetrahedron:
+            ok = order_from_smallest_edge(f, 3, c.node);
+            if (ok) {
+                // The apex: the node not in the base.
+                c.node[3] = -1;
+                for (int k = 0; k < f.count; ++k)
+                    for (int i = 0; i < f.size[k]; ++i)
+                        if (std::find(c.node.begin(), c.node.begin() + 3, f.node[k][i]) == c.node.begin() + 3)
+                            c.node[3] = f.node[k][i];
+            }
+            break;
+        case CellType::hexahedron:
+            ok = order_from_smallest_edge(f, 4, c.node) && add_partners(f, 4, c.node);
+            break;
+        case CellType::prism: {
+            // The first triangle holds the smallest node and keeps its outward turn.
+            const NodeId v0 = smallest_node(f);
+            for (int k = 0; k < f.count && !ok; ++k)
+                for (int i = 0; i < f.size[k] && !ok; ++i)
+                    if (f.size[k] == 3 && f.node[k][i] == v0) {
+                        for (int j = 0; j < 3; ++j) c.node[j] = f.node[k][(i + j) % 3];
+                        ok = true;
+                    }
+            ok = ok && add_partners(f, 3, c.node);
+            break;
+        }
+        case CellType::pyramid: {
+            int q = 0;
+            while (f.size[q] != 4) ++q;
+            int at = 0;
+            for (int i = 1; i < 4; ++i)
+                if (f.node[q][i] < f.node[q][at]) at = i;
+            for (int j = 0; j < 4; ++j) c.node[j] = f.node[q][(at + 4 - j) % 4];  // the base turned inward
+            c.node[4] = -1;
+            for (int k = 0; k < f.count; ++k)
+                for (int i = 0; i < f.size[k]; ++i)
+                    if (std::find(c.node.begin(), c.node.begin() + 4, f.node[k][i]) == c.node.begin() + 4)
+                        c.node[4] = f.node[k][i];
+            ok = true;
+            break;
+        }
+        default: break;
+    }
+    if (ok && faces_match(f, c.type, c.node)) c.shape = CellShape::ok;
+    return c;
+}
+
+ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const FaceLines& where) {
+    const auto nfaces = static_cast<std::int64_t>(mesh.num_faces());
+    const auto ninternal = static_cast<std::int64_t>(mesh.neighbour.size());
+    // Each cell's faces (compressed rows): f for a face it owns, ~f for one it neighbours.
+    std::vector<std::int64_t> start(static_cast<std::size_t>(num_cells) + 1, 0);
+    for (std::int64_t f = 0; f < nfaces; ++f) ++start[static_cast<std::size_t>(mesh.owner[f]) + 1];
+    for (std::int64_t f = 0; f < ninternal; ++f) ++start[static_cast<std::size_t>(mesh.neighbour[f]) + 1];
+    for (std::size_t c = 0; c < static_cast<std::size_t>(num_cells); ++c) start[c + 1] += start[c];
+    std::vector<std::int64_t> faces(static_cast<std::size_t>(start.back()));
+    {
+        std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
+        for (std::int64_t f = 0; f < nfaces; ++f) faces[fill[mesh.owner[f]]++] = f;
+        for (std::int64_t f = 0; f < ninternal; ++f) faces[fill[mesh.neighbour[f]]++] = ~f;
+    }
+    const auto face_of = [](std::int64_t signed_face) { return signed_face < 0 ? ~signed_face : signed_face; };
+    const auto line_of = [&](std::int64_t c) -> std::size_t {
+        std::int64_t first = nfaces;
+        for (std::int64_t k = start[c]; k < start[c + 1]; ++k) first = std::min(first, face_of(faces[k]));
+        return first < nfaces ? where.line[static_cast<std::size_t>(first)] : 0;
+    };
+    const auto face_list = [&](std::int64_t c) {
+        std::string s;
+        std::vector<std::int64_t> ids;
+        for (std::int64_t k = start[c]; k < start[c + 1]; ++k) ids.push_back(face_of(faces[k]));
+        std::sort(ids.begin(), ids.end());
+        for (std::size_t i = 0; i < ids.size() && i < 8; ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+        return s + (ids.size() > 8 ? ", ..." : "");
+    };
+
+    ElementList cells;
+    cells.reserve(static_cast<std::size_t>(num_cells), 8);
+    std::int64_t polyhedra = 0, first_polyhedron = -1;
+    for (std::int64_t c = 0; c < num_cells; ++c) {
+        const std::int64_t count = start[c + 1] - start[c];
+        if (count == 0)
+            throw ParseError(where.owner_file, 0, "every cell from 0 to " + std::to_string(num_cells - 1) +
+                                                      " (the largest in owner and neighbour) to own or neighbour faces",
+                             "cell " + std::to_string(c) + " has none");
+        CellFaces cf;
+        bool simple = count <= 6;
+        for (std::int64_t k = start[c]; k < start[c + 1] && simple; ++k) {
+            const std::int64_t f = face_of(faces[k]);
+            const auto size = static_cast<int>(mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
+            if (size > 4) {
+                simple = false;
+                break;
+            }
+            cf.size[cf.count] = size;
+            for (int i = 0; i < size; ++i) {
+                // A face points out of its owner: the neighbour sees it reversed.
+                const int j = faces[k] >= 0 ? i : (size - i) % size;
+                cf.node[cf.count][i] = mesh.face_nodes[mesh.face_offsets[f] + j];
+            }
+            ++cf.count;
+        }
+        const OrderedCell oc = simple ? order_cell(cf) : OrderedCell{};
+        if (oc.shape == CellShape::polyhedron) {
+            if (polyhedra++ == 0) first_polyhedron = c;
+            continue;
+        }
+        if (oc.shape == CellShape::not_closed)
+            throw ParseError(where.faces_file, line_of(c),
+                             "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
+                                 ", oriented by owner and neighbour) to close a " + std::string(cell_type_name(oc.type)),
+                             "faces that do not");
+        if (polyhedra == 0) cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
+    }
+    if (polyhedra > 0)
+        throw FormatError(where.faces_file + ":" + std::to_string(line_of(first_polyhedron)) + ": " +
+                          std::to_string(polyhedra) + " of the " + std::to_string(num_cells) +
+                          " cells are polyhedra (the first: cell " + std::to_string(first_polyhedron) + ", faces " +
+                          face_list(first_polyhedron) +
+                          "); dgwarp's meshes hold tetrahedra, pyramids, prisms and hexahedra only");
+    return cells;
+}
+
+}  // namespace dgwarp::foam

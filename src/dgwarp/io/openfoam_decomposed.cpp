@@ -1,0 +1,242 @@
+// Decomposed OpenFOAM cases (openfoam.hpp): the processors' polyMeshes read
+// as one mesh, numbered as the reconstructed case through decomposePar's
+// addressing files (pointProcAddressing, faceProcAddressing,
+// cellProcAddressing), and each processor's point numbering kept for
+// writing moved points back.
+#include <algorithm>
+#include <map>
+#include <string>
+#include <system_error>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
+#include "dgwarp/io/text_reader.hpp"
+
+namespace dgwarp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool is_dir(const fs::path& p) {
+    std::error_code ec;
+    return fs::is_directory(p, ec);
+}
+
+/// N when `name` is "processorN" (digits only), else -1.
+long processor_number(const std::string& name, const char* prefix) {
+    const std::string p = prefix;
+    if (name.size() <= p.size() || name.compare(0, p.size(), p) != 0) return -1;
+    const std::string digits = name.substr(p.size());
+    if (digits.size() > 6 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return -1;
+    return std::stol(digits);
+}
+
+/// One processor's files read.
+struct ProcessorPart {
+    foam::PolyMeshPart part;
+    std::vector<std::int32_t> point_of, face_of, cell_of;  // the addressing files
+};
+
+std::string str(std::int64_t v) { return std::to_string(v); }
+
+/// Addressing file `name` of processor dir `dir`: `count` labels from 0 to
+/// below `limit` (faces: signed, 1-based).
+std::vector<std::int32_t> read_addressing(const fs::path& dir, const char* name, std::int64_t count, bool signed_faces) {
+    const std::string file = (dir / name).string();
+    std::vector<std::int32_t> labels = foam::read_label_list_file(file, foam::read_mesh_file(dir, name));
+    if (static_cast<std::int64_t>(labels.size()) != count)
+        throw ParseError(file, 0, str(count) + " labels, one per " + (signed_faces ? "face" : name[0] == 'p' ? "point" : "cell") +
+                                      " of the processor's polyMesh",
+                         str(static_cast<std::int64_t>(labels.size())));
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        if (signed_faces ? labels[i] == 0 : labels[i] < 0)
+            throw ParseError(file, 0, std::string("label ") + str(static_cast<std::int64_t>(i)) +
+                                          (signed_faces ? " other than 0 (faces are numbered from 1, signed by their turn)"
+                                                        : " >= 0"),
+                             str(labels[i]));
+    return labels;
+}
+
+}  // namespace
+
+std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
+    std::error_code ec;
+    if (!is_dir(path) || is_dir(path / "constant" / "polyMesh")) return {};
+    std::map<long, fs::path> found;
+    for (const auto& entry : fs::directory_iterator(path, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (!is_dir(entry.path())) continue;
+        if (processor_number(name, "processors") >= 0)
+            throw FormatError(entry.path().string() +
+                              ": a collated decomposed case (one processors<N> folder); dgwarp reads the uncollated "
+                              "layout (processor0, processor1, ...: decomposePar -fileHandler uncollated) or the "
+                              "reconstructed case");
+        if (const long n = processor_number(name, "processor"); n >= 0) found[n] = entry.path() / "constant" / "polyMesh";
+    }
+    if (found.empty()) return {};
+    std::vector<fs::path> meshes;
+    for (const auto& [n, mesh] : found) {
+        if (n != static_cast<long>(meshes.size()))
+            throw FormatError(path.string() + ": a decomposed case whose processor folders are not processor0 to processor" +
+                              str(static_cast<std::int64_t>(found.size()) - 1) + " (processor" +
+                              str(static_cast<std::int64_t>(meshes.size())) + " is missing)");
+        if (!is_dir(mesh))
+            throw FormatError(mesh.string() + ": missing: every processor folder of a decomposed case needs its polyMesh");
+        meshes.push_back(mesh);
+    }
+    return meshes;
+}
+
+std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const double> points) {
+    std::vector<double> out(p.points.size() * 3);
+    for (std::size_t i = 0; i < p.points.size(); ++i)
+        for (std::size_t d = 0; d < 3; ++d) out[3 * i + d] = points[3 * static_cast<std::size_t>(p.points[i]) + d];
+    return out;
+}
+
+Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const ProgressFn& progress,
+                                    OpenFoamSource* source) {
+    std::vector<ProcessorPart> parts;
+    std::int64_t num_points = 0, num_cells = 0, local_points = 0;
+    for (std::size_t p = 0; p < meshes.size(); ++p) {
+        const fs::path& dir = meshes[p];
+        PolyMeshFiles files;
+        std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
+        for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
+        ProcessorPart part{foam::read_poly_mesh_part(dir, files, true), {}, {}, {}};
+        const Mesh& m = part.part.mesh;
+        part.point_of = read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(m.num_points()), false);
+        part.face_of = read_addressing(dir, "faceProcAddressing", part.part.num_faces, true);
+        part.cell_of = read_addressing(dir, "cellProcAddressing", static_cast<std::int64_t>(m.cells.size()), false);
+        for (std::int32_t g : part.point_of) num_points = std::max<std::int64_t>(num_points, g + std::int64_t{1});
+        num_cells += static_cast<std::int64_t>(m.cells.size());
+        local_points += static_cast<std::int64_t>(m.num_points());
+        parts.push_back(std::move(part));
+        if (progress) progress(0.9 * static_cast<double>(p + 1) / static_cast<double>(meshes.size()));
+    }
+
+    // Each point of the case is some processor's: a larger number is a damaged label
+    // (checked before the points are allocated).
+    if (num_points > local_points)
+        throw ParseError((meshes[0] / "pointProcAddressing").string(), 0,
+                         "point numbers below " + str(local_points) + " (the processors have that many points)",
+                         str(num_points - 1));
+
+    Mesh mesh;
+    mesh.dim = 3;
+    // Points: each one from the processors that hold it, at the same place in each.
+    mesh.points.assign(static_cast<std::size_t>(num_points) * 3, 0.0);
+    std::vector<int> from(static_cast<std::size_t>(num_points), -1);
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const Mesh& m = parts[p].part.mesh;
+        for (std::size_t i = 0; i < m.num_points(); ++i) {
+            const auto g = static_cast<std::size_t>(parts[p].point_of[i]);
+            const bool seen = from[g] >= 0;
+            for (std::size_t d = 0; d < 3; ++d) {
+                if (seen && mesh.points[3 * g + d] != m.points[3 * i + d])
+                    throw ParseError((meshes[p] / "points").string(), 0,
+                                     "point " + str(static_cast<std::int64_t>(i)) + " (point " + str(static_cast<std::int64_t>(g)) +
+                                         " of the case, pointProcAddressing) where processor " + str(from[g]) + " has it",
+                                     "another place");
+                mesh.points[3 * g + d] = m.points[3 * i + d];
+            }
+            from[g] = static_cast<int>(p);
+        }
+    }
+    if (const auto it = std::find(from.begin(), from.end(), -1); it != from.end())
+        throw ParseError((meshes[0] / "pointProcAddressing").string(), 0,
+                         "every point from 0 to " + str(num_points - 1) + " in some processor's pointProcAddressing",
+                         "no point " + str(it - from.begin()));
+
+    // Cells in the case's order, each renumbered and put back in the reader's node order.
+    struct Cell {
+        CellType type = CellType::tetrahedron;
+        std::array<NodeId, 8> node{};
+        bool set = false;
+    };
+    std::vector<Cell> cells(static_cast<std::size_t>(num_cells));
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const Mesh& m = parts[p].part.mesh;
+        for (std::size_t c = 0; c < m.cells.size(); ++c) {
+            const std::int64_t g = parts[p].cell_of[c];
+            if (g >= num_cells || cells[static_cast<std::size_t>(g)].set)
+                throw ParseError((meshes[p] / "cellProcAddressing").string(), 0,
+                                 "each cell of the case from 0 to " + str(num_cells - 1) + " once over the processors",
+                                 "cell " + str(g) + (g < num_cells ? " again" : ""));
+            const CellType type = m.cells.types[c];
+            const auto nodes = m.cells.nodes_of(c);
+            const foam::FaceTable& t = foam::outward_faces(type);
+            foam::CellFaces faces;
+            faces.count = t.count;
+            for (int k = 0; k < t.count; ++k) {
+                faces.size[k] = t.size[k];
+                for (int i = 0; i < t.size[k]; ++i)
+                    faces.node[k][i] = parts[p].point_of[static_cast<std::size_t>(nodes[static_cast<std::size_t>(t.node[k][i])])];
+            }
+            const foam::OrderedCell oc = foam::order_cell(faces);
+            if (oc.shape != foam::CellShape::ok)  // two corners of the cell are one point of the case
+                throw ParseError((meshes[p] / "pointProcAddressing").string(), 0,
+                                 "distinct points of the case for the corners of cell " + str(static_cast<std::int64_t>(c)),
+                                 "a point twice");
+            cells[static_cast<std::size_t>(g)] = {oc.type, oc.node, true};
+        }
+    }
+    mesh.cells.reserve(cells.size(), 8);
+    for (const Cell& c : cells) mesh.cells.push_back(c.type, {c.node.data(), static_cast<std::size_t>(nodes_per_cell(c.type))});
+
+    // Markers: processor 0's patches (not the processor ones); every processor has the same.
+    const auto patch_names = [](const foam::PolyMeshPart& part) {
+        std::vector<std::string> names;
+        for (const foam::Patch& patch : part.patches)
+            if (!patch.processor) names.push_back(patch.name);
+        return names;
+    };
+    const std::vector<std::string> names = patch_names(parts[0].part);
+    for (std::size_t p = 1; p < parts.size(); ++p)
+        if (patch_names(parts[p].part) != names)
+            throw ParseError((meshes[p] / "boundary").string(), 0,
+                             "the patches of processor 0, in the same order (decomposePar writes every patch to every "
+                             "processor)",
+                             "other patches");
+    for (std::size_t m = 0; m < names.size(); ++m) {
+        // (face of the case, element) from every processor, in the case's face order.
+        std::vector<std::pair<std::int64_t, std::vector<NodeId>>> faces;
+        for (std::size_t p = 0; p < parts.size(); ++p) {
+            const foam::PolyMeshPart& part = parts[p].part;
+            const ElementList& elements = part.mesh.markers[m].elements;
+            std::int64_t start = 0;
+            for (const foam::Patch& patch : part.patches)
+                if (patch.name == names[m]) start = patch.start;
+            for (std::size_t e = 0; e < elements.size(); ++e) {
+                const std::int32_t signed_face = parts[p].face_of[static_cast<std::size_t>(start) + e];
+                std::vector<NodeId> nodes;
+                for (NodeId n : elements.nodes_of(e)) nodes.push_back(parts[p].point_of[static_cast<std::size_t>(n)]);
+                if (signed_face < 0) std::reverse(nodes.begin() + 1, nodes.end());  // turned in the processor
+                faces.emplace_back(signed_face < 0 ? -std::int64_t{signed_face} : signed_face, std::move(nodes));
+            }
+        }
+        std::stable_sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        Marker marker{names[m], {}};
+        marker.elements.reserve(faces.size(), 4);
+        for (const auto& [face, nodes] : faces)
+            marker.elements.push_back(nodes.size() == 3 ? CellType::triangle : CellType::quadrilateral, nodes);
+        mesh.markers.push_back(std::move(marker));
+    }
+    validate(mesh);
+    if (source) {
+        *source = {};
+        source->points_format = parts[0].part.points_format;
+        for (const foam::Patch& patch : parts[0].part.patches)
+            if (!patch.processor) source->patches.push_back(patch.info);
+        for (std::size_t p = 0; p < parts.size(); ++p)
+            source->processors.push_back({meshes[p], parts[p].part.points_format,
+                                          std::vector<NodeId>(parts[p].point_of.begin(), parts[p].point_of.end())});
+    }
+    if (progress) progress(1.0);
+    return mesh;
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,224 @@
+// `dgwarp deform` and `dgwarp convert` on OpenFOAM case folders, end to end:
+// the moved points go where OpenFOAM reads them and nothing else changes;
+// conversions between OpenFOAM and every other format are exact.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/io/openfoam.hpp"
+#include "io/openfoam_test_support.hpp"
+#include "support/test_paths.hpp"
+
+using namespace dgwarp;
+using namespace dgwarp::test;
+
+namespace {
+
+const char* foam_lift_top = R"({"markers": {"top": {"translate": [0, 0, 0.05]}}})";
+
+/// A copy of the committed case `name` in a scratch folder.
+std::filesystem::path foam_case_copy(const std::string& name, const std::filesystem::path& dir) {
+    std::filesystem::copy(openfoam_case(name), dir / name, std::filesystem::copy_options::recursive);
+    return dir / name;
+}
+
+/// Every regular file under `dir` (relative path -> bytes).
+std::map<std::string, std::string> foam_tree(const std::filesystem::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files[std::filesystem::relative(e.path(), dir).string()] = slurp(e.path());
+    return files;
+}
+
+/// The mesh of case `dir` with the points of `points_file`.
+Mesh foam_with_points(const std::filesystem::path& dir, const std::filesystem::path& points_file) {
+    PolyMeshFiles files;
+    const auto pm = find_poly_mesh(dir);
+    files = {slurp(points_file), slurp(pm / "faces"), slurp(pm / "owner"), slurp(pm / "neighbour"), slurp(pm / "boundary")};
+    return read_openfoam_files(pm, files);
+}
+
+}  // namespace
+
+TEST(CliOpenFoam, DeformIntoTheInputCaseWritesOnlyATimeFolderPointsFile) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    for (const std::string name : {"mixed", "mixed-binary"}) {
+        const auto c = foam_case_copy(name, dir);
+        const auto before = foam_tree(c);
+        const CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.out.find("wrote " + (c / "0" / "polyMesh" / "points").string()), std::string::npos) << r.out;
+        auto after = foam_tree(c);
+        ASSERT_EQ(after.size(), before.size() + 1);
+        const std::string points = after.at("0/polyMesh/points");
+        after.erase("0/polyMesh/points");
+        EXPECT_EQ(after, before) << name << ": a file of the case changed";
+        // Points in the input's format, where OpenFOAM looks for them; the top moved by exactly 0.05.
+        EXPECT_NE(points.find(name == "mixed" ? "format      ascii;" : "format      binary;"), std::string::npos);
+        EXPECT_NE(points.find("location    \"0/polyMesh\";"), std::string::npos);
+        const Mesh original = read_mesh(c);
+        const Mesh moved = foam_with_points(c, c / "0" / "polyMesh" / "points");
+        EXPECT_EQ(moved.cells, original.cells);
+        for (NodeId n : marker_nodes(find_marker(original, "top")))
+            EXPECT_EQ(moved.points[3 * n + 2], original.points[3 * n + 2] + 0.05) << n;
+        for (NodeId n : marker_nodes(find_marker(original, "bottom")))
+            for (int d = 0; d < 3; ++d) EXPECT_EQ(moved.points[3 * n + d], original.points[3 * n + d]) << n;
+    }
+}
+
+TEST(CliOpenFoam, DeformIntoAnotherFolderCopiesThePolyMeshAndMatchesAnSu2Output) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    const auto c = foam_case_copy("mixed", dir);
+    const std::string base = "deform " + quoted(c) + " -m " + quoted(motion) + " -q -o ";
+    ASSERT_EQ(run_cli(base + quoted(dir / "out/") + " --foam-time 0.25").exit_code, 0);
+    ASSERT_EQ(run_cli(base + quoted(dir / "out.su2")).exit_code, 0);
+    // out/constant/polyMesh: the input's files byte for byte (zones too); the points at 0.25.
+    const auto copied = foam_tree(dir / "out" / "constant");
+    EXPECT_EQ(copied, foam_tree(c / "constant"));
+    EXPECT_TRUE(read_mesh(dir / "out") == read_mesh(c));
+    const Mesh su2 = read_mesh(dir / "out.su2");
+    EXPECT_EQ(foam_with_points(dir / "out", dir / "out" / "0.25" / "polyMesh" / "points").points, su2.points);
+    // --foam-time constant: the moved points replace the copy's.
+    ASSERT_EQ(run_cli(base + quoted(dir / "replaced") + " --foam-time constant").exit_code, 0);
+    EXPECT_EQ(read_mesh(dir / "replaced").points, su2.points);
+    EXPECT_FALSE(std::filesystem::exists(dir / "replaced" / "0"));
+}
+
+TEST(CliOpenFoam, DeformRefusesToOverwriteTheInputAndChecksTimeNames) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    const auto c = foam_case_copy("cavity", dir);
+    const auto before = foam_tree(c);
+    const std::string base = "deform " + quoted(c) + " -m " + quoted(motion) + " -o ";
+    CommandResult r = run_cli(base + quoted(c) + " --foam-time constant");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("constant/polyMesh/points is an input of this command"), std::string::npos) << r.err;
+    r = run_cli(base + quoted(c) + " --foam-time 1/2");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("is not a time folder's name"), std::string::npos) << r.err;
+    r = run_cli(base + quoted(dir / "out.su2") + " --foam-time 1");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("is for an OpenFOAM case output"), std::string::npos) << r.err;
+    EXPECT_EQ(foam_tree(c), before);
+    // A 2D mesh cannot become an OpenFOAM case.
+    ASSERT_EQ(run_cli("case naca0012 -q -o " + quoted(dir / "n.su2")).exit_code, 0);
+    r = run_cli("deform " + quoted(dir / "n.su2") + " -m " + quoted(source_dir() / "examples/motions/airfoil_rotate.json") +
+                " -o " + quoted(dir / "n2d/"));
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("OpenFOAM meshes are 3D"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "n2d"));
+}
+
+TEST(CliOpenFoam, ASeriesWritesOneTimeFolderPerFrame) {
+    const auto dir = scratch_dir();
+    const auto periodic = write_text(dir / "periodic.json", R"({"markers": {"top": {"periodic": {
+        "plunge": {"amplitude": [0, 0, 0.05], "frequency": 1.0, "phase_deg": 0}}}},
+        "time": {"time_step": 0.1, "steps": 3}})");
+    const auto frames = write_text(dir / "frames.json", R"({"frames": [
+        {"markers": {"top": {"translate": [0, 0, 0.02]}}}, {"markers": {"top": {"translate": [0, 0, 0.04]}}}]})");
+    const auto c = openfoam_case("mixed");
+    ASSERT_EQ(run_cli("deform " + quoted(c) + " -q -m " + quoted(periodic) + " -o " + quoted(dir / "p")).exit_code, 0);
+    for (const char* t : {"0", "0.1", "0.2"}) EXPECT_TRUE(std::filesystem::exists(dir / "p" / t / "polyMesh" / "points")) << t;
+    ASSERT_EQ(run_cli("deform " + quoted(c) + " -q -m " + quoted(frames) + " -o " + quoted(dir / "f")).exit_code, 0);
+    for (const char* t : {"0", "1"}) EXPECT_TRUE(std::filesystem::exists(dir / "f" / t / "polyMesh" / "points")) << t;
+    const Mesh second = foam_with_points(dir / "f", dir / "f" / "1" / "polyMesh" / "points");
+    const Mesh original = read_mesh(c);
+    const NodeId n = marker_nodes(find_marker(original, "top")).front();
+    EXPECT_EQ(second.points[3 * n + 2], original.points[3 * n + 2] + 0.04);
+    const CommandResult r =
+        run_cli("deform " + quoted(c) + " -q -m " + quoted(frames) + " -o " + quoted(dir / "g") + " --foam-time 3");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("this motion has 2 frames"), std::string::npos) << r.err;
+}
+
+// A decomposed case: each processor gets its own points, in its numbering and
+// format; the processors' files are otherwise untouched (or copied).
+TEST(CliOpenFoam, DeformADecomposedCaseWritesEachProcessorsPoints) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    ASSERT_EQ(run_cli("deform " + quoted(openfoam_case("mixed")) + " -q -m " + quoted(motion) + " -o " +
+                      quoted(dir / "whole.su2"))
+                  .exit_code,
+              0);
+    const Mesh moved = read_mesh(dir / "whole.su2");
+    const auto c = foam_case_copy("mixed-decomposed", dir);
+    const auto before = foam_tree(c);
+    CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote " + (c / "processor*" / "0" / "polyMesh" / "points").string()), std::string::npos) << r.out;
+    auto after = foam_tree(c);
+    OpenFoamSource source;
+    read_openfoam(c, {}, &source);
+    ASSERT_EQ(source.processors.size(), 2u);
+    for (std::size_t p = 0; p < 2; ++p) {
+        const std::string file = "processor" + std::to_string(p) + "/0/polyMesh/points";
+        ASSERT_EQ(after.count(file), 1u) << file;
+        EXPECT_EQ(after.at(file),
+                  openfoam_points_text(processor_points(source.processors[p], moved.points), foam::Format::ascii, "0/polyMesh"));
+        after.erase(file);
+    }
+    EXPECT_EQ(after, before);
+    // Into another folder: each processor's polyMesh copied, then its points.
+    r = run_cli("deform " + quoted(c) + " -q -m " + quoted(motion) + " -o " + quoted(dir / "out/") + " --foam-time constant");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_mesh(dir / "out").points, moved.points);
+    EXPECT_EQ(slurp(dir / "out/processor1/constant/polyMesh/faceProcAddressing"),
+              slurp(c / "processor1/constant/polyMesh/faceProcAddressing"));
+    // The input's points are not an output.
+    r = run_cli("deform " + quoted(c) + " -q -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time constant");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("processor0/constant/polyMesh/points is an input of this command"), std::string::npos) << r.err;
+}
+
+TEST(CliOpenFoam, ConvertRoundTripsThroughEveryFormatExactly) {
+    const auto dir = scratch_dir();
+    for (const std::string name : {"mixed", "cavity-binary"}) {
+        const auto c = openfoam_case(name);
+        const Mesh original = read_mesh(c);
+        for (const char* ext : {".su2", ".msh", ".vtu"}) {
+            const auto file = dir / (name + ext), back = dir / (name + "-from-" + std::string(ext + 1));
+            ASSERT_EQ(run_cli("convert -q " + quoted(c) + " " + quoted(file)).exit_code, 0) << ext;
+            EXPECT_TRUE(read_mesh(file) == original) << name << ext;
+            ASSERT_EQ(run_cli("convert -q " + quoted(file) + " " + quoted(back)).exit_code, 0) << ext;
+            EXPECT_TRUE(read_mesh(back) == original) << name << ext << " back to OpenFOAM";
+        }
+        // OpenFOAM to OpenFOAM keeps the patch types and the format (or takes --foam-format).
+        const auto copy = dir / (name + "-copy");
+        ASSERT_EQ(run_cli("convert -q " + quoted(c) + " " + quoted(copy)).exit_code, 0);
+        EXPECT_TRUE(read_mesh(copy) == original);
+        EXPECT_EQ(slurp(copy / "constant/polyMesh/points").find("binary") != std::string::npos, name == "cavity-binary");
+        const std::string boundary = slurp(copy / "constant/polyMesh/boundary");
+        EXPECT_NE(boundary.find(name == "mixed" ? "physicalType patch;" : "type            empty;"), std::string::npos);
+        ASSERT_EQ(run_cli("convert -q --foam-format ascii " + quoted(c) + " " + quoted(dir / (name + "-ascii/"))).exit_code, 0);
+        EXPECT_EQ(slurp(dir / (name + "-ascii") / "constant/polyMesh/points").find("binary"), std::string::npos);
+        EXPECT_TRUE(read_mesh(dir / (name + "-ascii")) == original);
+    }
+    // The input case is not an output.
+    const auto c = foam_case_copy("cavity", dir);
+    const auto before = foam_tree(c);
+    const CommandResult r = run_cli("convert " + quoted(c) + " " + quoted(c));
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("is an input of this command"), std::string::npos) << r.err;
+    EXPECT_EQ(foam_tree(c), before);
+}
+
+TEST(CliOpenFoam, Su2MeshesConvertToOpenFoamAndBackInTheDocumentedOrder) {
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const auto dir = scratch_dir();
+    const auto su2 = su2_meshes_dir() / "deformation_brick_prism_mesh_brick_prism_ffd.su2";
+    ASSERT_EQ(run_cli("convert -q " + quoted(su2) + " " + quoted(dir / "brick/")).exit_code, 0);
+    ASSERT_EQ(run_cli("convert -q " + quoted(dir / "brick") + " " + quoted(dir / "brick.su2")).exit_code, 0);
+    ASSERT_EQ(run_cli("convert -q " + quoted(dir / "brick.su2") + " " + quoted(dir / "again")).exit_code, 0);
+    const Mesh original = read_mesh(su2), once = read_mesh(dir / "brick");
+    EXPECT_EQ(once.points, original.points);
+    EXPECT_EQ(once.cells.types, original.cells.types);
+    EXPECT_EQ(once.markers.size(), original.markers.size());
+    EXPECT_TRUE(read_mesh(dir / "brick.su2") == once);
+    EXPECT_TRUE(read_mesh(dir / "again") == once);
+    const CommandResult info = run_cli("info " + quoted(dir / "brick"));
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NE(info.out.find("inverted      0 of " + std::to_string(original.cells.size())), std::string::npos) << info.out;
+}
