@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam.hpp"
@@ -73,7 +74,11 @@ TEST(CliOpenFoam, DeformIntoAnotherFolderCopiesThePolyMeshAndMatchesAnSu2Output)
     const auto motion = write_text(dir / "lift.json", foam_lift_top);
     const auto c = foam_case_copy("mixed", dir);
     const std::string base = "deform " + quoted(c) + " -m " + quoted(motion) + " -q -o ";
-    ASSERT_EQ(run_cli(base + quoted(dir / "out/") + " --foam-time 0.25").exit_code, 0);
+    const CommandResult r = run_cli(base + quoted(dir / "out/") + " --foam-time 0.25 --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("output"), (dir / "out/").string());  // -o as given
+    EXPECT_EQ(j.at("frames").at(0).at("output"), (dir / "out" / "0.25" / "polyMesh" / "points").string());
     ASSERT_EQ(run_cli(base + quoted(dir / "out.su2")).exit_code, 0);
     // out/constant/polyMesh: the input's files byte for byte (zones too); the points at 0.25.
     const auto copied = foam_tree(dir / "out" / "constant");
