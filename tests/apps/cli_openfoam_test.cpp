@@ -178,6 +178,30 @@ TEST(CliOpenFoam, DeformADecomposedCaseWritesEachProcessorsPoints) {
     EXPECT_NE(r.err.find("processor0/constant/polyMesh/points is an input of this command"), std::string::npos) << r.err;
 }
 
+// A damaged case: exit 2, the file and line named, nothing written.
+TEST(CliOpenFoam, ADamagedCaseIsReportedAndNothingIsWritten) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    const auto c = foam_case_copy("mixed", dir);
+    const auto faces = c / "constant" / "polyMesh" / "faces";
+    const std::string text = slurp(faces);
+    write_text(faces, text.substr(0, text.size() / 2));
+    const auto before = foam_tree(c);
+    for (const std::string& args : {"convert " + quoted(c) + " " + quoted(dir / "out.su2"),
+                                    "convert " + quoted(c) + " " + quoted(dir / "out/"),
+                                    "deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c)}) {
+        const CommandResult r = run_cli(args);
+        EXPECT_EQ(r.exit_code, 2) << args;
+        // The faces' count on line 19 is more than half a file can hold.
+        EXPECT_NE(r.err.find(faces.string() + ":19: expected a size of faces that the rest of the file can hold"),
+                  std::string::npos)
+            << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.su2"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+    EXPECT_EQ(foam_tree(c), before);
+}
+
 TEST(CliOpenFoam, ConvertRoundTripsThroughEveryFormatExactly) {
     const auto dir = scratch_dir();
     for (const std::string name : {"mixed", "cavity-binary"}) {
