@@ -424,7 +424,7 @@ void run_deform(const DeformArgs& given) {
     if (a.json) {
         nlohmann::json j = inputs_json(in, "deform");
         if (!runs[0].planned.plan_file.empty()) j["options"] = options_json(runs[0].planned.options, true);
-        j["output"] = a.output;
+        j["output"] = given.output;
         for (const auto& r : runs)
             for (const auto& w : plan_warnings(r.planned))
                 j["warnings"].push_back(several ? std::string(method_name(r.planned.method)) + ": " + w : w);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam.hpp"
@@ -73,7 +74,11 @@ TEST(CliOpenFoam, DeformIntoAnotherFolderCopiesThePolyMeshAndMatchesAnSu2Output)
     const auto motion = write_text(dir / "lift.json", foam_lift_top);
     const auto c = foam_case_copy("mixed", dir);
     const std::string base = "deform " + quoted(c) + " -m " + quoted(motion) + " -q -o ";
-    ASSERT_EQ(run_cli(base + quoted(dir / "out/") + " --foam-time 0.25").exit_code, 0);
+    const CommandResult r = run_cli(base + quoted(dir / "out/") + " --foam-time 0.25 --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("output"), (dir / "out/").string());  // -o as given
+    EXPECT_EQ(j.at("frames").at(0).at("output"), (dir / "out" / "0.25" / "polyMesh" / "points").string());
     ASSERT_EQ(run_cli(base + quoted(dir / "out.su2")).exit_code, 0);
     // out/constant/polyMesh: the input's files byte for byte (zones too); the points at 0.25.
     const auto copied = foam_tree(dir / "out" / "constant");
@@ -171,6 +176,30 @@ TEST(CliOpenFoam, DeformADecomposedCaseWritesEachProcessorsPoints) {
     r = run_cli("deform " + quoted(c) + " -q -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time constant");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("processor0/constant/polyMesh/points is an input of this command"), std::string::npos) << r.err;
+}
+
+// A damaged case: exit 2, the file and line named, nothing written.
+TEST(CliOpenFoam, ADamagedCaseIsReportedAndNothingIsWritten) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    const auto c = foam_case_copy("mixed", dir);
+    const auto faces = c / "constant" / "polyMesh" / "faces";
+    const std::string text = slurp(faces);
+    write_text(faces, text.substr(0, text.size() / 2));
+    const auto before = foam_tree(c);
+    for (const std::string& args : {"convert " + quoted(c) + " " + quoted(dir / "out.su2"),
+                                    "convert " + quoted(c) + " " + quoted(dir / "out/"),
+                                    "deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c)}) {
+        const CommandResult r = run_cli(args);
+        EXPECT_EQ(r.exit_code, 2) << args;
+        // The faces' count on line 19 is more than half a file can hold.
+        EXPECT_NE(r.err.find(faces.string() + ":19: expected a size of faces that the rest of the file can hold"),
+                  std::string::npos)
+            << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.su2"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+    EXPECT_EQ(foam_tree(c), before);
 }
 
 TEST(CliOpenFoam, ConvertRoundTripsThroughEveryFormatExactly) {
