@@ -179,24 +179,19 @@ FrameQuality repair_and_measure(const Inputs& in, Method method, const DeformArg
     FrameQuality q;
     q.quality = cell_qualities(deformed, in.orientation);
     const auto& fixed = in.boundary.boundary.nodes;
-    const std::vector<std::int64_t> step_folded =
-        method == Method::dg_harmonic && !a.untangle && !a.no_untangle
-            ? newly_inverted_cells(q.quality, in.original_cell_quality)
-            : std::vector<std::int64_t>{};
-    // A cell whose nodes are all on the boundary cannot be repaired by moving
-    // volume nodes: with one of those inverted the frame stays invalid
-    // whatever the untangle step does, so the last resort does not run (on a
-    // torn boundary it would search for a long time; tested).
-    if (!step_folded.empty() && cells_with_only_fixed_nodes(deformed.cells, fixed, step_folded).empty()) {
+    if (method == Method::dg_harmonic && !a.untangle && !a.no_untangle) {
         // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
         // folded cells (a moving face bounded by fixed walls), repair them
-        // locally, and say so in the report.
+        // locally, and say so in the report; not where the boundary motion
+        // itself folds a cell (every node on the boundary: tested).
+        const std::vector<std::int64_t> step_folded = newly_inverted_cells(q.quality, in.original_cell_quality);
         f.quality_seconds = sw.lap();  // the first measure; the second counts with the repair
-        progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
-        f.untangled = untangle(deformed.dim, deformed.cells, in.own_orientation, fixed, deformed.points,
-                               last_resort_untangle_options());
-        f.last_resort = true;
-        q.quality = cell_qualities(deformed, in.orientation);
+        if (!step_folded.empty()) progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
+        f.untangled = run_last_resort(deformed.dim, deformed.cells, in.own_orientation, fixed, step_folded, deformed.points);
+        if (f.untangled) {
+            f.last_resort = true;
+            q.quality = cell_qualities(deformed, in.orientation);
+        }
         f.untangle_seconds = sw.lap();
     }
     q.ratio = quality_ratios(q.quality, in.original_cell_quality);

@@ -6,7 +6,6 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/last_resort.hpp"
-#include "dgwarp/repair/unrepairable_cells.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "py_options.hpp"
 
@@ -103,13 +102,9 @@ void repair_after_step(const PyPlan& p, std::span<double> points, const py::obje
         dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points, options);
         return;
     }
-    // The last resort: with its budget, and not where the boundary motion itself
-    // folds a cell (every node on the boundary: no repair of the volume can help).
     const std::vector<double> q = cell_qualities(mesh, points, ref.orientation);
-    const std::vector<std::int64_t> folded = newly_inverted_cells(q, ref.quality);
-    if (!folded.empty() && cells_with_only_fixed_nodes(mesh.cells, p.boundary.boundary.nodes, folded).empty())
-        dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points,
-                         last_resort_untangle_options());
+    run_last_resort(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, newly_inverted_cells(q, ref.quality),
+                    points);
 }
 
 }  // namespace dgwarp::python
