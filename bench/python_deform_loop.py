@@ -70,6 +70,7 @@ def main():
     parser.add_argument("--threads", type=int, default=1)
     parser.add_argument("--repeats", type=int, default=3, help="runs of each series")
     parser.add_argument("--cli", default=str(SOURCE_DIR / "build" / "dgwarp"))
+    parser.add_argument("--method", default="dg-idw", help="the method of both loops (docs/PYTHON.md's figures: dg-idw)")
     args = parser.parse_args()
 
     dgwarp.set_num_threads(args.threads)
@@ -87,11 +88,11 @@ def main():
         for _ in range(args.repeats):
             report = json.loads(subprocess.run(
                 [args.cli, "deform", tmp / "cube.su2", "-m", tmp / "motion.json", "-o", tmp / "out.vtu", "--json",
-                 "--threads", str(args.threads)], capture_output=True, text=True, check=True).stdout)
+                 "--threads", str(args.threads), "--method", args.method], capture_output=True, text=True, check=True).stdout)
             cpp.append([f["seconds"]["deform"] for f in report["frames"]])
 
         m = dgwarp.Motion(tmp / "motion.json")
-        plan = dgwarp.prepare(mesh, moving=m)
+        plan = dgwarp.prepare(mesh, moving=m, method=args.method)
         out = np.empty_like(mesh.points)
         plan.deform(m, out=out)  # the first write into `out` faults its pages in: not part of a step
         # (a) arrays per boundary node, computed beforehand as a solver would.
