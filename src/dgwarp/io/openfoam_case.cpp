@@ -26,11 +26,6 @@ bool is_file(const fs::path& p) {
     return fs::is_regular_file(p, ec);
 }
 
-bool is_folder(const fs::path& p) {
-    std::error_code ec;
-    return fs::is_directory(p, ec);
-}
-
 /// `p` without a trailing separator ("case/" -> "case").
 fs::path without_trailing_slash(fs::path p) {
     while (!p.empty() && p.filename().empty() && p.has_parent_path() && p.parent_path() != p) p = p.parent_path();
@@ -68,6 +63,13 @@ std::string gunzip(const fs::path& path) {
 }
 
 }  // namespace
+
+bool foam::is_folder(const fs::path& p) {
+    std::error_code ec;
+    return fs::is_directory(p, ec);
+}
+
+using foam::is_folder;
 
 std::string foam::read_mesh_file(const fs::path& dir, const char* name) {
     if (!is_file(dir / name) && is_file(dir / (std::string(name) + ".gz"))) return gunzip(dir / (std::string(name) + ".gz"));

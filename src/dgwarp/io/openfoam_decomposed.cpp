@@ -16,13 +16,9 @@
 namespace dgwarp {
 
 namespace fs = std::filesystem;
+using foam::is_folder;
 
 namespace {
-
-bool is_dir(const fs::path& p) {
-    std::error_code ec;
-    return fs::is_directory(p, ec);
-}
 
 /// N when `name` is "processorN" (digits only), else -1.
 long processor_number(const std::string& name, const char* prefix) {
@@ -64,11 +60,11 @@ std::vector<std::int32_t> read_addressing(const fs::path& dir, const char* name,
 
 std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
     std::error_code ec;
-    if (!is_dir(path) || is_dir(path / "constant" / "polyMesh")) return {};
+    if (!is_folder(path) || is_folder(path / "constant" / "polyMesh")) return {};
     std::map<long, fs::path> found;
     for (const auto& entry : fs::directory_iterator(path, ec)) {
         const std::string name = entry.path().filename().string();
-        if (!is_dir(entry.path())) continue;
+        if (!is_folder(entry.path())) continue;
         if (processor_number(name, "processors") >= 0)
             throw FormatError(entry.path().string() +
                               ": a collated decomposed case (one processors<N> folder); dgwarp reads the uncollated "
@@ -83,7 +79,7 @@ std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
             throw FormatError(path.string() + ": a decomposed case whose processor folders are not processor0 to processor" +
                               str(static_cast<std::int64_t>(found.size()) - 1) + " (processor" +
                               str(static_cast<std::int64_t>(meshes.size())) + " is missing)");
-        if (!is_dir(mesh))
+        if (!is_folder(mesh))
             throw FormatError(mesh.string() + ": missing: every processor folder of a decomposed case needs its polyMesh");
         meshes.push_back(mesh);
     }

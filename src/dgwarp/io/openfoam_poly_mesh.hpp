@@ -20,6 +20,10 @@
 
 namespace dgwarp::foam {
 
+/// Whether `p` is an existing folder (false, not an exception, when it cannot
+/// be looked at). Defined in openfoam_case.cpp.
+bool is_folder(const std::filesystem::path& p);
+
 /// One patch of the boundary file.
 struct Patch {
     std::string name;
