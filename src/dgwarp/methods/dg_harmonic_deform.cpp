@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/prefetch.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
@@ -104,6 +105,13 @@ void solve_interior(const HarmonicFactors& f, const HarmonicFactors::System& sys
                     values + static_cast<std::size_t>(first_unknown + i) * K + Offset);
 }
 
+// Prefetching, as in DG-IDW's step (dg_idw_deform.cpp): node -> coarse simplex
+// row -> corner values are dependent loads, far apart in a spatially random
+// node numbering; the loop asks for the row of the node row_prefetch_distance
+// ahead and for the corner values of the node values_prefetch_distance ahead.
+constexpr std::int64_t row_prefetch_distance = 16;
+constexpr std::int64_t values_prefetch_distance = 4;
+
 // Moves nodes [begin, end): boundary nodes by their own motion, volume nodes
 // by the values interpolated in their coarse simplex. Rotates: whether any
 // boundary node rotates (else only the translation is interpolated).
@@ -115,7 +123,18 @@ void deform_range(const DgHarmonicPlan& plan, const double* x0, const NodeMotion
     std::int64_t vol = begin - (std::lower_bound(plan.boundary_nodes.begin(), plan.boundary_nodes.end(), begin) -
                                 plan.boundary_nodes.begin());
     BoundaryMover<Dim> mover;
+    const std::int32_t* node_simplex = plan.node_simplex.data();
+    const std::int32_t* simplices = plan.simplices.data();
+    constexpr std::size_t used_bytes = (Rotates ? K : Dim) * sizeof(double);  // t first in each row
     for (std::int64_t i = begin; i < end; ++i) {
+        if (i + row_prefetch_distance < end && node_simplex[i + row_prefetch_distance] >= 0)
+            prefetch_bytes(simplices + static_cast<std::int64_t>(node_simplex[i + row_prefetch_distance]) * Corners,
+                           Corners * sizeof(std::int32_t));
+        if (i + values_prefetch_distance < end && node_simplex[i + values_prefetch_distance] >= 0) {
+            const std::int32_t* c =
+                simplices + static_cast<std::int64_t>(node_simplex[i + values_prefetch_distance]) * Corners;
+            for (int k = 0; k < Corners; ++k) prefetch_bytes(values + static_cast<std::size_t>(c[k]) * K, used_bytes);
+        }
         const double* x = x0 + i * Dim;
         double* y = out + i * Dim;
         const std::int32_t s = plan.node_simplex[i];

@@ -7,6 +7,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/prefetch.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
@@ -86,6 +87,34 @@ inline void interpolate(const double* x, double* y, const double* v, const std::
     }
 }
 
+// Prefetching. In a spatially random node numbering (Gmsh's 3D Delaunay)
+// each node's simplex row and its corners' motions are far from the previous
+// node's, and the loads depend on each other (node -> row -> motions): without
+// help every node waits for two cache misses in turn (the step took 2-3x as
+// long as on the same mesh renumbered). The node -> simplex array is read in
+// order, so the loop asks for the row of the node row_prefetch_distance ahead,
+// and for the corner motions of the node motion_prefetch_distance ahead
+// (whose row has arrived by then). Measured on the 826k sphere (1 thread,
+// CPU time under load): Gmsh's numbering 37.5 -> 20.9 ms, renumbered 16.7 ->
+// 16.2 ms; distances 8/4, 16/8, 24/12, 32/16 were slower in one or the other.
+constexpr std::int64_t row_prefetch_distance = 16;
+constexpr std::int64_t motion_prefetch_distance = 4;
+
+inline void prefetch_row(const std::int32_t* node_simplex, const std::int32_t* simplex_motion, int corners,
+                         std::int64_t i) {
+    const std::int32_t s = node_simplex[i];
+    if (s >= 0) __builtin_prefetch(simplex_motion + static_cast<std::int64_t>(s) * corners);
+}
+
+inline void prefetch_corner_motions(const std::int32_t* node_simplex, const std::int32_t* simplex_motion, int corners,
+                                    const NodeMotion* motion, std::int64_t i) {
+    const std::int32_t s = node_simplex[i];
+    if (s < 0) return;
+    const std::int32_t* corner = simplex_motion + static_cast<std::int64_t>(s) * corners;
+    for (int k = 0; k < corners && corner[k] >= 0; ++k)  // the moving corners (first in the row)
+        prefetch_bytes(motion + corner[k], sizeof(NodeMotion));
+}
+
 // Moves nodes [begin, end): boundary nodes by their own motion, volume nodes
 // by the interpolated one. Terms: 0 when no moving boundary node rotates,
 // else the Taylor terms of the rotation factors (10: any angle).
@@ -103,6 +132,9 @@ void deform_range(const DgIdwPlan& plan, const double* x0, const NodeMotion* mot
     const double k_t = sc.k_t, k_r = sc.k_r;  // locals: stores to out cannot change them
     BoundaryMover<Dim> boundary_mover;
     for (std::int64_t i = begin; i < end; ++i) {
+        if (i + row_prefetch_distance < end) prefetch_row(node_simplex, simplex_motion, Corners, i + row_prefetch_distance);
+        if (i + motion_prefetch_distance < end)
+            prefetch_corner_motions(node_simplex, simplex_motion, Corners, motion, i + motion_prefetch_distance);
         const double* x = x0 + i * Dim;
         double* y = out + i * Dim;
         const std::int32_t s = node_simplex[i];
