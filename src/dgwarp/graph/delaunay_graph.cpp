@@ -80,20 +80,20 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     const double group_seconds = seconds_since(t0);
 
     const auto t1 = Clock::now();
-    const bool hilbert = options.order == LocateOrder::hilbert ||
+    const bool spatial = options.order == LocateOrder::morton ||
                          (options.order == LocateOrder::automatic && !is_coherent_order(dim, points, query_nodes));
     const double order_seconds = seconds_since(t1);
     if (progress) progress(0.0);
     const ProgressFn locate_progress = progress_part(progress, graph_progress_share, 1.0);
     detail::TriangulationResult tri =
-        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, hilbert, locate_progress)
-                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, hilbert, locate_progress);
+        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, spatial, locate_progress)
+                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, spatial, locate_progress);
     out.graph.simplices = std::move(tri.simplices);
     out.location = std::move(tri.location);
     out.timings = tri.timings;
     out.timings.triangulate_seconds += group_seconds;
     out.timings.locate_seconds += order_seconds;
-    out.timings.hilbert_sorted = hilbert;
+    out.timings.spatially_sorted = spatial;
     return out;
 }
 

@@ -4,6 +4,20 @@
 // and the graph simplex that holds each volume node (METHODS.md, "DG-IDW",
 // prepare steps 1 and 2). Plain data out; CGAL stays inside the .cpp files.
 //
+// What "Delaunay" guarantees (3D; in 2D the graph is built on the original
+// coordinates, CGAL's exact predicates breaking ties): the graph is built on the boundary points each
+// moved by less than 1e-12 of their bounding-box diagonal (by an amount
+// hashed from the point's coordinates; points on a face of the bounding box
+// do not move), so that exactly cospherical, cocircular or grid-aligned
+// points (a sphere's nodes, a structured wall) need no exact arithmetic; see
+// graph/triangulate_cgal.hpp. Every simplex is positively oriented in the
+// original coordinates (checked exactly; the graph is rebuilt with fewer
+// points moved, at worst none, when a check fails), and no original point
+// lies inside a simplex's circumsphere by more than that tolerance: the graph
+// is a Delaunay triangulation of the original points up to ties, which the
+// perturbation breaks. Volume nodes are located at their original coordinates,
+// and every weight uses the original coordinates.
+//
 // Indices: a "boundary index" b is a position in the boundary node list
 // given to build_located_graph (BoundarySet order); a graph vertex v stands
 // for one or more boundary indices with identical coordinates.
@@ -45,7 +59,8 @@ struct GraphLocation {
 struct GraphTimings {
     double triangulate_seconds = 0;  // deduplication + Delaunay insertion + tables
     double locate_seconds = 0;       // ordering + point location
-    bool hilbert_sorted = false;     // whether the queries were Hilbert-sorted
+    bool spatially_sorted = false;   // whether the queries were sorted along a Morton curve
+    int triangulation_builds = 0;    // 1 when the graph on perturbed coordinates passed its check (see below)
 };
 
 struct LocatedGraph {
@@ -57,8 +72,9 @@ struct LocatedGraph {
 /// The order in which query nodes are located. Each walk starts from the
 /// previous node's simplex, so a spatially coherent order keeps walks short.
 enum class LocateOrder {
-    automatic,  // the given order when it is coherent (see is_coherent_order), else Hilbert
-    hilbert,    // Hilbert-curve order (CGAL::hilbert_sort, median policy)
+    automatic,  // the given order when it is coherent (see is_coherent_order), else Morton
+    morton,     // along a Morton (Z-order) curve (morton_order.hpp: a radix sort, about a
+                // quarter of the time of CGAL's Hilbert sort for walks as short)
     given,      // the order of query_nodes
 };
 

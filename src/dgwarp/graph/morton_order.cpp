@@ -33,6 +33,28 @@ std::uint64_t spread2(std::uint64_t v) {
     return v;
 }
 
+struct Keyed {
+    std::uint64_t code;
+    std::uint32_t position;
+};
+
+// Sorts by code, ties in the given order (a stable LSD radix sort, 11-bit
+// digits; digits above the highest set bit of any code are skipped): the
+// order std::sort of (code, position) pairs gives, in a fraction of its time
+// (826k nodes: 0.07 s with std::sort).
+void radix_sort(std::vector<Keyed>& key, std::uint64_t all_bits) {
+    constexpr int digit_bits = 11;
+    constexpr std::size_t buckets = std::size_t{1} << digit_bits;
+    std::vector<Keyed> other(key.size());
+    for (int shift = 0; shift < 64 && (all_bits >> shift) != 0; shift += digit_bits) {
+        std::vector<std::size_t> count(buckets + 1, 0);
+        for (const Keyed& k : key) ++count[((k.code >> shift) & (buckets - 1)) + 1];
+        for (std::size_t b = 0; b < buckets; ++b) count[b + 1] += count[b];
+        for (const Keyed& k : key) other[count[(k.code >> shift) & (buckets - 1)]++] = k;
+        key.swap(other);
+    }
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
@@ -48,8 +70,9 @@ std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points,
     const double cells = std::ldexp(1.0, bits) - 1;
     double scale[3] = {};
     for (int d = 0; d < dim; ++d) scale[d] = hi[d] > lo[d] ? cells / (hi[d] - lo[d]) : 0.0;
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> key(nodes.size());
-    parallel_for(static_cast<std::int64_t>(nodes.size()), [&](std::int64_t i) {
+    std::vector<Keyed> key(nodes.size());
+    std::uint64_t all_bits = 0;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
         std::uint64_t code = 0;
         for (int d = 0; d < dim; ++d) {
             const double u = (points[static_cast<std::size_t>(nodes[i]) * dim + d] - lo[d]) * scale[d];
@@ -57,10 +80,11 @@ std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points,
             code |= (dim == 3 ? spread3(c) : spread2(c)) << d;
         }
         key[i] = {code, static_cast<std::uint32_t>(i)};
-    });
-    std::sort(key.begin(), key.end());
+        all_bits |= code;
+    }
+    radix_sort(key, all_bits);
     std::vector<std::uint32_t> order(key.size());
-    for (std::size_t i = 0; i < key.size(); ++i) order[i] = key[i].second;
+    for (std::size_t i = 0; i < key.size(); ++i) order[i] = key[i].position;
     return order;
 }
 

@@ -2,7 +2,6 @@
 // (the implementation shared with 3D is in triangulate_cgal.hpp).
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -23,11 +22,12 @@ struct Plane {
     using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vb, Fb>>;
     using Point = Kernel::Point_2;
     using Handle = Delaunay::Face_handle;
-    using SortTraits = CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::Pointer_property_map<Point>::type>;
 
     static Point point_of(std::span<const double> points, NodeId n) {
         return {points[2 * static_cast<std::size_t>(n)], points[2 * static_cast<std::size_t>(n) + 1]};
     }
+    static Point point_at(const double* x) { return {x[0], x[1]}; }
+    static bool positive(const Point* p) { return CGAL::orientation(p[0], p[1], p[2]) == CGAL::POSITIVE; }
     static void check_spans(const Delaunay& dt, std::size_t vertices) {
         if (dt.dimension() < 2)
             throw MeshError("the Delaunay graph needs boundary nodes that span the plane, but all " +
@@ -46,8 +46,8 @@ struct Plane {
 TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order, const ProgressFn& locate_progress) {
-    return triangulate_and_locate<Plane>(points, vertex_node, query_nodes, hilbert_order, locate_progress);
+                                              bool spatial_order, const ProgressFn& locate_progress) {
+    return triangulate_and_locate<Plane>(points, vertex_node, query_nodes, spatial_order, locate_progress);
 }
 
 }  // namespace dgwarp::detail

@@ -3,7 +3,6 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
@@ -25,12 +24,13 @@ struct Space {
     using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<Vb, Cb>>;
     using Point = Kernel::Point_3;
     using Handle = Delaunay::Cell_handle;
-    using SortTraits = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Point>::type>;
 
     static Point point_of(std::span<const double> points, NodeId n) {
         const double* p = points.data() + 3 * static_cast<std::size_t>(n);
         return {p[0], p[1], p[2]};
     }
+    static Point point_at(const double* x) { return {x[0], x[1], x[2]}; }
+    static bool positive(const Point* p) { return CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE; }
     static void check_spans(const Delaunay& dt, std::size_t vertices) {
         if (dt.dimension() < 3)
             throw MeshError("the Delaunay graph needs boundary nodes that span space, but all " +
@@ -50,8 +50,8 @@ struct Space {
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order, const ProgressFn& locate_progress) {
-    return triangulate_and_locate<Space>(points, vertex_node, query_nodes, hilbert_order, locate_progress);
+                                              bool spatial_order, const ProgressFn& locate_progress) {
+    return triangulate_and_locate<Space>(points, vertex_node, query_nodes, spatial_order, locate_progress);
 }
 
 }  // namespace dgwarp::detail

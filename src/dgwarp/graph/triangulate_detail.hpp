@@ -24,11 +24,11 @@ struct TriangulationResult {
 TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order, const ProgressFn& locate_progress);
+                                              bool spatial_order, const ProgressFn& locate_progress);
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool hilbert_order, const ProgressFn& locate_progress);
+                                              bool spatial_order, const ProgressFn& locate_progress);
 
 /// Queries are located in blocks of this many visits, each block walking from
 /// its own start, so blocks can run in parallel and the result does not
