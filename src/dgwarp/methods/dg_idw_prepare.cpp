@@ -152,7 +152,19 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     const double snap_distance = snap_fraction * all_diagonal;
     plan.node_coefficients.resize(volume.size() * static_cast<std::size_t>(corners));
     std::vector<std::uint8_t> snapped(volume.size(), 0);
-    parallel_for(static_cast<std::int64_t>(volume.size()), [&](std::int64_t i) {
+    // The boundary points by boundary index, in one small array (it stays in
+    // cache), and each node's simplex row asked for ahead: in a spatially
+    // random numbering the rows are far apart (as in deform, dg_idw_deform.cpp).
+    std::vector<double> boundary_points(boundary.nodes.size() * static_cast<std::size_t>(dim));
+    for (std::size_t b = 0; b < boundary.nodes.size(); ++b)
+        std::copy_n(points.data() + static_cast<std::size_t>(boundary.nodes[b]) * dim, dim,
+                    boundary_points.data() + b * dim);
+    constexpr std::int64_t row_ahead = 16;
+    const auto num_volume = static_cast<std::int64_t>(volume.size());
+    parallel_for(num_volume, [&](std::int64_t i) {
+        if (i + row_ahead < num_volume)
+            __builtin_prefetch(plan.simplex_motion.data() +
+                               static_cast<std::size_t>(lg.location.simplex[i + row_ahead]) * corners);
         const std::int32_t* corner =
             plan.simplex_motion.data() + static_cast<std::size_t>(lg.location.simplex[i]) * corners;
         const double* p[4];
@@ -160,7 +172,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
         for (int k = 0; k < corners; ++k) {
             const std::int32_t b = corner[k];
             moving[k] = b >= 0;
-            p[k] = points.data() + static_cast<std::size_t>(boundary.nodes[b >= 0 ? b : -1 - b]) * dim;
+            p[k] = boundary_points.data() + static_cast<std::size_t>(b >= 0 ? b : -1 - b) * dim;
         }
         plan.node_simplex[volume[i]] = lg.location.simplex[i];
         snapped[i] = corner_coefficients(dim, points.data() + static_cast<std::size_t>(volume[i]) * dim, p, moving,
