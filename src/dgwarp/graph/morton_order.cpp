@@ -71,8 +71,7 @@ std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points,
     double scale[3] = {};
     for (int d = 0; d < dim; ++d) scale[d] = hi[d] > lo[d] ? cells / (hi[d] - lo[d]) : 0.0;
     std::vector<Keyed> key(nodes.size());
-    std::uint64_t all_bits = 0;
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
+    parallel_for(static_cast<std::int64_t>(nodes.size()), [&](std::int64_t i) {
         std::uint64_t code = 0;
         for (int d = 0; d < dim; ++d) {
             const double u = (points[static_cast<std::size_t>(nodes[i]) * dim + d] - lo[d]) * scale[d];
@@ -80,8 +79,9 @@ std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points,
             code |= (dim == 3 ? spread3(c) : spread2(c)) << d;
         }
         key[i] = {code, static_cast<std::uint32_t>(i)};
-        all_bits |= code;
-    }
+    });
+    std::uint64_t all_bits = 0;
+    for (const Keyed& k : key) all_bits |= k.code;
     radix_sort(key, all_bits);
     std::vector<std::uint32_t> order(key.size());
     for (std::size_t i = 0; i < key.size(); ++i) order[i] = key[i].position;
