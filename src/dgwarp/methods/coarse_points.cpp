@@ -48,37 +48,46 @@ std::vector<NodeId> select_coarse_points(int dim, std::span<const double> points
 
     // The spacing each volume node wants (0: not a candidate). Queried along a
     // Morton curve: neighbouring queries then walk the same tree branches.
-    std::vector<double> want(volume_nodes.size());
+    // want_sorted[k]: of volume node order[k]; the nodes' points gathered in
+    // that order first, so that the queries read them in sequence.
+    std::vector<double> want_sorted(volume_nodes.size());
     const std::vector<std::uint32_t> order = morton_order(dim, points, volume_nodes);
+    std::vector<double> sorted_points(volume_nodes.size() * static_cast<std::size_t>(dim));
     parallel_for(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t k) {
-        const std::uint32_t i = order[k];
-        const double* x = points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim;
+        std::copy_n(points.data() + static_cast<std::size_t>(volume_nodes[order[k]]) * dim, dim,
+                    sorted_points.data() + k * dim);
+    });
+    parallel_for(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t k) {
+        const double* x = sorted_points.data() + k * dim;
         // A spacing needs no exact distance: within 50% it is as good.
         const NearestNode::Found f = tree.nearest(x, 0.5);
         const double d = f.distance;
         const double s = std::max(spacing.wall_spacing * h[f.index], spacing.growth * d);
-        want[i] = d > 0 && d >= 0.5 * s ? s : 0.0;
+        want_sorted[k] = d > 0 && d >= 0.5 * s ? s : 0.0;
     });
 
     double s_min = std::numeric_limits<double>::infinity();
     std::array<double, 3> lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                              std::numeric_limits<double>::infinity()};
-    for (std::size_t i = 0; i < volume_nodes.size(); ++i) {
-        if (want[i] > 0) s_min = std::min(s_min, want[i]);
-        for (int d = 0; d < dim; ++d) lo[d] = std::min(lo[d], points[static_cast<std::size_t>(volume_nodes[i]) * dim + d]);
+    for (std::size_t k = 0; k < volume_nodes.size(); ++k) {
+        if (want_sorted[k] > 0) s_min = std::min(s_min, want_sorted[k]);
+        for (int d = 0; d < dim; ++d) lo[d] = std::min(lo[d], sorted_points[k * dim + d]);
     }
     if (!std::isfinite(s_min)) return {};
 
-    // Per (level, cell), the candidate nearest to the cell's centre (lowest id on ties).
+    // Per (level, cell), the candidate nearest to the cell's centre (lowest id
+    // on ties: the result does not depend on the visiting order, and the Morton
+    // order keeps the cells visited one after another close in the table).
     std::unordered_map<CellKey, Candidate, CellKeyHash> best;
     best.reserve(volume_nodes.size() / 8);
-    for (std::size_t i = 0; i < volume_nodes.size(); ++i) {
-        if (want[i] <= 0) continue;
+    for (std::size_t j = 0; j < volume_nodes.size(); ++j) {
+        const double want = want_sorted[j];
+        if (want <= 0) continue;
         CellKey key{};
-        key.level = static_cast<std::int32_t>(std::floor(std::log2(want[i] / s_min)));
+        key.level = static_cast<std::int32_t>(std::floor(std::log2(want / s_min)));
         const double size = std::ldexp(s_min, key.level);
-        const double* x = points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim;
-        Candidate k{0.0, volume_nodes[i]};
+        const double* x = sorted_points.data() + j * dim;
+        Candidate k{0.0, volume_nodes[order[j]]};
         for (int d = 0; d < dim; ++d) {
             const double u = (x[d] - lo[d]) / size;
             key.cell[d] = static_cast<std::int64_t>(std::floor(u));
