@@ -143,6 +143,7 @@ void expect_valid_delaunay(const PointSet& s, const DelaunayGraph& g, double hul
 TEST(GraphLocate, RandomPoints2dAgreeWithBruteForce) {
     const PointSet s = make_set(2, concat(box_corners(2), random_points(2, 60, 1)), random_points(2, 2000, 2));
     const LocatedGraph lg = build_located_graph(2, s.points, s.boundary, s.volume);
+    EXPECT_EQ(lg.timings.triangulation_builds, 1);  // 2D: one build, on the original coordinates
     EXPECT_EQ(lg.graph.num_vertices(), 64u);
     EXPECT_EQ(lg.location.outside_count, 0);
     expect_valid_delaunay(s, lg.graph, 1.0);

@@ -60,7 +60,7 @@ struct GraphTimings {
     double triangulate_seconds = 0;  // deduplication + Delaunay insertion + tables
     double locate_seconds = 0;       // ordering + point location
     bool spatially_sorted = false;   // whether the queries were sorted along a Morton curve
-    int triangulation_builds = 0;    // 1 when the graph on perturbed coordinates passed its check (see below)
+    int triangulation_builds = 0;    // 3D: 1 when the graph on perturbed coordinates passed its check (see above), up to 3; 2D: 1
 };
 
 struct LocatedGraph {

@@ -66,10 +66,11 @@ inline double perturbation_unit(const double* x, int dim, int axis) {
 }
 
 // The Delaunay triangulation of the points vertex_node[v] (info v), built as
-// described above. `rounds`: how many builds it took (1 when the first passed).
+// described above. `builds`: how many builds it took (1 when the first passed;
+// always 1 in 2D).
 template <class Dim>
 std::unique_ptr<typename Dim::Delaunay> build_delaunay(std::span<const double> points,
-                                                       std::span<const NodeId> vertex_node, int& rounds) {
+                                                       std::span<const NodeId> vertex_node, int& builds) {
     using Delaunay = typename Dim::Delaunay;
     using Point = typename Dim::Point;
     constexpr int dim = Dim::dim;
@@ -90,8 +91,10 @@ std::unique_ptr<typename Dim::Delaunay> build_delaunay(std::span<const double> p
         for (int d = 0; d < dim; ++d) fixed[v] |= coords(v)[d] == lo[d] || coords(v)[d] == hi[d];
 
     std::vector<std::pair<Point, std::int32_t>> vertices(n);
-    for (rounds = dim == 3 ? 1 : perturbation_rounds;; ++rounds) {
-        const bool last = rounds == perturbation_rounds;
+    builds = 0;
+    for (int round = dim == 3 ? 1 : perturbation_rounds;; ++round) {
+        const bool last = round == perturbation_rounds;
+        ++builds;
         for (std::size_t v = 0; v < n; ++v) {
             const double* x = coords(v);
             double y[3];
@@ -131,11 +134,11 @@ TriangulationResult triangulate_and_locate(std::span<const double> points, std::
     TriangulationResult result;
     auto t0 = Clock::now();
 
-    int rounds = 0;
-    const std::unique_ptr<Delaunay> triangulation = build_delaunay<Dim>(points, vertex_node, rounds);
+    int builds = 0;
+    const std::unique_ptr<Delaunay> triangulation = build_delaunay<Dim>(points, vertex_node, builds);
     const Delaunay& dt = *triangulation;
     Dim::check_spans(dt, vertex_node.size());
-    result.timings.triangulation_builds = rounds;
+    result.timings.triangulation_builds = builds;
 
     result.simplices.reserve(corners * Dim::finite_simplex_count(dt));
     std::int32_t next = 0;
