@@ -221,6 +221,7 @@ for name in "${cases[@]}"; do
   dir="$work/$name"; base="$dir/base"
   mkdir -p "$dir"
   echo "== $name: $mesh, motion $motion_file"
+  case_load_before=$(uptime); case_started=$(date -u '+%H:%M')
   rm -rf "$base"
   "$dgwarp" convert "$mesh" "$base/" --foam-format binary -q || { echo "openfoam.sh: convert failed" >&2; exit 2; }
   write_system "$base" usual ""
@@ -290,7 +291,7 @@ for name in "${cases[@]}"; do
     rc=0
     timed "$run/time.txt" "$dgwarp" deform "$run" -m "$motion_file" -o "$run" --foam-time 1 \
       --threads 1 --allow-invalid --json "${opts[@]}" > "$run/deform.json" 2> "$run/deform.err" || rc=$?
-    rec=(case="$name" label="$m" tool=dgwarp setup="$m" time_file="$run/time.txt" deform_json="$run/deform.json")
+    rec=(case="$name" label="$m" tool=dgwarp setup="$m" time_file="$run/time.txt" deform_json="$run/deform.json" deform_err="$run/deform.err")
     if [ -f "$run/1/polyMesh/points" ]; then
       rec+=(boundary_error="$($tools boundary-error "$base/constant/polyMesh/points" "$run/1/polyMesh/points" "$dir/boundary.csv")")
       checkmesh_time1 "$run"
@@ -299,6 +300,9 @@ for name in "${cases[@]}"; do
     [ $rc = 0 ] || rec+=(status="exit $rc")
     $tools record "$results" "${rec[@]}"
   done
+  case_load_after=$(uptime)
+  $tools record "$results" case="$name" label=load \
+    status="$case_started-$(date -u '+%H:%M') UTC, load before ${case_load_before#*load average: }, after ${case_load_after#*load average: }"
 done
 
 load_after=$(uptime)
