@@ -36,7 +36,7 @@
 #  4. dgwarp: `dgwarp deform RUN -m MOTION -o RUN --foam-time 1 --threads 1` per method, each in
 #     its own process, reading the same polyMesh (RUN/constant/polyMesh links to BASE's) and
 #     writing the moved points as moveMesh does (RUN/1/polyMesh/points); checkMesh on the result.
-# Each run: wall time and peak memory of the process (/usr/bin/time -v), solve time (OpenFOAM:
+# Each run: wall time, CPU time (user + system) and peak memory of the process (/usr/bin/time -v), solve time (OpenFOAM:
 # from its "Time = 1" line to its last linear-solve line, timestamped as they are printed, so
 # the diffusivity, the assembly and the GAMG solves, not reading or writing; dgwarp: prepare +
 # step from its --json report), Knupp quality min / mean / inverted (dgwarp's metric, as

@@ -85,19 +85,21 @@ def boundary_error(base_file, moved_file, csv_file):
 
 
 def time_v(path):
-    """Wall seconds and peak memory (MB) of a /usr/bin/time -v report."""
-    wall = rss = None
+    """Wall seconds, CPU seconds (user + system) and peak memory (MB) of a /usr/bin/time -v report."""
+    wall = rss = cpu = None
     with open(path) as f:
         for line in f:
             line = line.strip()
-            if line.startswith("Elapsed (wall clock) time"):
+            if line.startswith(("User time", "System time")):
+                cpu = (cpu or 0.0) + float(line.rsplit(" ", 1)[1])
+            elif line.startswith("Elapsed (wall clock) time"):
                 parts = [float(x) for x in line.rsplit(" ", 1)[1].split(":")]
                 wall = 0.0
                 for p in parts:
                     wall = wall * 60 + p
             elif line.startswith("Maximum resident set size"):
                 rss = int(line.rsplit(" ", 1)[1]) / 1024.0
-    return wall, rss
+    return wall, cpu, rss
 
 
 def checkmesh_status(path):
@@ -116,8 +118,8 @@ def record(out, pairs):
     if r.get("wall_seconds"):
         row["wall_seconds"] = float(r["wall_seconds"])
     if r.get("time_file"):
-        wall, rss = time_v(r["time_file"])
-        row["wall_seconds"], row["peak_mb"] = wall, rss
+        wall, cpu, rss = time_v(r["time_file"])
+        row["wall_seconds"], row["cpu_seconds"], row["peak_mb"] = wall, cpu, rss
     if r.get("foam_log"):
         with open(r["foam_log"]) as f:
             row.update(json.load(f))
@@ -174,12 +176,12 @@ def table(path):
         rs = [r for r in rows if r["case"] == case and r["label"] != "load"]
         load = [r for r in rows if r["case"] == case and r["label"] == "load"]
         print("\n**%s**%s\n" % (case, " (%s; uptime's 1, 5, 15 min averages)" % load[0]["status"] if load else ""))
-        print("| tool | method / set-up | wall s | solve s | peak MB | Knupp min | mean | inverted | "
+        print("| tool | method / set-up | wall s | CPU s | solve s | peak MB | Knupp min | mean | inverted | "
               "boundary error | checkMesh | note |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
         for r in rs:
             if r["label"] == "original":
-                print("| original | | | | | %s | %s | %s | | %s | |" % (
+                print("| original | | | | | | %s | %s | %s | | %s | |" % (
                     fmt(r.get("min")), fmt(r.get("mean")), r.get("inverted", ""), r.get("checkmesh", "")))
                 continue
             note = r.get("status", "")
@@ -189,8 +191,9 @@ def table(path):
             if r.get("error"):
                 error = r["error"].split(" (worst")[0].replace("dgwarp: invalid result: ", "")
                 note = (note + "; " if note else "") + error[:110]
-            print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
                 r.get("tool", ""), r.get("setup", r["label"]), fmt(r.get("wall_seconds"), 1),
+                fmt(r.get("cpu_seconds"), 1),
                 fmt(r.get("solve_seconds"), 2), fmt(r.get("peak_mb"), 0), fmt(r.get("min")), fmt(r.get("mean")),
                 r.get("inverted", ""), r.get("boundary_error", ""), r.get("checkmesh", ""), note))
         # The ratios: each OpenFOAM set-up against the fastest dgwarp run at an equal or better minimum.
@@ -204,19 +207,27 @@ def table(path):
                 solve = ", solve %.1fx (%s s vs %s s)" % (
                     f["solve_seconds"] / ours_row["solve_seconds"], fmt(f["solve_seconds"], 2),
                     fmt(ours_row["solve_seconds"], 2))
-            return "- %s: OpenFOAM %s (min %s) vs dgwarp %s (%s, min %s): wall %.1fx (%s s vs %s s)%s" % (
+            cpu = ""
+            if f.get("cpu_seconds") and ours_row.get("cpu_seconds"):
+                cpu = ", CPU %.1fx (%s s vs %s s)" % (f["cpu_seconds"] / ours_row["cpu_seconds"],
+                                                      fmt(f["cpu_seconds"], 1), fmt(ours_row["cpu_seconds"], 1))
+            return "- %s: OpenFOAM %s (min %s) vs dgwarp %s (%s, min %s): wall %.1fx (%s s vs %s s)%s%s" % (
                 case, f["setup"], fmt(f["min"]), ours_row["setup"], what, fmt(ours_row["min"]),
                 f["wall_seconds"] / ours_row["wall_seconds"], fmt(f["wall_seconds"], 1),
-                fmt(ours_row["wall_seconds"], 1), solve)
+                fmt(ours_row["wall_seconds"], 1), cpu, solve)
 
         for f in foams:
             better = [r for r in ours if round(r["min"], 3) >= round(f["min"], 3)]
-            if better:
-                print(ratio(f, min(better, key=lambda r: r["wall_seconds"]), "the fastest at an equal or better min"))
+            best = min(better, key=lambda r: r["wall_seconds"]) if better else None
+            default = [r for r in ours if r["label"] == "dg-harmonic"]
+            if best and default and best is default[0]:
+                print(ratio(f, best, "the default, and the fastest at an equal or better min"))
+                continue
+            if best:
+                print(ratio(f, best, "the fastest at an equal or better min"))
             else:
                 print("- %s: OpenFOAM %s (min %s): no dgwarp method reaches its minimum quality" % (
                     case, f["setup"], fmt(f["min"])))
-            default = [r for r in ours if r["label"] == "dg-harmonic"]
             if default:
                 print(ratio(f, default[0], "the default"))
 
