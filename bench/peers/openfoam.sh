@@ -64,7 +64,7 @@ checkmesh_runs=all
 cases=()
 declare -A custom_mesh custom_motion
 
-usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//' >&2; exit 1; }
+usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//' >&2; exit "${1:-1}"; }
 
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -76,7 +76,7 @@ while [ $# -gt 0 ]; do
     --mesh) [ $# -ge 4 ] || usage
             cases+=("$2"); custom_mesh[$2]=$(realpath "$3"); custom_motion[$2]=$(realpath "$4"); shift 4 ;;
     sphere0|sphere2|wing1) cases+=("$1"); shift ;;
-    -h|--help) usage ;;
+    -h|--help) usage 0 ;;
     *) echo "openfoam.sh: unknown argument '$1'" >&2; usage ;;
   esac
 done
