@@ -67,6 +67,11 @@ struct BenchInfo {
 /// then one table per row: ours beside the paper's.
 std::string bench_markdown(const BenchInfo& info, const std::vector<BenchRow>& rows);
 
+/// A line in a --markdown file from which on `dgwarp bench` keeps what the file
+/// holds, below the tables it writes (sections other tools write, by hand or by
+/// script: bench/peers/openfoam.sh's table in docs/RESULTS.md).
+inline constexpr const char* bench_kept_marker = "<!-- dgwarp bench keeps what follows -->";
+
 /// The whole report as JSON.
 nlohmann::json bench_json(const BenchInfo& info, const std::vector<BenchRow>& rows);
 

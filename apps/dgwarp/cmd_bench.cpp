@@ -257,8 +257,19 @@ void run_bench(const BenchArgs& a) {
     }
     if (a.cache.empty()) std::filesystem::remove_all(cache);
     BenchInfo info{machine_name(), utc_now(), a.commit, a.threads, a.quick, total.lap()};
-    if (!a.markdown.empty())
-        write_file_atomically(a.markdown, [&](std::ostream& out) { out << bench_markdown(info, rows); });
+    if (!a.markdown.empty()) {
+        // What the file holds from bench_kept_marker on (tables other tools wrote, e.g.
+        // bench/peers/openfoam.sh's) stays below the new tables.
+        std::string kept;
+        if (std::ifstream old(a.markdown); old) {
+            const std::string text((std::istreambuf_iterator<char>(old)), std::istreambuf_iterator<char>());
+            if (const std::size_t at = text.find(bench_kept_marker); at != std::string::npos) kept = text.substr(at);
+        }
+        write_file_atomically(a.markdown, [&](std::ostream& out) {
+            out << bench_markdown(info, rows);
+            if (!kept.empty()) out << "\n" << kept;
+        });
+    }
     if (!a.json.empty())
         write_file_atomically(a.json, [&](std::ostream& out) { out << bench_json(info, rows).dump(2) << "\n"; });
 }

@@ -29,5 +29,6 @@ void add_prepare_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_case_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_motion_field_command(CLI::App& app);
 
 }  // namespace dgwarp::cli

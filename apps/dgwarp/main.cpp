@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     add_picture_command(app);
     add_demo_command(app);
     add_case_command(app);
+    add_motion_field_command(app);
     add_bench_command(app);
 
     try {

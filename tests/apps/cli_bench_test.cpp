@@ -25,6 +25,8 @@ TEST(CasesCli, CaseWritesTheLibrarysMesh) {
 
 TEST(CasesCli, BenchWritesEveryMotionWithThePapersValues) {
     const auto md = scratch_dir() / "bench.md", js = scratch_dir() / "bench.json";
+    // An older file: its tables go, what follows the kept-marker line stays.
+    std::ofstream(md) << "old tables\n<!-- dgwarp bench keeps what follows -->\n## Peers\n| a | b |\n";
     const CommandResult r = run_cli("bench --case rect-box --case naca0012 --markdown '" + md.string() + "' --json '" +
                                     js.string() + "' --commit abc123");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -55,4 +57,8 @@ TEST(CasesCli, BenchWritesEveryMotionWithThePapersValues) {
     text << std::ifstream(md).rdbuf();
     EXPECT_NE(text.str().find("paper Table 5"), std::string::npos);
     EXPECT_NE(text.str().find("commit: abc123"), std::string::npos);
+    EXPECT_EQ(text.str().find("old tables"), std::string::npos);
+    const std::string tail = "\n<!-- dgwarp bench keeps what follows -->\n## Peers\n| a | b |\n";
+    ASSERT_GE(text.str().size(), tail.size());
+    EXPECT_EQ(text.str().substr(text.str().size() - tail.size()), tail);
 }

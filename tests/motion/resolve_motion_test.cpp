@@ -475,3 +475,26 @@ TEST(MotionResolve, AMeshWhoseMarkersAreAllEmptyIsAnError) {
     EXPECT_TRUE(contains(mesh_error_of([&] { resolve_boundary(mesh, spec_of(R"({"markers": {}})")); }).what(),
                          "it has no markers"));
 }
+
+TEST(MotionResolve, NodeDisplacementsAreTheMovedBoundaryMinusTheMeshAndZeroInside) {
+    const Mesh mesh = two_squares();
+    const MotionSpec spec = spec_of(R"({"markers": {"airfoil": {"rotate": {"angle_deg": 45, "center": [0.25, 0, 0]},
+                                                                "translate": [0, 1]}}})");
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec);
+    const ResolvedFrame f = resolve_frame(mesh, spec, rb, 0);
+    const std::vector<double> d = node_displacements(mesh, rb.boundary, f.motion);
+    ASSERT_EQ(d.size(), mesh.points.size());  // every node, dim 2
+    // Node 4 at (-0.5, -0.5) goes to (0.0732233, -0.8838835 + 1) (the test above, plus the translation).
+    EXPECT_NEAR(d[8], 0.0732233 + 0.5, 1e-7);
+    EXPECT_NEAR(d[9], -0.8838835 + 1 + 0.5, 1e-7);
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(d[i], 0.0) << "farfield node " << i / 2;
+    EXPECT_EQ(d[16], 0.0);  // the volume node 8 is no boundary node
+    EXPECT_EQ(d[17], 0.0);
+    // Every boundary node: moved_boundary_points minus the original, exactly.
+    const auto p = moved_boundary_points(mesh, rb.boundary, f.motion);
+    for (std::size_t b = 0; b < rb.boundary.nodes.size(); ++b)
+        for (std::size_t k = 0; k < 2; ++k) {
+            const auto n = static_cast<std::size_t>(rb.boundary.nodes[b]);
+            EXPECT_EQ(d[2 * n + k], p[2 * b + k] - mesh.points[2 * n + k]) << "node " << n;
+        }
+}

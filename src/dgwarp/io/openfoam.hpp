@@ -161,6 +161,30 @@ struct OpenFoamPointsFile {
 };
 OpenFoamPointsFile openfoam_points_file(const std::filesystem::path& out, const std::string& time);
 
+/// OpenFOAM's points of a patch (PrimitivePatch::meshPoints): each node of
+/// `marker`'s elements once, in the order the elements, in order and each
+/// from its first node, first name it. A point field's value on a patch lists
+/// one entry per point in this order.
+std::vector<NodeId> openfoam_patch_points(const Marker& marker);
+
+/// The text of the pointVectorField file `pointDisplacement` at `location`
+/// (a time folder's name, e.g. "0") that OpenFOAM's displacement motion
+/// solvers read: dimensions of length, internalField uniform (0 0 0), and one
+/// patch per marker of `mesh`, which must be a mesh read from the polyMesh
+/// the field is for (read_openfoam: its markers are the patches, their faces
+/// as the faces file has them, so that openfoam_patch_points is OpenFOAM's
+/// order). A patch whose type in `patches` (one per marker, or empty: every
+/// patch "patch") is a constraint type (empty, wedge, symmetryPlane, symmetry,
+/// cyclic, cyclicAMI, cyclicACMI, cyclicSlip, nonuniformTransformCyclic,
+/// processor, processorCyclic) gets that type; every other patch is
+/// `fixedValue` with `displacement` (num_points × 3, row-major) at its
+/// points: `uniform` when they are all the same, else `nonuniform
+/// List<vector>` in openfoam_patch_points order (numbers in the shortest form
+/// that reads back exactly). Ascii. Throws MeshError for a 2D mesh, a
+/// displacement of another size, or patches of another count than the markers.
+std::string openfoam_point_displacement_text(const Mesh& mesh, std::span<const double> displacement,
+                                             const std::vector<OpenFoamPatch>& patches, const std::string& location);
+
 /// Copies the regular files of the polyMesh folder `from` (points, faces,
 /// owner, neighbour, boundary, zones, ...) into `to`, creating it, byte for
 /// byte, each atomically; files named in `except` are left out. Sub-folders

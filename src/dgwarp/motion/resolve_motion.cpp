@@ -363,4 +363,15 @@ std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& b
     return out;
 }
 
+std::vector<double> node_displacements(const Mesh& mesh, const BoundarySet& boundary, const BoundaryMotion& motion) {
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    const std::vector<double> moved = moved_boundary_points(mesh, boundary, motion);
+    std::vector<double> out(mesh.num_points() * dim, 0.0);
+    for (std::size_t b = 0; b < boundary.nodes.size(); ++b) {
+        const auto node = static_cast<std::size_t>(boundary.nodes[b]);
+        for (std::size_t d = 0; d < dim; ++d) out[node * dim + d] = moved[b * dim + d] - mesh.points[node * dim + d];
+    }
+    return out;
+}
+
 }  // namespace dgwarp

@@ -87,4 +87,11 @@ ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const Reso
 std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& boundary,
                                           const BoundaryMotion& motion);
 
+/// The displacement of every mesh node under `motion`: its new position
+/// (moved_boundary_points) minus its position in `mesh` for the boundary
+/// nodes, zero for the others: num_points × mesh.dim, row-major, in node
+/// order. What a method must move the boundary by (exported for other
+/// solvers: `dgwarp motion-field`).
+std::vector<double> node_displacements(const Mesh& mesh, const BoundarySet& boundary, const BoundaryMotion& motion);
+
 }  // namespace dgwarp
