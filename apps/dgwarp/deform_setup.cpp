@@ -210,13 +210,22 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
     return in;
 }
 
-PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress) {
+PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
+                          bool distributed) {
     PlannedMethod p;
     p.method = method;
     p.options = method_options(in.args);
     p.plan_file = plan_file;
     Stopwatch sw;
-    if (!plan_file.empty()) {
+    if (distributed && !plan_file.empty())
+        throw CLI::ValidationError("--plan", "a saved plan is for one process: under mpirun each process prepares "
+                                             "its own part (run without --plan)");
+    if (distributed) {
+        refuse_other_methods_options(in.args, method);
+        progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(mpi_processes()) +
+                       " processes");
+        p.distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options, p.plan, p.process_prepare_seconds);
+    } else if (!plan_file.empty()) {
         progress.phase("loading " + plan_file);
         Plan loaded = load_plan(plan_file, in.mesh.points, in.boundary.boundary);
         const Method planned = dgwarp::plan_method(loaded);
@@ -351,7 +360,7 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
     nlohmann::json phases = nlohmann::json::object();
     for (const auto& [name, seconds] : s.phase_seconds) phases[name] = seconds;
     const auto* dg_idw = std::get_if<DgIdwPlan>(&p.plan);
-    return {{"method", method_name(p.method)},
+    nlohmann::json j = {{"method", method_name(p.method)},
             {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
             {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->options.weighting)) : nlohmann::json(nullptr)},
             {"graph_simplices", s.graph_simplices ? nlohmann::json(*s.graph_simplices) : nlohmann::json(nullptr)},
@@ -362,6 +371,9 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
             {"bytes", plan_memory_bytes(p.plan)},
             {"seconds", p.prepare_seconds},
             {"phase_seconds", phases}};
+    // Under mpirun: every process's prepare time (the counts above are rank 0's plan's).
+    if (p.distributed) j["process_seconds"] = p.process_prepare_seconds;
+    return j;
 }
 
 }  // namespace dgwarp::cli
