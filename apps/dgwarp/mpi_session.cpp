@@ -12,6 +12,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
+#include "dgwarp/mpi/morton_partition.hpp"
 #include "mpi_session.hpp"
 
 namespace dgwarp::cli {
@@ -147,10 +148,9 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
                                             std::vector<double>& seconds) {
     auto run = std::make_shared<DistributedRun>();
     run->dim = mesh.dim;
-    // Process r holds the nodes of cells [r C / P, (r + 1) C / P) in the
-    // file's order (meshes number cells coherently enough for a test of
-    // scaling; a solver brings its own partition), in order of first use;
-    // nodes of no cell go to rank 0.
+    // Process r holds the nodes of its block of cells along a Morton curve
+    // (mpi/morton_partition.hpp; a solver brings its own partition), in order
+    // of first use; nodes of no cell go to rank 0.
     const std::size_t cells = mesh.cells.types.size(), n = mesh.num_points();
     run->parts.resize(mpi_size);
     run->slots.resize(mpi_size);
@@ -170,10 +170,10 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
             run->slots[r].push_back(boundary_slot[node]);
         }
     };
-    for (std::size_t c = 0; c < cells; ++c) {
-        const int r = static_cast<int>(c * static_cast<std::size_t>(mpi_size) / cells);
-        for (std::int64_t k = mesh.cells.offsets[c]; k < mesh.cells.offsets[c + 1]; ++k) take(r, mesh.cells.nodes[k]);
-    }
+    const std::vector<std::int32_t> cell_part = mpi::morton_cell_parts(mesh, mpi_size);
+    for (std::size_t c = 0; c < cells; ++c)
+        for (std::int64_t k = mesh.cells.offsets[c]; k < mesh.cells.offsets[c + 1]; ++k)
+            take(cell_part[c], mesh.cells.nodes[k]);
     for (std::size_t node = 0; node < n; ++node)
         if (seen[node] < 0) take(0, static_cast<NodeId>(node));
 

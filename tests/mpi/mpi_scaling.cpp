@@ -3,8 +3,8 @@
 //
 //   mpirun -np P mpi_scaling MESH MOTION METHOD [STEPS]
 //
-// Every process reads the mesh, holds the nodes of a block of cells (as
-// `mpirun dgwarp deform` gives them), prepares and runs STEPS steps (default
+// Every process reads the mesh, holds the nodes of a block of cells along a
+// Morton curve (as `mpirun dgwarp deform` gives them), prepares and runs STEPS steps (default
 // 20) of the motion's frame 0. Rank 0 prints, as the maximum over the
 // processes: prepare and its phases, the median step, the plan's bytes and
 // the peak resident memory per process; and the graph-broadcast measurement:
@@ -24,6 +24,7 @@
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
+#include "dgwarp/mpi/morton_partition.hpp"
 
 using namespace dgwarp;
 
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
     const BoundaryMotion whole = resolve_frame(mesh, spec, resolved, 0).motion;
     const double rss_mesh = max_over(peak_rss_mb());
 
-    // This process's part: the nodes of cells [r C / P, (r+1) C / P), in first-use order.
+    // This process's part: the nodes of its cells, in first-use order.
     const std::size_t cells = mesh.cells.types.size();
     std::vector<std::int32_t> local(mesh.num_points(), -1), slot(mesh.num_points(), -1);
     for (std::size_t b = 0; b < resolved.boundary.nodes.size(); ++b) slot[resolved.boundary.nodes[b]] = static_cast<std::int32_t>(b);
@@ -69,7 +70,9 @@ int main(int argc, char** argv) {
     std::vector<std::int64_t> ids;
     BoundarySet boundary;
     BoundaryMotion motion;
-    for (std::size_t c = rank * cells / size; c < (rank + 1) * cells / size; ++c)
+    const std::vector<std::int32_t> cell_part = mpi::morton_cell_parts(mesh, size);
+    for (std::size_t c = 0; c < cells; ++c)
+        if (cell_part[c] == rank)
         for (std::int64_t k = mesh.cells.offsets[c]; k < mesh.cells.offsets[c + 1]; ++k) {
             const NodeId n = mesh.cells.nodes[k];
             if (local[n] >= 0) continue;
@@ -112,15 +115,20 @@ int main(int argc, char** argv) {
     for (const auto& [phase, s] : summary.phase_seconds)
         if (phase == "graph") graph_seconds = s;
     graph_seconds = max_over(graph_seconds);
+    const double local_nodes = max_over(static_cast<double>(ids.size()));
     const double bytes = max_over(static_cast<double>(mpi::distributed_plan_bytes(plan)));
+    // Motions a process receives per step (DG-IDW: those it needs; the others: every moving one).
+    const double received = max_over(static_cast<double>(plan.gather_all ? plan.owned_boundary.size()
+                                                                         : plan.recv_boundary.size()));
     const double gather = max_over(plan.times.gather_seconds), coarse = max_over(plan.times.coarse_seconds),
                  method_s = max_over(plan.times.method_seconds);
     if (rank == 0)
-        std::printf("P=%d %s nodes %zu boundary %lld: prepare %.3f s (gather %.3f, coarse %.3f, method %.3f, of which "
+        std::printf("P=%d %s nodes %zu (at most %.0f on a process) boundary %lld: prepare %.3f s (gather %.3f, coarse %.3f, method %.3f, of which "
                     "graph %.3f), step median %.2f ms (of %d), plan %.1f MB/process, peak RSS %.0f MB/process (%.0f MB "
-                    "after reading the mesh), graph broadcast %.4f s for %.1f MB\n",
-                    size, argv[3], mesh.num_points(), static_cast<long long>(plan.num_boundary_nodes), prepare, gather,
-                    coarse, method_s, graph_seconds, step * 1e3, steps, bytes / 1e6, rss_plan, rss_mesh, broadcast,
+                    "after reading the mesh), motions received per step %.0f (%.2f MB), graph broadcast %.4f s for %.1f MB\n",
+                    size, argv[3], mesh.num_points(), local_nodes, static_cast<long long>(plan.num_boundary_nodes), prepare, gather,
+                    coarse, method_s, graph_seconds, step * 1e3, steps, bytes / 1e6, rss_plan, rss_mesh, received,
+                    received * sizeof(NodeMotion) / 1e6, broadcast,
                     static_cast<double>(graph.size()) * 4 / 1e6);
     MPI_Finalize();
     return 0;

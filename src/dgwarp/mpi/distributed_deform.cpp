@@ -53,9 +53,11 @@ std::vector<int> times(std::vector<int> counts, int k) {
 StepReport deform_distributed(const DistributedPlan& p, std::span<const double> points, const BoundaryMotion& motion,
                               std::span<double> out) {
     detail::throw_if_any_failed(p.comm, check_step_input(p, points, motion, out), "its step's arrays");
-    const auto nb = static_cast<std::size_t>(p.num_boundary_nodes);
-    // Every boundary node's motion by boundary index: this process's own, and
-    // the ones received; the rest stay zero (never read).
+    // The working boundary nodes' motions (every boundary node for the
+    // gather-all methods, the ones a step reads for DG-IDW): this process's
+    // own, and the ones received; the rest stay zero (never read).
+    const std::size_t nb = p.gather_all ? static_cast<std::size_t>(p.num_boundary_nodes)
+                                        : std::get<DgIdwPlan>(p.plan).boundary_nodes.size();
     BoundaryMotion all(nb);
     for (std::size_t j = 0; j < motion.size(); ++j) all[p.local_boundary_index[j]] = motion[j];
 

@@ -58,7 +58,9 @@ struct DistributedPrepareTimes {
 
 /// A process's plan: the method's plan over its "working nodes" (every
 /// boundary node of the whole mesh, in global id order, then DG-harmonic's
-/// coarse points, then its own volume nodes) and what each step exchanges.
+/// coarse points, then its own volume nodes; DG-IDW keeps only the boundary
+/// nodes its step reads: its own and the moving corners of its volume nodes'
+/// graph simplices) and what each step exchanges.
 /// Keeps `comm` (the caller keeps it alive for the plan's life).
 struct DistributedPlan {
     MPI_Comm comm = MPI_COMM_NULL;
@@ -72,7 +74,7 @@ struct DistributedPlan {
     Plan plan;                             // over the working nodes
     std::vector<double> working_points;    // num_working × dim
     std::vector<std::int32_t> local_to_working;  // per local node
-    std::vector<std::int32_t> local_boundary_index;  // per local boundary node: its global boundary index
+    std::vector<std::int32_t> local_boundary_index;  // per local boundary node: its working boundary index
     /// Gather-all methods: the global boundary indices whose motions each
     /// process contributes (the moving ones it owns; a static node's motion
     /// is zero and never sent), concatenated by rank; owned_counts[r] entries each.
@@ -82,11 +84,11 @@ struct DistributedPlan {
     std::vector<std::int32_t> my_owned_local;  // this process's owned ones, as local boundary indices
     /// DG-IDW: motions sent per step. send_local: local boundary indices, by
     /// destination rank (send_counts entries each); recv_boundary: global
-    /// boundary indices received, by source rank (recv_counts each).
+    /// working boundary indices received, by source rank (recv_counts each).
     std::vector<int> send_counts, recv_counts;
     std::vector<std::int32_t> send_local, recv_boundary;
     /// DG-IDW: the shared graph vertices this process counts in the step
-    /// report (those whose first boundary node it owns), as boundary indices.
+    /// report (those whose first boundary node it owns), as working boundary indices.
     std::vector<std::int32_t> counted_shared_offsets{0}, counted_shared_members;
     DistributedPrepareTimes times;
 

@@ -45,6 +45,51 @@ void sort_by_global_id(std::vector<NodeId>& nodes, std::span<const std::int64_t>
     std::stable_sort(nodes.begin(), nodes.end(), [&](NodeId a, NodeId b) { return global_ids[a] < global_ids[b]; });
 }
 
+// DG-IDW: the working nodes cut down to the boundary nodes a step reads
+// (`keep`, by boundary index) and the process's volume nodes, so that a step
+// costs nothing per boundary node of the whole mesh. Boundary indices are
+// renumbered in the same order (ascending), so the plan's rule for shared
+// vertices and its bits are unchanged; static corners' motions are never
+// read, so a static corner not kept points to boundary index 0.
+void keep_only_boundary_nodes_read(DistributedPlan& p, const std::vector<std::uint8_t>& keep) {
+    auto& plan = std::get<DgIdwPlan>(p.plan);
+    const auto nb = static_cast<std::int32_t>(keep.size());
+    std::vector<std::int32_t> renumber(keep.size(), -1);
+    std::int32_t kept = 0;
+    for (std::int32_t b = 0; b < nb; ++b)
+        if (keep[b]) renumber[b] = kept++;
+    const int dim = p.dim;
+    std::vector<double> points;
+    points.reserve(p.working_points.size() - static_cast<std::size_t>(nb - kept) * dim);
+    for (std::int32_t b = 0; b < nb; ++b)
+        if (keep[b]) points.insert(points.end(), p.working_points.begin() + b * dim, p.working_points.begin() + (b + 1) * dim);
+    points.insert(points.end(), p.working_points.begin() + static_cast<std::ptrdiff_t>(nb) * dim, p.working_points.end());
+    p.working_points = std::move(points);
+    for (std::int32_t& w : p.local_to_working) w = w < nb ? renumber[w] : w - nb + kept;
+    for (std::int32_t& b : p.local_boundary_index) b = renumber[b];
+    for (std::int32_t& b : p.recv_boundary) b = renumber[b];
+    for (std::int32_t& b : p.counted_shared_members) b = renumber[b];
+    for (std::int32_t& c : plan.simplex_motion)
+        c = c >= 0 ? renumber[c] : (renumber[-1 - c] >= 0 ? -1 - renumber[-1 - c] : -1);
+
+    std::vector<NodeId> nodes;
+    std::vector<std::uint8_t> moving;
+    for (std::int32_t b = 0; b < nb; ++b)
+        if (keep[b]) {
+            nodes.push_back(static_cast<NodeId>(nodes.size()));
+            moving.push_back(plan.boundary_moving[b]);
+        }
+    plan.boundary_nodes = std::move(nodes);
+    plan.boundary_moving = std::move(moving);
+    std::vector<std::int32_t> node_simplex(static_cast<std::size_t>(kept), 0);
+    for (std::int32_t i = 0; i < kept; ++i) node_simplex[i] = -1 - i;
+    node_simplex.insert(node_simplex.end(), plan.node_simplex.begin() + nb, plan.node_simplex.end());
+    plan.node_simplex = std::move(node_simplex);
+    // The step report's shared vertices are counted by their owners (counted_shared_*).
+    plan.shared_offsets = {0};
+    plan.shared_members.clear();
+}
+
 // DG-IDW: who sends which motions to whom every step.
 void plan_motion_exchange(DistributedPlan& p, const detail::GatheredBoundary& g) {
     const auto& plan = std::get<DgIdwPlan>(p.plan);
@@ -65,6 +110,9 @@ void plan_motion_exchange(DistributedPlan& p, const detail::GatheredBoundary& g)
         }
         p.counted_shared_offsets.push_back(static_cast<std::int32_t>(p.counted_shared_members.size()));
     }
+    // The boundary nodes this process's step reads: its own and the needed ones.
+    std::vector<std::uint8_t> keep(needed);
+    for (std::int32_t b : p.local_boundary_index) keep[b] = 1;
     for (std::int32_t b : p.local_boundary_index) needed[b] = 0;  // held here
 
     // Requests by owner (ascending boundary index within each).
@@ -94,6 +142,7 @@ void plan_motion_exchange(DistributedPlan& p, const detail::GatheredBoundary& g)
     p.send_local.resize(asked.size());
     for (std::size_t k = 0; k < asked.size(); ++k)
         p.send_local[k] = std::lower_bound(held.begin(), held.end(), std::pair{asked[k], std::int32_t{-1}})->second;
+    keep_only_boundary_nodes_read(p, keep);
 }
 
 }  // namespace
