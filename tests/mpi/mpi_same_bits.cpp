@@ -5,6 +5,7 @@
 //
 //   mpirun -np P mpi_same_bits MESH MOTION METHOD...
 //
+// METHOD: a method's name, or dg-idw-robust (continuous weights, auto length scale).
 // Every process reads the mesh and the motion, computes the single-process
 // result itself (the reference), holds the nodes of its cells (in the order
 // its cells list them, not by global id) and compares its own nodes'
@@ -102,10 +103,17 @@ int main(int argc, char** argv) {
         const ResolvedBoundary resolved = resolve_boundary(mesh, spec);
         const BoundaryMotion motion = resolve_frame(mesh, spec, resolved, 0).motion;
         for (int a = 3; a < argc; ++a) {
-            const Method method = *method_from_name(argv[a]);
+            // "dg-idw-robust": DG-IDW with continuous weights and the auto length scale.
+            const std::string name = argv[a];
+            const bool robust = name == "dg-idw-robust";
+            const Method method = robust ? Method::dg_idw : *method_from_name(name);
             // DGM sub-steps where the moved graph folds (the bricks' turned top face).
             MethodOptions options;
             options.dgm.on_invalid = DgmOptions::OnInvalidGraph::substep;
+            if (robust) {
+                options.dg_idw.weighting = DgIdwWeighting::continuous;
+                options.dg_idw.length_scale = 0;  // auto: from the gap between moving and static boundary
+            }
             const Plan serial = prepare(method, mesh.dim, mesh.points, resolved.boundary, options);
             for (bool round_robin : {false, true}) {
                 const Part part = make_part(mesh, resolved.boundary, rank, size, round_robin);
