@@ -16,8 +16,11 @@
 // coordinates). `boundary` is a BoundarySet over the local nodes (sorted
 // local indices and a moving flag each, from the markers as for one process:
 // motion/marker_node_motions.hpp); `motion` one NodeMotion per local boundary
-// node in that order. A boundary node held by several processes must be
-// boundary, with the same flag and motion, on each.
+// node in that order. A boundary node held by several processes has the same
+// coordinates, flag and motion on each that lists it as a boundary node; a
+// process may hold it as a plain node (a partition interface node whose
+// boundary faces are all on another process): it then moves with the motion
+// of a process that lists it.
 //
 // What is replicated (on every process) and what is exchanged:
 //  * prepare gathers the boundary nodes (each counted once, whichever
@@ -75,6 +78,9 @@ struct DistributedPlan {
     std::vector<double> working_points;    // num_working × dim
     std::vector<std::int32_t> local_to_working;  // per local node
     std::vector<std::int32_t> local_boundary_index;  // per local boundary node: its working boundary index
+    /// Working boundary indices of the local nodes not in `boundary` that
+    /// another process lists as boundary nodes (their motions come from it).
+    std::vector<std::int32_t> adopted_boundary;
     /// Gather-all methods: the global boundary indices whose motions each
     /// process contributes (the moving ones it owns; a static node's motion
     /// is zero and never sent), concatenated by rank; owned_counts[r] entries each.
@@ -100,7 +106,8 @@ struct DistributedPlan {
 /// Prepares `method` for the whole mesh, collectively over `comm` (every
 /// process calls it). Throws MeshError on this process's bad input (sizes,
 /// unsorted boundary, a boundary node whose coordinates or flag differ
-/// between processes, naming its global id) and on every other process an
+/// between processes, naming its global id, or a plain node at other
+/// coordinates than the boundary node of the same id) and on every other process an
 /// Error saying which process refused its input; otherwise as the method's
 /// prepare on one process.
 DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::span<const double> points,

@@ -67,6 +67,7 @@ void keep_only_boundary_nodes_read(DistributedPlan& p, const std::vector<std::ui
     p.working_points = std::move(points);
     for (std::int32_t& w : p.local_to_working) w = w < nb ? renumber[w] : w - nb + kept;
     for (std::int32_t& b : p.local_boundary_index) b = renumber[b];
+    for (std::int32_t& b : p.adopted_boundary) b = renumber[b];
     for (std::int32_t& b : p.recv_boundary) b = renumber[b];
     for (std::int32_t& b : p.counted_shared_members) b = renumber[b];
     for (std::int32_t& c : plan.simplex_motion)
@@ -110,9 +111,13 @@ void plan_motion_exchange(DistributedPlan& p, const detail::GatheredBoundary& g)
         }
         p.counted_shared_offsets.push_back(static_cast<std::int32_t>(p.counted_shared_members.size()));
     }
-    // The boundary nodes this process's step reads: its own and the needed ones.
+    // Boundary nodes held here without their motion (boundary elsewhere) move with the owner's.
+    for (std::int32_t b : p.adopted_boundary)
+        if (g.moving[b]) needed[b] = 1;
+    // The boundary nodes this process's step reads or writes: its own, the adopted and the needed ones.
     std::vector<std::uint8_t> keep(needed);
     for (std::int32_t b : p.local_boundary_index) keep[b] = 1;
+    for (std::int32_t b : p.adopted_boundary) keep[b] = 1;
     for (std::int32_t b : p.local_boundary_index) needed[b] = 0;  // held here
 
     // Requests by owner (ascending boundary index within each).
@@ -169,17 +174,27 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
     p.local_boundary_index = g.local_index;
     const auto nb = static_cast<NodeId>(g.global_ids.size());
 
-    // This process's volume nodes, ascending in global id; none may be a
-    // boundary node of another process.
+    // This process's volume nodes, ascending in global id. A local node that
+    // another process holds as a boundary node (a partition interface node
+    // whose boundary faces are all on the other side) is that boundary node
+    // here too: its motion comes from its owner.
     std::vector<std::uint8_t> is_boundary(global_ids.size(), 0);
     for (NodeId n : boundary.nodes) is_boundary[n] = 1;
     std::vector<NodeId> volume;
+    std::vector<std::pair<NodeId, std::int32_t>> adopted;  // (local node, boundary index)
     std::string error;
     for (std::size_t i = 0; i < global_ids.size(); ++i) {
         if (is_boundary[i]) continue;
-        if (std::binary_search(g.global_ids.begin(), g.global_ids.end(), global_ids[i]) && error.empty())
-            error = "local node " + std::to_string(i) + " (global id " + std::to_string(global_ids[i]) +
-                    ") is a volume node here but a boundary node of another process";
+        const auto at = std::lower_bound(g.global_ids.begin(), g.global_ids.end(), global_ids[i]);
+        if (at != g.global_ids.end() && *at == global_ids[i]) {
+            const auto b = static_cast<std::int32_t>(at - g.global_ids.begin());
+            for (int d = 0; d < dim; ++d)
+                if (g.points[static_cast<std::size_t>(b) * dim + d] != points[i * dim + d] && error.empty())
+                    error = "local node " + std::to_string(i) + " (global id " + std::to_string(global_ids[i]) +
+                            ") is not where process " + std::to_string(g.owner[b]) + " has that boundary node";
+            adopted.emplace_back(static_cast<NodeId>(i), b);
+            continue;
+        }
         volume.push_back(static_cast<NodeId>(i));
     }
     sort_by_global_id(volume, global_ids);
@@ -190,6 +205,10 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
     p.working_points = g.points;
     p.local_to_working.assign(global_ids.size(), -1);
     for (std::size_t j = 0; j < boundary.nodes.size(); ++j) p.local_to_working[boundary.nodes[j]] = g.local_index[j];
+    for (const auto& [n, b] : adopted) {
+        p.local_to_working[n] = b;
+        p.adopted_boundary.push_back(b);
+    }
     std::vector<NodeId> coarse;
     std::vector<std::int64_t> coarse_ids;
     if (method == Method::dg_harmonic) {
@@ -262,7 +281,8 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
 
 std::size_t distributed_plan_bytes(const DistributedPlan& p) {
     return sizeof(DistributedPlan) + plan_memory_bytes(p.plan) + bytes_of(p.working_points) +
-           bytes_of(p.local_to_working) + bytes_of(p.local_boundary_index) + bytes_of(p.owned_counts) +
+           bytes_of(p.local_to_working) + bytes_of(p.local_boundary_index) + bytes_of(p.adopted_boundary) +
+           bytes_of(p.owned_counts) +
            bytes_of(p.owned_boundary) + bytes_of(p.my_owned_local) + bytes_of(p.send_counts) +
            bytes_of(p.recv_counts) + bytes_of(p.send_local) + bytes_of(p.recv_boundary) +
            bytes_of(p.counted_shared_offsets) + bytes_of(p.counted_shared_members);
