@@ -224,7 +224,13 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         refuse_other_methods_options(in.args, method);
         progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(mpi_processes()) +
                        " processes");
-        p.distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options, p.plan, p.process_prepare_seconds);
+        // A decomposed OpenFOAM case on as many processes as processors: each
+        // process deforms its processor's points (the solver's decomposition).
+        std::vector<std::vector<NodeId>> node_parts;
+        if (in.extras.openfoam && in.extras.openfoam->processors.size() == static_cast<std::size_t>(mpi_processes()))
+            for (const OpenFoamProcessor& processor : in.extras.openfoam->processors) node_parts.push_back(processor.points);
+        p.distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options, node_parts, p.plan,
+                                    p.process_prepare_seconds);
     } else if (!plan_file.empty()) {
         progress.phase("loading " + plan_file);
         Plan loaded = load_plan(plan_file, in.mesh.points, in.boundary.boundary);

@@ -144,13 +144,14 @@ void mpi_serve() {
 }
 
 std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet& boundary, Method method,
-                                            const MethodOptions& options, Plan& rank0_plan,
+                                            const MethodOptions& options,
+                                            const std::vector<std::vector<NodeId>>& node_parts, Plan& rank0_plan,
                                             std::vector<double>& seconds) {
     auto run = std::make_shared<DistributedRun>();
     run->dim = mesh.dim;
     // Process r holds the nodes of its block of cells along a Morton curve
     // (mpi/morton_partition.hpp; a solver brings its own partition), in order
-    // of first use; nodes of no cell go to rank 0.
+    // of first use, or those of node_parts[r]; nodes of none go to rank 0.
     const std::size_t cells = mesh.cells.types.size(), n = mesh.num_points();
     run->parts.resize(mpi_size);
     run->slots.resize(mpi_size);
@@ -170,10 +171,15 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
             run->slots[r].push_back(boundary_slot[node]);
         }
     };
-    const std::vector<std::int32_t> cell_part = mpi::morton_cell_parts(mesh, mpi_size);
-    for (std::size_t c = 0; c < cells; ++c)
-        for (std::int64_t k = mesh.cells.offsets[c]; k < mesh.cells.offsets[c + 1]; ++k)
-            take(cell_part[c], mesh.cells.nodes[k]);
+    if (node_parts.size() == static_cast<std::size_t>(mpi_size)) {
+        for (int r = 0; r < mpi_size; ++r)
+            for (NodeId node : node_parts[r]) take(r, node);
+    } else {
+        const std::vector<std::int32_t> cell_part = mpi::morton_cell_parts(mesh, mpi_size);
+        for (std::size_t c = 0; c < cells; ++c)
+            for (std::int64_t k = mesh.cells.offsets[c]; k < mesh.cells.offsets[c + 1]; ++k)
+                take(cell_part[c], mesh.cells.nodes[k]);
+    }
     for (std::size_t node = 0; node < n; ++node)
         if (seen[node] < 0) take(0, static_cast<NodeId>(node));
 

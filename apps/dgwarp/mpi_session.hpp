@@ -38,11 +38,14 @@ void mpi_stop();
 struct DistributedRun;
 
 /// Rank 0: prepares `method` on every process, each with the nodes of its
-/// block of cells. `rank0_plan`: rank 0's own plan (over its working nodes:
-/// the whole boundary and its own volume nodes). `seconds`: each process's
+/// block of cells along a Morton curve, or, when `node_parts` has one list
+/// per process (a decomposed OpenFOAM case's processors), the nodes of its
+/// list. `rank0_plan`: rank 0's own plan (over its working nodes: the
+/// whole boundary and its own volume nodes). `seconds`: each process's
 /// prepare time. Throws as prepare does.
 std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet& boundary, Method method,
-                                            const MethodOptions& options, Plan& rank0_plan,
+                                            const MethodOptions& options,
+                                            const std::vector<std::vector<NodeId>>& node_parts, Plan& rank0_plan,
                                             std::vector<double>& seconds);
 
 /// Rank 0: one step on every process; `motion` one NodeMotion per node of

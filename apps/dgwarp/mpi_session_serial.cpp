@@ -22,8 +22,8 @@ int mpi_processes() { return 1; }
 void mpi_serve() {}
 void mpi_stop() {}
 
-std::shared_ptr<DistributedRun> mpi_prepare(const Mesh&, const BoundarySet&, Method, const MethodOptions&, Plan&,
-                                            std::vector<double>&) {
+std::shared_ptr<DistributedRun> mpi_prepare(const Mesh&, const BoundarySet&, Method, const MethodOptions&,
+                                            const std::vector<std::vector<NodeId>>&, Plan&, std::vector<double>&) {
     throw Error("mpi_prepare: dgwarp was built without MPI");
 }
 
