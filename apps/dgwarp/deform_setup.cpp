@@ -210,6 +210,13 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
     return in;
 }
 
+PlanSummary planned_summary(const PlannedMethod& p) {
+    PlanSummary s = plan_summary(p.plan);
+    // Under mpirun: rank 0's plan's, with the nodes outside the hull of every process.
+    if (p.distributed) s.outside_hull = mpi_outside_hull(*p.distributed);
+    return s;
+}
+
 PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
                           bool distributed) {
     PlannedMethod p;
@@ -277,7 +284,7 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
 }
 
 std::vector<std::string> plan_warnings(const PlannedMethod& p) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = planned_summary(p);
     if (s.outside_hull == 0) return {};
     return {std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
             " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
@@ -306,7 +313,7 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
 }
 
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = planned_summary(p);
     out << "plan      " << method_name(p.method);
     if (s.graph_simplices_used > 0) {
         if (s.graph_simplices) out << ", " << *s.graph_simplices << " graph simplices";
@@ -362,7 +369,7 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
 }
 
 nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = planned_summary(p);
     nlohmann::json phases = nlohmann::json::object();
     for (const auto& [name, seconds] : s.phase_seconds) phases[name] = seconds;
     const auto* dg_idw = std::get_if<DgIdwPlan>(&p.plan);

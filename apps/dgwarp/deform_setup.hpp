@@ -106,6 +106,9 @@ struct PlannedMethod {
 PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
                           bool distributed = false);
 
+/// plan_summary of p's plan; under mpirun, outside_hull is summed over the processes.
+PlanSummary planned_summary(const PlannedMethod& p);
+
 /// Warnings about a plan: volume nodes outside the Delaunay graph's hull
 /// (DG-IDW and DGM extrapolate there).
 std::vector<std::string> plan_warnings(const PlannedMethod& p);

@@ -56,7 +56,8 @@ std::vector<T> mpi_receive_vector(int from, int tag) {
 }
 
 // This process's side of a prepare: the plan over its part, its seconds gathered to rank 0.
-mpi::DistributedPlan mpi_prepare_part(const MpiPrepareHeader& h, const MpiPart& part, std::vector<double>* seconds) {
+mpi::DistributedPlan mpi_prepare_part(const MpiPrepareHeader& h, const MpiPart& part, std::vector<double>* seconds,
+                                      std::int64_t* outside_total) {
     Stopwatch sw;
     std::optional<mpi::DistributedPlan> plan;
     std::exception_ptr error;
@@ -70,6 +71,10 @@ mpi::DistributedPlan mpi_prepare_part(const MpiPrepareHeader& h, const MpiPart& 
     if (seconds) seconds->resize(mpi_size);
     MPI_Gather(&s, 1, MPI_DOUBLE, seconds ? seconds->data() : nullptr, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     if (error) std::rethrow_exception(error);
+    // The volume nodes outside the graph's hull, summed over the processes
+    // (rank 0's report warns about them wherever they are).
+    const std::int64_t outside = plan_summary(plan->plan).outside_hull;
+    MPI_Reduce(&outside, outside_total ? outside_total : nullptr, 1, MPI_INT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
     return std::move(*plan);
 }
 
@@ -80,6 +85,7 @@ struct DistributedRun {
     std::vector<MpiPart> parts;                           // per rank (rank 0's too)
     std::vector<std::vector<std::int32_t>> slots;      // per rank, per local boundary node: its whole-BoundarySet index
     mpi::DistributedPlan plan;                         // rank 0's
+    std::int64_t outside_hull = 0;                     // volume nodes outside the hull, summed over the processes
 };
 
 int mpi_start(int& argc, char**& argv) {
@@ -126,7 +132,7 @@ void mpi_serve() {
                 part.points = mpi_receive_vector<double>(0, 2);
                 part.boundary.nodes = mpi_receive_vector<NodeId>(0, 3);
                 part.boundary.moving = mpi_receive_vector<std::uint8_t>(0, 4);
-                plan = mpi_prepare_part(h, part, nullptr);
+                plan = mpi_prepare_part(h, part, nullptr, nullptr);
             } else if (command == command_deform) {
                 const BoundaryMotion motion = mpi_receive_vector<NodeMotion>(0, 5);
                 std::vector<double> out(part.points.size());
@@ -193,10 +199,14 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
         mpi_send_vector(run->parts[r].boundary.nodes, r, 3);
         mpi_send_vector(run->parts[r].boundary.moving, r, 4);
     }
-    run->plan = mpi_prepare_part(h, run->parts[0], &seconds);
+    std::int64_t outside = 0;
+    run->plan = mpi_prepare_part(h, run->parts[0], &seconds, &outside);
     rank0_plan = run->plan.plan;
+    run->outside_hull = outside;
     return run;
 }
+
+std::int64_t mpi_outside_hull(const DistributedRun& run) { return run.outside_hull; }
 
 StepReport mpi_deform(const DistributedRun& run, const BoundaryMotion& motion, std::span<double> out,
                       std::vector<double>& seconds) {

@@ -9,6 +9,7 @@
 // Built with MPI: mpi_session.cpp; without: mpi_session_serial.cpp (one
 // process; started by mpirun with several, it refuses to run, rather than
 // have P copies write the same files).
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -47,6 +48,10 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
                                             const MethodOptions& options,
                                             const std::vector<std::vector<NodeId>>& node_parts, Plan& rank0_plan,
                                             std::vector<double>& seconds);
+
+/// Rank 0: the volume nodes outside the graph's hull, summed over the
+/// processes (a node held by several processes counts once for each).
+std::int64_t mpi_outside_hull(const DistributedRun& run);
 
 /// Rank 0: one step on every process; `motion` one NodeMotion per node of
 /// the whole BoundarySet; writes every node's new coordinates to `out`

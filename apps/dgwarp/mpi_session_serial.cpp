@@ -27,6 +27,8 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh&, const BoundarySet&, Met
     throw Error("mpi_prepare: dgwarp was built without MPI");
 }
 
+std::int64_t mpi_outside_hull(const DistributedRun&) { return 0; }
+
 StepReport mpi_deform(const DistributedRun&, const BoundaryMotion&, std::span<double>, std::vector<double>&) {
     throw Error("mpi_deform: dgwarp was built without MPI");
 }
