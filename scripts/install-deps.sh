@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages dgwarp needs to build, test and run.
+# Open MPI (libopenmpi-dev, openmpi-bin): the dgwarp_mpi library, `mpirun dgwarp`
+# and the MPI tests (docs/MPI.md); without it they are skipped.
 # Idempotent: prints nothing and touches nothing when everything is present.
 # `install-deps.sh fuzz` also installs what scripts/fuzz.sh needs (clang,
 # libFuzzer and the sanitizer runtimes, LLVM's OpenMP).
@@ -12,6 +14,7 @@ packages=(
   libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
   libgtest-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
 )
 if [ "${1:-}" = fuzz ]; then
   packages+=(clang libclang-rt-14-dev libomp-dev)

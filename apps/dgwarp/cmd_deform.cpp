@@ -54,6 +54,7 @@ struct FrameResult {
     std::optional<UntangleReport> untangled;  // when --untangle (or dg-harmonic's last resort) found cells to repair
     bool last_resort = false;                 // the repair was dg-harmonic's last resort, not --untangle
     double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
+    std::vector<double> process_seconds;  // under mpirun: each process's step
     std::vector<std::string> warnings;
 };
 
@@ -84,7 +85,7 @@ nlohmann::json untangle_json(const UntangleReport& u) {
 }
 
 nlohmann::json frame_json(const FrameResult& f) {
-    return {{"frame", f.frame},
+    nlohmann::json j = {{"frame", f.frame},
             {"time", f.time},
             {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)},
             {"quality", quality_json(f.quality)},
@@ -102,6 +103,8 @@ nlohmann::json frame_json(const FrameResult& f) {
              {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
               {"write", f.write_seconds}}},
             {"warnings", f.warnings}};
+    if (!f.process_seconds.empty()) j["process_seconds"] = f.process_seconds;
+    return j;
 }
 
 nlohmann::json run_json(const Inputs& in, const MethodRun& r) {
@@ -132,6 +135,11 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout.unsetf(std::ios::floatfield);
     std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
               << ", write " << milliseconds(f.write_seconds) << "\n";
+    if (!f.process_seconds.empty()) {
+        std::cout << "processes " << f.process_seconds.size() << ", step on each:";
+        for (double s : f.process_seconds) std::cout << " " << milliseconds(s);
+        std::cout << " (deform: with the scatter and gather by rank 0)\n";
+    }
     if (const auto& u = f.untangled)
         std::cout << "untangle  " << (f.last_resort ? "(dg-harmonic's last resort) " : "") << "inverted cells "
                   << u->inverted_before << " -> " << u->inverted_after
@@ -226,7 +234,7 @@ void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::
 bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several, ProgressLine& progress,
               MethodRun& run) {
     try {
-        run.planned = plan_method(in, method, a.plan, progress);
+        run.planned = plan_method(in, method, a.plan, progress, mpi_processes() > 1);
         return true;
     } catch (const InvalidResultError& e) {
         run.error = e.what();
@@ -271,8 +279,11 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         f.warnings = motion.warnings;
         Stopwatch sw;  // the deform time is the method's step alone
         try {
-            f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points, run.planned.options,
-                            progress.reporter(phase));
+            if (run.planned.distributed)
+                f.step = mpi_deform(*run.planned.distributed, motion.motion, deformed.points, f.process_seconds);
+            else
+                f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points, run.planned.options,
+                                progress.reporter(phase));
         } catch (const InvalidResultError& e) {
             if (!several) throw;
             run.error = e.what();
@@ -420,6 +431,7 @@ void run_deform(const DeformArgs& given) {
         nlohmann::json j = inputs_json(in, "deform");
         if (!runs[0].planned.plan_file.empty()) j["options"] = options_json(runs[0].planned.options, true);
         j["output"] = given.output;
+        j["processes"] = mpi_processes();
         for (const auto& r : runs)
             for (const auto& w : plan_warnings(r.planned))
                 j["warnings"].push_back(several ? std::string(method_name(r.planned.method)) + ": " + w : w);

@@ -210,13 +210,35 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
     return in;
 }
 
-PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress) {
+PlanSummary planned_summary(const PlannedMethod& p) {
+    PlanSummary s = plan_summary(p.plan);
+    // Under mpirun: rank 0's plan's, with the nodes outside the hull of every process.
+    if (p.distributed) s.outside_hull = mpi_outside_hull(*p.distributed);
+    return s;
+}
+
+PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
+                          bool distributed) {
     PlannedMethod p;
     p.method = method;
     p.options = method_options(in.args);
     p.plan_file = plan_file;
     Stopwatch sw;
-    if (!plan_file.empty()) {
+    if (distributed && !plan_file.empty())
+        throw CLI::ValidationError("--plan", "a saved plan is for one process: under mpirun each process prepares "
+                                             "its own part (run without --plan)");
+    if (distributed) {
+        refuse_other_methods_options(in.args, method);
+        progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(mpi_processes()) +
+                       " processes");
+        // A decomposed OpenFOAM case on as many processes as processors: each
+        // process deforms its processor's points (the solver's decomposition).
+        std::vector<std::vector<NodeId>> node_parts;
+        if (in.extras.openfoam && in.extras.openfoam->processors.size() == static_cast<std::size_t>(mpi_processes()))
+            for (const OpenFoamProcessor& processor : in.extras.openfoam->processors) node_parts.push_back(processor.points);
+        p.distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options, node_parts, p.plan,
+                                    p.process_prepare_seconds);
+    } else if (!plan_file.empty()) {
         progress.phase("loading " + plan_file);
         Plan loaded = load_plan(plan_file, in.mesh.points, in.boundary.boundary);
         const Method planned = dgwarp::plan_method(loaded);
@@ -262,7 +284,7 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
 }
 
 std::vector<std::string> plan_warnings(const PlannedMethod& p) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = planned_summary(p);
     if (s.outside_hull == 0) return {};
     return {std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
             " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
@@ -291,7 +313,7 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
 }
 
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = planned_summary(p);
     out << "plan      " << method_name(p.method);
     if (s.graph_simplices_used > 0) {
         if (s.graph_simplices) out << ", " << *s.graph_simplices << " graph simplices";
@@ -347,11 +369,11 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
 }
 
 nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = planned_summary(p);
     nlohmann::json phases = nlohmann::json::object();
     for (const auto& [name, seconds] : s.phase_seconds) phases[name] = seconds;
     const auto* dg_idw = std::get_if<DgIdwPlan>(&p.plan);
-    return {{"method", method_name(p.method)},
+    nlohmann::json j = {{"method", method_name(p.method)},
             {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
             {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->options.weighting)) : nlohmann::json(nullptr)},
             {"graph_simplices", s.graph_simplices ? nlohmann::json(*s.graph_simplices) : nlohmann::json(nullptr)},
@@ -362,6 +384,9 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
             {"bytes", plan_memory_bytes(p.plan)},
             {"seconds", p.prepare_seconds},
             {"phase_seconds", phases}};
+    // Under mpirun: every process's prepare time (the counts above are rank 0's plan's).
+    if (p.distributed) j["process_seconds"] = p.process_prepare_seconds;
+    return j;
 }
 
 }  // namespace dgwarp::cli

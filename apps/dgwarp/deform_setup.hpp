@@ -3,6 +3,7 @@
 // motion, classifying the boundary, and building (or loading) a method's plan.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
@@ -16,6 +17,7 @@
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "mpi_session.hpp"
 #include "progress_line.hpp"
 #include "warning_printer.hpp"
 
@@ -91,11 +93,21 @@ struct PlannedMethod {
     Method method = Method::dg_idw;
     MethodOptions options;
     std::string plan_file;  // "" when built
-    Plan plan;
+    Plan plan;              // under mpirun: rank 0's own (docs/MPI.md)
     double prepare_seconds = 0;
+    /// Under mpirun (`distributed`): the run on every process, and each
+    /// process's prepare seconds; null and empty otherwise.
+    std::shared_ptr<DistributedRun> distributed;
+    std::vector<double> process_prepare_seconds;
 };
 
-PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress);
+/// `distributed`: prepare on every process of an mpirun (mpi_session.hpp);
+/// a plan file is then refused.
+PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
+                          bool distributed = false);
+
+/// plan_summary of p's plan; under mpirun, outside_hull is summed over the processes.
+PlanSummary planned_summary(const PlannedMethod& p);
 
 /// Warnings about a plan: volume nodes outside the Delaunay graph's hull
 /// (DG-IDW and DGM extrapolate there).

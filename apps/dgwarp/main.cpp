@@ -5,9 +5,26 @@
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
 #include "flag_values.hpp"
+#include "mpi_session.hpp"
 
 int main(int argc, char** argv) {
     using namespace dgwarp::cli;
+    // Under mpirun (docs/MPI.md), rank 0 runs the command and the other ranks
+    // serve its distributed prepares and steps until it stops them.
+    try {
+        mpi_start(argc, argv);
+    } catch (const dgwarp::Error& e) {
+        std::cerr << "dgwarp: error: " << e.what() << "\n";
+        return exit_bad_input;
+    }
+    if (mpi_rank() > 0) {
+        mpi_serve();
+        mpi_stop();
+        return exit_ok;
+    }
+    struct StopTheOtherRanks {
+        ~StopTheOtherRanks() { mpi_stop(); }
+    } stop_the_other_ranks;
     CLI::App app{"dgwarp: deform CFD volume meshes to follow moving and deforming boundaries\n"
                  "(Delaunay-graph inverse distance weighting, Wang, Qin & Zhao)."};
     app.name("dgwarp");

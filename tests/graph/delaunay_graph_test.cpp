@@ -282,6 +282,59 @@ TEST(GraphLocate, MortonAndGivenOrderAgreeAndThreadCountDoesNotMatter) {
     }
 }
 
+TEST(GraphLocate, NodesOnFacesAndOutsideTheHullGetTheSameSimplexWhateverTheOtherQueries) {
+    // A grid boundary (degenerate Delaunay: many choices of simplices) with
+    // queries on its vertices, grid lines and cell centres, and queries
+    // outside the hull. A walk's result depends on the previous query's
+    // simplex; the location must not (a process of an MPI run locates only
+    // its own nodes: dgwarp/mpi).
+    for (int dim : {2, 3}) {
+        std::vector<double> grid, queries;
+        const int n = 4;
+        for (int i = 0; i < (dim == 2 ? n * n : n * n * n); ++i) {
+            const int c[3] = {i % n, (i / n) % n, i / (n * n)};
+            for (int d = 0; d < dim; ++d) grid.push_back(c[d] / 3.0);
+            for (int d = 0; d < dim; ++d) queries.push_back(c[d] / 3.0);
+            for (int d = 0; d < dim; ++d) queries.push_back((c[d] * 0.75 + (d == 0 ? 0.5 : 0)) / 3.0);
+            for (int d = 0; d < dim; ++d) queries.push_back((c[d] * 0.75 + 0.5) / 3.0);
+        }
+        const std::vector<double> outside = random_points(dim, 60, 31, 1.2, 2.5);
+        for (std::size_t i = 0; i < outside.size(); ++i) queries.push_back(i % 4 == 1 ? -outside[i] + 1 : outside[i]);
+        const PointSet s = make_set(dim, grid, queries);
+        const LocatedGraph all = build_located_graph(dim, s.points, s.boundary, s.volume, {LocateOrder::given});
+        std::vector<NodeId> reversed(s.volume.rbegin(), s.volume.rend()), odd;
+        for (std::size_t q = 1; q < s.volume.size(); q += 2) odd.push_back(s.volume[q]);
+        const LocatedGraph back = build_located_graph(dim, s.points, s.boundary, reversed, {LocateOrder::given});
+        const LocatedGraph hilbert = build_located_graph(dim, s.points, s.boundary, odd, {LocateOrder::hilbert});
+        ASSERT_EQ(all.graph.simplices, back.graph.simplices);
+        ASSERT_EQ(all.graph.simplices, hilbert.graph.simplices);
+        EXPECT_EQ(all.location.outside_count, 60);
+        for (std::size_t q = 0; q < s.volume.size(); ++q) {
+            EXPECT_EQ(all.location.simplex[q], back.location.simplex[s.volume.size() - 1 - q]) << dim << "D query " << q;
+            if (q % 2 == 1) EXPECT_EQ(all.location.simplex[q], hilbert.location.simplex[q / 2]) << dim << "D query " << q;
+        }
+        expect_every_node_in_its_simplex(PointSet{dim, s.points, s.boundary, std::vector<NodeId>(s.volume.begin(), s.volume.end() - 60)},
+                                         LocatedGraph{all.graph, {std::vector<std::int32_t>(all.location.simplex.begin(), all.location.simplex.end() - 60), 0}, {}});
+        // An outside node gets a simplex with a hull facet it sees: a negative
+        // barycentric coordinate whose opposite facet lies on a face of the box.
+        for (std::size_t q = s.volume.size() - 60; q < s.volume.size(); ++q) {
+            const auto p = corners(s, all.graph, static_cast<std::size_t>(all.location.simplex[q]));
+            const auto e = barycentric(dim, p, s.points.data() + static_cast<std::size_t>(s.volume[q]) * dim);
+            bool sees_hull_facet = false;
+            for (int k = 0; k <= dim; ++k) {
+                if (e[k] >= 0) continue;
+                for (int d = 0; d < dim; ++d)
+                    for (double side : {0.0, 1.0}) {
+                        int on = 0;
+                        for (int j = 0; j <= dim; ++j) on += j != k && p[j][d] == side;
+                        sees_hull_facet |= on == dim;
+                    }
+            }
+            EXPECT_TRUE(sees_hull_facet) << dim << "D outside query " << q;
+        }
+    }
+}
+
 TEST(GraphLocate, DuplicateBoundaryPointsShareOneVertexAndKeepTheirIds) {
     for (int dim : {2, 3}) {
         std::vector<double> b = concat(box_corners(dim), random_points(dim, 20, 7));

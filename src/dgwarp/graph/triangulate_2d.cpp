@@ -35,9 +35,24 @@ struct Plane {
     }
     static auto finite_simplices(const Delaunay& dt) { return dt.finite_face_handles(); }
     static std::size_t finite_simplex_count(const Delaunay& dt) { return dt.number_of_faces(); }
-    static Handle locate(const Delaunay& dt, const Point& p, Delaunay::Locate_type& lt, Handle hint) {
-        int li;
+    static Handle locate(const Delaunay& dt, const Point& p, Delaunay::Locate_type& lt, int& li, int&, Handle hint) {
         return dt.locate(p, lt, li, hint);
+    }
+    static bool is_facet(Delaunay::Locate_type) { return false; }  // 2D: an edge is the facet
+    static void incident(const Delaunay& dt, Handle s, Delaunay::Locate_type lt, int li, int,
+                         std::vector<Handle>& out) {
+        if (lt == Delaunay::EDGE) {
+            out.push_back(s);
+            out.push_back(s->neighbor(li));
+            return;
+        }
+        auto f = dt.incident_faces(s->vertex(li)), done = f;  // VERTEX
+        do out.push_back(f); while (++f != done);
+    }
+    static bool sees(const Delaunay& dt, Handle s, const Point& p) {
+        const int i = s->index(dt.infinite_vertex());
+        return dt.orientation(p, s->vertex(Delaunay::ccw(i))->point(), s->vertex(Delaunay::cw(i))->point()) !=
+               CGAL::NEGATIVE;
     }
 };
 

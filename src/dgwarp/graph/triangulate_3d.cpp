@@ -39,9 +39,28 @@ struct Space {
     }
     static auto finite_simplices(const Delaunay& dt) { return dt.finite_cell_handles(); }
     static std::size_t finite_simplex_count(const Delaunay& dt) { return dt.number_of_finite_cells(); }
-    static Handle locate(const Delaunay& dt, const Point& p, Delaunay::Locate_type& lt, Handle hint) {
-        int li, lj;
+    static Handle locate(const Delaunay& dt, const Point& p, Delaunay::Locate_type& lt, int& li, int& lj,
+                         Handle hint) {
         return dt.locate(p, lt, li, lj, hint);
+    }
+    static bool is_facet(Delaunay::Locate_type lt) { return lt == Delaunay::FACET; }
+    static void incident(const Delaunay& dt, Handle s, Delaunay::Locate_type lt, int li, int lj,
+                         std::vector<Handle>& out) {
+        if (lt == Delaunay::FACET) {
+            out.push_back(s);
+            out.push_back(s->neighbor(li));
+        } else if (lt == Delaunay::EDGE) {
+            auto c = dt.incident_cells(s, li, lj), done = c;
+            do out.push_back(c); while (++c != done);
+        } else {  // VERTEX
+            dt.incident_cells(s->vertex(li), std::back_inserter(out));
+        }
+    }
+    static bool sees(const Delaunay& dt, Handle s, const Point& p) {
+        const int i = s->index(dt.infinite_vertex());
+        const Point* q[4];
+        for (int k = 0; k < 4; ++k) q[k] = k == i ? &p : &s->vertex(k)->point();
+        return dt.orientation(*q[0], *q[1], *q[2], *q[3]) != CGAL::NEGATIVE;
     }
 };
 

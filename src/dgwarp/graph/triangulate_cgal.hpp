@@ -12,7 +12,20 @@
 //   static void check_spans(dt, vertices);     throws MeshError when dt has fewer than dim dimensions
 //   static auto finite_simplices(dt);          its finite faces / cells, as handles
 //   static std::size_t finite_simplex_count(dt);
-//   static Handle locate(dt, point, lt, hint); the simplex holding point (may be infinite), its locate type
+//   static Handle locate(dt, point, lt, li, lj, hint); the simplex holding point (may be infinite), its locate
+//                                              type and CGAL's indices of the vertex / edge / facet it is on
+//   static void incident(dt, s, lt, li, lj, out); every simplex (finite or not) holding the vertex, edge or
+//                                              facet `point` was located on (lt VERTEX, EDGE, FACET)
+//   static bool sees(dt, s, point);            for an infinite simplex s: whether point is on the outer side
+//                                              of (or on the plane of) its hull facet
+//
+// Location is independent of the order of the queries: a walk's result
+// depends on where it starts (the previous query's simplex), so a node on a
+// graph face, edge or vertex, or outside the hull, gets the lowest-numbered
+// finite simplex among all that hold it (that it sees across the hull),
+// not the one the walk reached first. The distributed prepare (dgwarp/mpi)
+// locates each process's own nodes and relies on this to give every node the
+// simplex, and so the bits, of the single-process run.
 
 #include <algorithm>
 #include <bit>
@@ -20,6 +33,7 @@
 #include <memory>
 #include <numeric>
 #include <utility>
+#include <vector>
 
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
@@ -46,8 +60,7 @@ namespace dgwarp::detail {
 // within that tolerance (ties and near-ties are broken by the perturbation).
 // In 2D the graph is built on the original coordinates: a 2D boundary has a
 // few thousand nodes at most and its graph costs milliseconds, and CGAL's own
-// tie-breaking keeps the figures of structured 2D cases (docs/RESULTS.md) as
-// they were (the twisted bar's DG-IDW folds 151 cells; 165 with the perturbed graph).
+// tie-breaking (symbolic perturbation) is kept there.
 inline constexpr double perturbation_fraction = 0x1p-40;  // about 9.1e-13
 inline constexpr int perturbation_rounds = 3;            // the last on the original coordinates
 
@@ -123,6 +136,46 @@ std::unique_ptr<typename Dim::Delaunay> build_delaunay(std::span<const double> p
     }
 }
 
+// The order-independent simplex of a query (see the file comment): `s`, lt,
+// li, lj as the walk found them. `scratch` and `seen` are reused buffers.
+template <class Dim>
+typename Dim::Handle canonical_simplex(const typename Dim::Delaunay& dt, const typename Dim::Point& p,
+                                       typename Dim::Handle s, typename Dim::Delaunay::Locate_type lt, int li,
+                                       int lj, std::vector<typename Dim::Handle>& scratch,
+                                       std::vector<typename Dim::Handle>& seen) {
+    using Delaunay = typename Dim::Delaunay;
+    using Handle = typename Dim::Handle;
+    if (lt == Delaunay::OUTSIDE_CONVEX_HULL) {
+        // Every infinite simplex whose hull facet the node sees: they form a
+        // connected patch around the walk's one; the lowest-numbered finite
+        // simplex behind them.
+        seen.assign(1, s);
+        Handle best = s->neighbor(s->index(dt.infinite_vertex()));
+        for (std::size_t i = 0; i < seen.size(); ++i) {
+            const Handle c = seen[i];
+            for (int k = 0; k <= Dim::dim; ++k) {
+                const Handle n = c->neighbor(k);
+                if (!dt.is_infinite(n) || std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
+                if (!Dim::sees(dt, n, p)) continue;
+                seen.push_back(n);
+                const Handle f = n->neighbor(n->index(dt.infinite_vertex()));
+                if (f->info() < best->info()) best = f;
+            }
+        }
+        return best;
+    }
+    if (lt != Delaunay::VERTEX && lt != Delaunay::EDGE && !Dim::is_facet(lt)) {
+        if (dt.is_infinite(s)) s = s->neighbor(s->index(dt.infinite_vertex()));
+        return s;
+    }
+    scratch.clear();
+    Dim::incident(dt, s, lt, li, lj, scratch);
+    Handle best{};
+    for (const Handle c : scratch)
+        if (!dt.is_infinite(c) && (best == Handle{} || c->info() < best->info())) best = c;
+    return best;
+}
+
 template <class Dim>
 TriangulationResult triangulate_and_locate(std::span<const double> points, std::span<const NodeId> vertex_node,
                                            std::span<const NodeId> query_nodes, bool spatial_order,
@@ -167,16 +220,15 @@ TriangulationResult triangulate_and_locate(std::span<const double> points, std::
     ProgressCounter located(locate_progress, n);
     parallel_for(blocks, [&](std::int64_t b) {
         Handle hint;
+        std::vector<Handle> scratch, seen;
         const std::int64_t end = std::min(n, (b + 1) * locate_block_size);
         for (std::int64_t j = b * locate_block_size; j < end; ++j) {
             typename Delaunay::Locate_type lt;
-            Handle s = Dim::locate(dt, query[j], lt, hint);
-            if (dt.is_infinite(s)) {
-                // Outside the hull (or on its boundary): the finite simplex across the hull's face.
-                if (lt == Delaunay::OUTSIDE_CONVEX_HULL) ++outside[b];
-                s = s->neighbor(s->index(dt.infinite_vertex()));
-            }
-            result.location.simplex[order[j]] = s->info();
+            int li = 0, lj = 0;
+            const Handle s = Dim::locate(dt, query[j], lt, li, lj, hint);
+            if (lt == Delaunay::OUTSIDE_CONVEX_HULL) ++outside[b];
+            // Outside the hull (or on its boundary): a finite simplex across the hull's face.
+            result.location.simplex[order[j]] = canonical_simplex<Dim>(dt, query[j], s, lt, li, lj, scratch, seen)->info();
             hint = s;
         }
         located.add(end - b * locate_block_size);

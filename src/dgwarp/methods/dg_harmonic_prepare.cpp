@@ -13,6 +13,7 @@
 #include "dgwarp/graph/nearest_node.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/coarse_points.hpp"
+#include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dgm_detail.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
@@ -266,6 +267,23 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
                                    const DgHarmonicOptions& options, const ProgressFn& progress) {
     const std::size_t num_points = check_points_and_boundary("DG-harmonic", dim, points, boundary);
     check_dg_harmonic_options(options);
+    std::vector<std::int32_t> node_simplex;
+    const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, node_simplex);
+    const auto t0 = Clock::now();
+    const std::vector<NodeId> coarse =
+        select_coarse_points(dim, points, boundary.nodes, volume, {options.wall_spacing, options.growth});
+    const double select_seconds = seconds_since(t0);
+    if (progress) progress(0.1);
+    DgHarmonicPlan plan = prepare_dg_harmonic_on_coarse(dim, points, boundary, coarse, options, progress);
+    plan.stats.select_seconds = select_seconds;
+    return plan;
+}
+
+DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> points, const BoundarySet& boundary,
+                                             std::span<const NodeId> coarse, const DgHarmonicOptions& options,
+                                             const ProgressFn& progress) {
+    const std::size_t num_points = check_points_and_boundary("DG-harmonic", dim, points, boundary);
+    check_dg_harmonic_options(options);
 
     DgHarmonicPlan plan;
     plan.dim = dim;
@@ -274,12 +292,7 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
     plan.boundary_nodes = boundary.nodes;
     plan.boundary_moving = boundary.moving;
     const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, plan.node_simplex);
-
     auto t0 = Clock::now();
-    const std::vector<NodeId> coarse =
-        select_coarse_points(dim, points, boundary.nodes, volume, {options.wall_spacing, options.growth});
-    plan.stats.select_seconds = seconds_since(t0);
-    if (progress) progress(0.1);
 
     // Graph points: the boundary nodes (boundary indices 0..nb-1), then the
     // coarse volume nodes. Graph vertices are numbered by their smallest

@@ -12,6 +12,7 @@
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
+#include "dgwarp/methods/dg_idw_step.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
 
@@ -178,6 +179,21 @@ void check_dg_idw_options(const DgIdwOptions& options) {
 
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
                               const BoundaryMotion& motion, std::span<double> out) {
+    return deform_dg_idw_bounded(plan, points, motion, out, max_rotation_angle2(plan, motion));
+}
+
+double max_rotation_angle2(const DgIdwPlan& plan, const BoundaryMotion& motion) {
+    double angle2_max = 0;
+    for (std::size_t b = 0; b < motion.size() && b < plan.boundary_moving.size(); ++b) {
+        if (!plan.boundary_moving[b]) continue;
+        const Vec3& w = motion[b].rotation;
+        angle2_max = std::max(angle2_max, plan.dim == 2 ? w[2] * w[2] : w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    }
+    return angle2_max;
+}
+
+DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const double> points,
+                                      const BoundaryMotion& motion, std::span<double> out, double angle2_max) {
     const DgIdwOptions& options = plan.options;
     check_dg_idw_options(options);
     check_step_arrays("DG-IDW", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
@@ -186,12 +202,6 @@ DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> poi
     // The interpolated rotation vector is a combination of the moving nodes'
     // ones with non-negative weights summing to at most 1, so its angle is at
     // most their largest: that bounds the Taylor terms the step needs.
-    double angle2_max = 0;
-    for (std::size_t b = 0; b < motion.size(); ++b) {
-        if (!plan.boundary_moving[b]) continue;
-        const Vec3& w = motion[b].rotation;
-        angle2_max = std::max(angle2_max, plan.dim == 2 ? w[2] * w[2] : w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    }
     const int terms = angle2_max == 0                           ? 0
                       : angle2_max <= taylor_angle2_limit(4) ? 4
                       : angle2_max <= taylor_angle2_limit(6) ? 6

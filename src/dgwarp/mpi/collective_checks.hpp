@@ -1,0 +1,15 @@
+#pragma once
+// Internal: errors found on one process, raised on every process, so that no
+// process waits forever in a collective call the failing one never makes.
+#include <mpi.h>
+
+#include <string>
+
+namespace dgwarp::mpi::detail {
+
+/// Collective over `comm`: when any process has a non-empty `local_error`,
+/// throws on every process: MeshError(local_error) where it was found, and an
+/// Error naming the lowest such rank and `what` on the others.
+void throw_if_any_failed(MPI_Comm comm, const std::string& local_error, const std::string& what);
+
+}  // namespace dgwarp::mpi::detail

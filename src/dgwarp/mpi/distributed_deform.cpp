@@ -1,0 +1,107 @@
+// deform_distributed: exchange the motions, one step of the method on the
+// working nodes, this process's nodes copied out.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/methods/dg_idw_step.hpp"
+#include "dgwarp/methods/graph_vertex_motion.hpp"
+#include "dgwarp/mpi/collective_checks.hpp"
+#include "dgwarp/mpi/distributed_plan.hpp"
+
+namespace dgwarp::mpi {
+
+namespace {
+
+// A NodeMotion travels as 9 doubles (t, w, c).
+static_assert(std::is_standard_layout_v<NodeMotion> && sizeof(NodeMotion) == 9 * sizeof(double));
+constexpr int motion_doubles = 9;
+
+std::string check_step_input(const DistributedPlan& p, std::span<const double> points, const BoundaryMotion& motion,
+                             std::span<const double> out) {
+    const auto values = static_cast<std::size_t>(p.num_local_points) * static_cast<std::size_t>(p.dim);
+    if (points.size() != values || out.size() != values)
+        return "the plan is for " + std::to_string(p.num_local_points) + " local points (" + std::to_string(values) +
+               " values), got " + std::to_string(points.size()) + " point values and " + std::to_string(out.size()) +
+               " output values";
+    if (motion.size() != p.local_boundary_index.size())
+        return "the motion has " + std::to_string(motion.size()) + " entries but this process has " +
+               std::to_string(p.local_boundary_index.size()) + " boundary nodes";
+    for (std::size_t j = 0; j < motion.size(); ++j)
+        for (const Vec3* v : {&motion[j].translation, &motion[j].rotation, &motion[j].center})
+            for (double x : *v)
+                if (!std::isfinite(x))
+                    return "the motion of local boundary node " + std::to_string(j) + " is not finite";
+    return {};
+}
+
+std::vector<int> displacements(const std::vector<int>& counts) {
+    std::vector<int> d(counts.size(), 0);
+    for (std::size_t r = 1; r < counts.size(); ++r) d[r] = d[r - 1] + counts[r - 1];
+    return d;
+}
+
+std::vector<int> times(std::vector<int> counts, int k) {
+    for (int& c : counts) c *= k;
+    return counts;
+}
+
+}  // namespace
+
+StepReport deform_distributed(const DistributedPlan& p, std::span<const double> points, const BoundaryMotion& motion,
+                              std::span<double> out) {
+    detail::throw_if_any_failed(p.comm, check_step_input(p, points, motion, out), "its step's arrays");
+    // The working boundary nodes' motions (every boundary node for the
+    // gather-all methods, the ones a step reads for DG-IDW): this process's
+    // own, and the ones received; the rest stay zero (never read).
+    const std::size_t nb = p.gather_all ? static_cast<std::size_t>(p.num_boundary_nodes)
+                                        : std::get<DgIdwPlan>(p.plan).boundary_nodes.size();
+    BoundaryMotion all(nb);
+    for (std::size_t j = 0; j < motion.size(); ++j) all[p.local_boundary_index[j]] = motion[j];
+
+    StepReport report;
+    std::vector<double> working_out(p.working_points.size());
+    if (p.gather_all) {
+        std::vector<NodeMotion> send(p.my_owned_local.size()), recv(p.owned_boundary.size());
+        for (std::size_t k = 0; k < send.size(); ++k) send[k] = motion[p.my_owned_local[k]];
+        const std::vector<int> counts = times(p.owned_counts, motion_doubles);
+        const std::vector<int> displs = displacements(counts);
+        MPI_Allgatherv(send.data(), static_cast<int>(send.size()) * motion_doubles, MPI_DOUBLE, recv.data(),
+                       counts.data(), displs.data(), MPI_DOUBLE, p.comm);
+        for (std::size_t k = 0; k < recv.size(); ++k) all[p.owned_boundary[k]] = recv[k];
+        report = deform(p.plan, p.working_points, all, working_out, p.options);
+    } else {
+        const auto& plan = std::get<DgIdwPlan>(p.plan);
+        std::vector<NodeMotion> send(p.send_local.size()), recv(p.recv_boundary.size());
+        for (std::size_t k = 0; k < send.size(); ++k) send[k] = motion[p.send_local[k]];
+        const std::vector<int> scounts = times(p.send_counts, motion_doubles);
+        const std::vector<int> rcounts = times(p.recv_counts, motion_doubles);
+        const std::vector<int> sdispl = displacements(scounts), rdispl = displacements(rcounts);
+        MPI_Alltoallv(send.data(), scounts.data(), sdispl.data(), MPI_DOUBLE, recv.data(), rcounts.data(),
+                      rdispl.data(), MPI_DOUBLE, p.comm);
+        for (std::size_t k = 0; k < recv.size(); ++k) all[p.recv_boundary[k]] = recv[k];
+        // The whole boundary's largest rotation (it sets the Taylor terms, so
+        // the bits) and the conflicts of the shared vertices each process counts.
+        double angle2 = 0, angle2_max = 0;
+        for (std::size_t j = 0; j < motion.size(); ++j) {
+            if (!plan.boundary_moving[p.local_boundary_index[j]]) continue;
+            const Vec3& w = motion[j].rotation;
+            angle2 = std::max(angle2, p.dim == 2 ? w[2] * w[2] : w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+        MPI_Allreduce(&angle2, &angle2_max, 1, MPI_DOUBLE, MPI_MAX, p.comm);
+        const std::int64_t mine = count_conflicting_shared_vertices(p.counted_shared_offsets, p.counted_shared_members,
+                                                                    plan.boundary_moving, all);
+        std::int64_t total = 0;
+        MPI_Allreduce(&mine, &total, 1, MPI_INT64_T, MPI_SUM, p.comm);
+        deform_dg_idw_bounded(plan, p.working_points, all, working_out, angle2_max);
+        report.conflicting_shared_vertices = total;
+    }
+    for (std::int64_t i = 0; i < p.num_local_points; ++i)
+        std::copy_n(working_out.data() + static_cast<std::size_t>(p.local_to_working[i]) * p.dim, p.dim,
+                    out.data() + static_cast<std::size_t>(i) * p.dim);
+    return report;
+}
+
+}  // namespace dgwarp::mpi
