@@ -305,13 +305,15 @@ TEST(GraphLocate, NodesOnFacesAndOutsideTheHullGetTheSameSimplexWhateverTheOther
         std::vector<NodeId> reversed(s.volume.rbegin(), s.volume.rend()), odd;
         for (std::size_t q = 1; q < s.volume.size(); q += 2) odd.push_back(s.volume[q]);
         const LocatedGraph back = build_located_graph(dim, s.points, s.boundary, reversed, {LocateOrder::given});
-        const LocatedGraph hilbert = build_located_graph(dim, s.points, s.boundary, odd, {LocateOrder::hilbert});
+        const LocatedGraph morton = build_located_graph(dim, s.points, s.boundary, odd, {LocateOrder::morton});
         ASSERT_EQ(all.graph.simplices, back.graph.simplices);
-        ASSERT_EQ(all.graph.simplices, hilbert.graph.simplices);
+        ASSERT_EQ(all.graph.simplices, morton.graph.simplices);
         EXPECT_EQ(all.location.outside_count, 60);
         for (std::size_t q = 0; q < s.volume.size(); ++q) {
             EXPECT_EQ(all.location.simplex[q], back.location.simplex[s.volume.size() - 1 - q]) << dim << "D query " << q;
-            if (q % 2 == 1) EXPECT_EQ(all.location.simplex[q], hilbert.location.simplex[q / 2]) << dim << "D query " << q;
+            if (q % 2 == 1) {
+                EXPECT_EQ(all.location.simplex[q], morton.location.simplex[q / 2]) << dim << "D query " << q;
+            }
         }
         expect_every_node_in_its_simplex(PointSet{dim, s.points, s.boundary, std::vector<NodeId>(s.volume.begin(), s.volume.end() - 60)},
                                          LocatedGraph{all.graph, {std::vector<std::int32_t>(all.location.simplex.begin(), all.location.simplex.end() - 60), 0}, {}});
