@@ -1,0 +1,135 @@
+#include "dgwarp/io/cgns_file.hpp"
+
+#include <cgns_io.h>
+#include <cgnslib.h>
+
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/gmsh_element_types.hpp"
+
+namespace dgwarp::cgns {
+
+namespace {
+
+/// libcgns prints its warnings (and, without a handler, its errors) on the
+/// terminal; dgwarp reports failures through exceptions with cg_get_error's
+/// message instead.
+void quiet_handler(int, char*) {}
+
+void install_quiet_handler() {
+    static const bool installed = [] {
+        cg_configure(CG_CONFIG_ERROR, reinterpret_cast<void*>(&quiet_handler));
+        return true;
+    }();
+    (void)installed;
+}
+
+/// An ADF file (libcgns's older format) cut short reads as zeros where its
+/// data was; its header says where it ends ("AdF4", then the root node's and
+/// the end's block and offset in hexadecimal): refuse a file shorter than that.
+void check_adf_length(const std::filesystem::path& path, const std::string& name) {
+    std::ifstream in(path, std::ios::binary);
+    char header[256] = {};
+    in.read(header, sizeof header);
+    const std::string text(header, static_cast<std::size_t>(in.gcount()));
+    if (text.find("ADF Database Version") != 4) return;
+    const std::size_t tag = text.find("AdF4");
+    std::uintmax_t block = 0, offset = 0;
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    const bool parsed = tag != std::string::npos && tag + 4 + 24 <= text.size() &&
+                        std::sscanf(text.substr(tag + 4 + 12, 12).c_str(), "%8jx%4jx", &block, &offset) == 2;
+    if (!parsed) throw IoError(name, "cannot open as a CGNS file: its ADF header is damaged (no end of file in it)");
+    const std::uintmax_t end = block * 4096 + offset;
+    if (!ec && size <= end)
+        throw IoError(name, "cannot open as a CGNS file: it is cut short (its ADF header says it ends at byte " +
+                                std::to_string(end + 1) + ", it has " + std::to_string(size) + ")");
+}
+
+}  // namespace
+
+std::string library_error() {
+    const char* m = cg_get_error();
+    return m && *m ? m : "unknown libcgns error";
+}
+
+OpenFile::OpenFile(const std::filesystem::path& path, int mode, std::string shown_name) : name_(std::move(shown_name)) {
+    install_quiet_handler();
+    if (mode == CG_MODE_READ || mode == CG_MODE_MODIFY) {
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) throw IoError(name_, "No such file or directory");
+        if (!std::filesystem::is_regular_file(path, ec)) throw IoError(name_, "is not a regular file");
+        // libcgns opens an empty file in modify mode as a new one: refuse it here.
+        if (std::filesystem::file_size(path, ec) == 0) throw IoError(name_, "is empty, not a CGNS file");
+    }
+    if (mode != CG_MODE_WRITE) check_adf_length(path, name_);
+    int fn = -1;
+    if (cg_open(path.c_str(), mode, &fn) != CG_OK) {
+        const std::string reason = library_error();
+        // libcgns numbers the file before reading it and leaves it open when
+        // reading its tree fails; cg_close would then free the half-read tree
+        // (and crashes on some damaged files), so only the file itself is
+        // closed (else libcgns's table of open files fills up). The half-read
+        // tree is lost memory (tests/lsan.supp).
+        int cgio = 0;
+        if (fn >= 0 && cg_get_cgio(fn, &cgio) == CG_OK && cgio > 0) cgio_close_file(cgio);
+        throw IoError(name_, (mode == CG_MODE_WRITE ? "cannot create a CGNS file: " : "cannot open as a CGNS file: ") +
+                                 reason);
+    }
+    fn_ = fn;
+}
+
+OpenFile::~OpenFile() {
+    if (fn_ >= 0) cg_close(fn_);
+}
+
+void OpenFile::close() {
+    const int fn = fn_;
+    fn_ = -1;
+    if (cg_close(fn) != CG_OK) throw IoError(name_, "cannot close the CGNS file: " + library_error());
+}
+
+void OpenFile::read_check(int status, const std::string& what) const {
+    if (status != CG_OK) throw ParseError(name_, 0, what, library_error());
+}
+
+void OpenFile::write_check(int status, const std::string& what) const {
+    if (status != CG_OK) throw IoError(name_, "cannot write " + what + ": " + library_error());
+}
+
+std::string element_type_name(int type) {
+    if (type < 0 || type > CGNS_ENUMV(NFACE_n) + 1) return "element type " + std::to_string(type);
+    return cg_ElementTypeName(static_cast<CGNS_ENUMT(ElementType_t)>(type));
+}
+
+int element_type(CellType t) {
+    switch (t) {
+        case CellType::vertex: return CGNS_ENUMV(NODE);
+        case CellType::line: return CGNS_ENUMV(BAR_2);
+        case CellType::triangle: return CGNS_ENUMV(TRI_3);
+        case CellType::quadrilateral: return CGNS_ENUMV(QUAD_4);
+        case CellType::tetrahedron: return CGNS_ENUMV(TETRA_4);
+        case CellType::hexahedron: return CGNS_ENUMV(HEXA_8);
+        case CellType::prism: return CGNS_ENUMV(PENTA_6);
+        case CellType::pyramid: return CGNS_ENUMV(PYRA_5);
+    }
+    return CGNS_ENUMV(ElementTypeNull);
+}
+
+bool cell_type_of(int cgns_type, CellType& t) {
+    for (CellType c : all_cell_types)
+        if (element_type(c) == cgns_type) {
+            t = c;
+            return true;
+        }
+    return false;
+}
+
+int cgns_index_of_vtk_node(CellType t, int vtk_index) {
+    return msh::gmsh_index_of_vtk_node(t)[static_cast<std::size_t>(vtk_index)];
+}
+
+}  // namespace dgwarp::cgns
