@@ -259,7 +259,26 @@ TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {
     TestZone z = cgns_tet_zone();
     z.bcs = {{"base", "wall", cgns_code::FaceCenter, false, {2}}, {"tip", "", cgns_code::Vertex, false, {4}}};
     write_test_cgns(dir / "checked.cgns", 3, {z});
-    const CommandResult r = run_command("cgnscheck " + quoted(dir / "checked.cgns"));
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << r.out;
+    // Two zones with 1-to-1 connectivity, MIXED sections of cells and faces in 2D.
+    TestZone a = cgns_tet_zone(), b = cgns_tet_zone();
+    a.name = "A";
+    b.name = "B";
+    b.z = {0, 0, 0, -1};
+    b.sections[0].connectivity = {1, 3, 2, 4};
+    b.joins = {{"A", {1, 2, 3}, {1, 2, 3}}};
+    write_test_cgns(dir / "zones.cgns", 3, {a, b});
+    TestZone square;
+    square.x = {0, 1, 1, 0};
+    square.y = {0, 0, 1, 1};
+    square.sections = {{"All", cgns_code::MIXED, 3,
+                        {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::BAR_2, 1, 2}}};
+    square.cells = 2;
+    square.bcs = {{"lower", "", cgns_code::EdgeCenter, false, {3}}};
+    write_test_cgns(dir / "square.cgns", 2, {square});
+    for (const char* name : {"checked.cgns", "zones.cgns", "square.cgns"}) {
+        const CommandResult r = run_command("cgnscheck " + quoted(dir / name));
+        EXPECT_EQ(r.exit_code, 0) << name << r.out << r.err;
+        EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << name << "\n" << r.out;
+        EXPECT_NO_THROW(read_cgns(dir / name)) << name;
+    }
 }
