@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <fstream>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/gmsh_element_types.hpp"
@@ -49,6 +51,60 @@ void check_adf_length(const std::filesystem::path& path, const std::string& name
                                 std::to_string(end + 1) + ", it has " + std::to_string(size) + ")");
 }
 
+/// libcgns allocates, while opening a file, as many values as a node's
+/// header says its children or data hold, and ends the process (exit) when
+/// the allocation fails: a damaged header (a child count of 2^31) would end
+/// the program instead of raising an error. So the file's tree is walked
+/// first through libcgns's lower layer (cgio), refusing a node with more
+/// children or data values than the file could hold (`most`).
+void check_tree(const std::filesystem::path& path, const std::string& name, std::uintmax_t file_size) {
+    const std::int64_t most = 64 * static_cast<std::int64_t>(file_size) + 4096;
+    int cgio = 0;
+    if (cgio_open_file(path.c_str(), CGIO_MODE_READ, CGIO_FILE_NONE, &cgio) != CG_OK) {
+        char message[CGIO_MAX_ERROR_LENGTH + 1] = {};
+        cgio_error_message(message);
+        throw IoError(name, std::string("cannot open as a CGNS file: ") + message);
+    }
+    struct Closer {
+        int cgio;
+        ~Closer() { cgio_close_file(cgio); }
+    } closer{cgio};
+    auto damaged = [&](const std::string& what) {
+        return IoError(name, "cannot open as a CGNS file: it is damaged (" + what + ")");
+    };
+    double root = 0;
+    if (cgio_get_root_id(cgio, &root) != CG_OK) throw damaged("no root node");
+    std::vector<std::pair<double, int>> stack{{root, 0}};  // node, depth
+    std::int64_t visited = 0;
+    while (!stack.empty()) {
+        const auto [id, depth] = stack.back();
+        stack.pop_back();
+        if (++visited > most / 16 || depth > 64) throw damaged("more nodes than the file can hold, or a loop");
+        int ndims = 0;
+        cgsize_t dims[CGIO_MAX_DIMENSIONS] = {};
+        if (cgio_get_dimensions(cgio, id, &ndims, dims) == CG_OK) {
+            if (ndims < 0 || ndims > CGIO_MAX_DIMENSIONS) throw damaged("a node of " + std::to_string(ndims) + " dimensions");
+            std::int64_t values = ndims > 0 ? 1 : 0;
+            for (int d = 0; d < ndims; ++d) {
+                if (dims[d] < 0 || (dims[d] > 0 && values > most / dims[d]))
+                    throw damaged("a node's data larger than the file");
+                values *= dims[d];
+            }
+            if (values > most) throw damaged("a node's data larger than the file");
+        }
+        int children = 0;
+        if (cgio_number_children(cgio, id, &children) != CG_OK) throw damaged("a node's children cannot be counted");
+        if (children < 0 || children > most / 16)
+            throw damaged("a node with " + std::to_string(children) + " children");
+        std::vector<double> ids(static_cast<std::size_t>(children));
+        int got = 0;
+        if (children > 0 && (cgio_children_ids(cgio, id, 1, children, &got, ids.data()) != CG_OK || got != children))
+            throw damaged("a node's children cannot be read");
+        for (double child : ids) stack.push_back({child, depth + 1});
+        if (id != root) cgio_release_id(cgio, id);
+    }
+}
+
 }  // namespace
 
 std::string library_error() {
@@ -65,7 +121,11 @@ OpenFile::OpenFile(const std::filesystem::path& path, int mode, std::string show
         // libcgns opens an empty file in modify mode as a new one: refuse it here.
         if (std::filesystem::file_size(path, ec) == 0) throw IoError(name_, "is empty, not a CGNS file");
     }
-    if (mode != CG_MODE_WRITE) check_adf_length(path, name_);
+    if (mode != CG_MODE_WRITE) {
+        check_adf_length(path, name_);
+        std::error_code ec;
+        check_tree(path, name_, std::filesystem::file_size(path, ec));
+    }
     int fn = -1;
     if (cg_open(path.c_str(), mode, &fn) != CG_OK) {
         const std::string reason = library_error();
