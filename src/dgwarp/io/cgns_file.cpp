@@ -29,26 +29,47 @@ void install_quiet_handler() {
     (void)installed;
 }
 
-/// An ADF file (libcgns's older format) cut short reads as zeros where its
-/// data was; its header says where it ends ("AdF4", then the root node's and
-/// the end's block and offset in hexadecimal): refuse a file shorter than that.
-void check_adf_length(const std::filesystem::path& path, const std::string& name) {
+/// libcgns takes any file that is not HDF5 for ADF, and its ADF layer asserts
+/// (aborting the program) on some damaged headers; it also reads an ADF file
+/// cut short as zeros where its data was. So a file reaches libcgns only when
+/// it begins with HDF5's signature (at 0 or a user block of 512, 1024, ...
+/// bytes), or with an ADF header whose tags are in place and whose end of file
+/// (after "AdF4": the root node's and the end's block and offset, in
+/// hexadecimal) the file reaches.
+void check_file_kind(const std::filesystem::path& path, const std::string& name) {
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
     std::ifstream in(path, std::ios::binary);
     char header[256] = {};
     in.read(header, sizeof header);
     const std::string text(header, static_cast<std::size_t>(in.gcount()));
-    if (text.find("ADF Database Version") != 4) return;
-    const std::size_t tag = text.find("AdF4");
-    std::uintmax_t block = 0, offset = 0;
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    const bool parsed = tag != std::string::npos && tag + 4 + 24 <= text.size() &&
-                        std::sscanf(text.substr(tag + 4 + 12, 12).c_str(), "%8jx%4jx", &block, &offset) == 2;
-    if (!parsed) throw IoError(name, "cannot open as a CGNS file: its ADF header is damaged (no end of file in it)");
+    static const std::string hdf5_signature("\x89HDF\r\n\x1a\n", 8);
+    for (std::uintmax_t at = 0; at + 8 <= size && at <= (std::uintmax_t{1} << 40); at = at ? 2 * at : 512) {
+        std::string signature(8, '\0');
+        in.clear();
+        in.seekg(static_cast<std::streamoff>(at));
+        in.read(signature.data(), 8);
+        if (in.gcount() == 8 && signature == hdf5_signature) return;
+    }
+    const auto not_cgns = [&](const std::string& why) {
+        return IoError(name, "cannot open as a CGNS file: " + why);
+    };
+    if (text.find("ADF Database Version") != 4) throw not_cgns("it is neither an HDF5 nor an ADF file");
+    std::size_t at = 0;
+    for (const char* tag : {"AdF0", "AdF1", "AdF2", "AdF3", "AdF4", "AdF5"}) {
+        at = text.find(tag, at);
+        if (at == std::string::npos) throw not_cgns(std::string("its ADF header is damaged (no ") + tag + ")");
+    }
+    const std::size_t pointers = text.find("AdF4") + 4;
+    if (pointers + 48 > text.size() ||
+        text.substr(pointers, 48).find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
+        throw not_cgns("its ADF header is damaged (its node pointers are not hexadecimal)");
+    const std::uintmax_t block = std::stoull(text.substr(pointers + 12, 8), nullptr, 16);
+    const std::uintmax_t offset = std::stoull(text.substr(pointers + 20, 4), nullptr, 16);
     const std::uintmax_t end = block * 4096 + offset;
     if (!ec && size <= end)
-        throw IoError(name, "cannot open as a CGNS file: it is cut short (its ADF header says it ends at byte " +
-                                std::to_string(end + 1) + ", it has " + std::to_string(size) + ")");
+        throw not_cgns("it is cut short (its ADF header says it ends at byte " + std::to_string(end + 1) + ", it has " +
+                       std::to_string(size) + ")");
 }
 
 /// libcgns allocates, while opening a file, as many values as a node's
@@ -122,7 +143,7 @@ OpenFile::OpenFile(const std::filesystem::path& path, int mode, std::string show
         if (std::filesystem::file_size(path, ec) == 0) throw IoError(name_, "is empty, not a CGNS file");
     }
     if (mode != CG_MODE_WRITE) {
-        check_adf_length(path, name_);
+        check_file_kind(path, name_);
         std::error_code ec;
         check_tree(path, name_, std::filesystem::file_size(path, ec));
     }
