@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -246,6 +247,10 @@ TEST(CgnsRead, BadContentIsNamedByFileZoneSectionAndBc) {
     z.joins = {{"Elsewhere", {1}, {1}}};
     write_test_cgns(dir / "donor.cgns", 3, {z});
     expect_cgns_error<ParseError>(dir / "donor.cgns", {"donor.cgns", "connectivity 1 of zone 'Zone'", "Elsewhere"});
+    z = cgns_tet_zone();
+    z.y[2] = std::nan("");
+    write_test_cgns(dir / "nan.cgns", 3, {z});
+    expect_cgns_error<ParseError>(dir / "nan.cgns", {"nan.cgns", "a finite CoordinateY of vertex 3 of zone 'Zone'", "found 'nan'"});
     expect_cgns_error<IoError>(dir / "missing.cgns", {"missing.cgns", "No such file"});
     write_text(dir / "text.cgns", "NDIME= 2\n");
     expect_cgns_error<IoError>(dir / "text.cgns", {"text.cgns", "cannot open as a CGNS file"});

@@ -3,6 +3,7 @@
 #include <cgnslib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <string>
@@ -108,6 +109,11 @@ private:
                           std::string(axis_names[a]) + " of " + zone_text(zone) + " (" + std::to_string(zone.vertices) +
                               " values)");
             for (std::size_t i = 0; i < column.size(); ++i) {
+                if (!std::isfinite(column[i]))
+                    throw ParseError(f_.name(), 0,
+                                     "a finite " + std::string(axis_names[a]) + " of vertex " + std::to_string(i + 1) +
+                                         " of " + zone_text(zone),
+                                     std::to_string(column[i]));
                 if (a < dim_) {
                     zone.points[i * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(a)] = column[i];
                 } else if (column[i] != 0.0) {
