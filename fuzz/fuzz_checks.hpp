@@ -40,6 +40,12 @@ inline constexpr const char* openfoam_file_separator = "\n//dgwarp-next-file\n";
 /// writer refuses it with a dgwarp::Error).
 void check_openfoam(std::span<const std::uint8_t> data);
 
+/// read_cgns on the bytes written to a file (libcgns reads files only); a
+/// mesh read must survive write_cgns then read_cgns unchanged (unless the
+/// writer refuses it with a dgwarp::Error), and write_cgns_points of its own
+/// points into a copy of the input must read back as the same mesh.
+void check_cgns(std::span<const std::uint8_t> data);
+
 /// parse_motion_file with an empty base folder, so the files a motion names
 /// are never found. Inputs with a '/' in a JSON string are skipped: a path
 /// such as /dev/zero would make the fuzzer read the machine's files.

@@ -253,6 +253,16 @@ def main():
             subprocess.run([cli, "convert", "-q", tmp / "mixed_3d.su2", tmp / fmt, "--foam-format", fmt], check=True)
             write("openfoam", f"mixed_3d_{fmt}.foam", foam_seed(tmp / fmt / "constant" / "polyMesh"))
 
+    # CGNS: the small files the CGNS project's converters made (tests/data/cgns),
+    # HDF5 and ADF, and a 2D one of dgwarp's writer.
+    for name in ("tet.cgns", "tet-adf.cgns", "mixed-adf.cgns"):
+        write("cgns", name, (ROOT / "tests" / "data" / "cgns" / name).read_bytes())
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = pathlib.Path(tmp)
+        (tmp / "base_2d.su2").write_text(BASE_2D)
+        subprocess.run([cli, "convert", "-q", tmp / "base_2d.su2", tmp / "base_2d.cgns"], check=True)
+        write("cgns", "base_2d.cgns", (tmp / "base_2d.cgns").read_bytes())
+
     total = sum(p.stat().st_size for p in CORPUS.rglob("*") if p.is_file())
     print(f"wrote {sum(1 for p in CORPUS.rglob('*') if p.is_file())} seeds, {total} bytes, in {CORPUS}")
 

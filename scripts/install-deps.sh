@@ -12,6 +12,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libnanoflann-dev libcli11-dev nlohmann-json3-dev
   libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
+  libcgns-dev cgns-convert
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
   libgtest-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin

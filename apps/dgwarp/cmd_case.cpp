@@ -69,7 +69,7 @@ void add_case_command(CLI::App& app) {
     std::string names;
     for (const auto& n : case_names()) names += (names.empty() ? "" : ", ") + n;
     cmd->add_option("name", args->name, "The case: " + names)->required()->check(one_of(case_names(), "a case"));
-    cmd->add_option("-o,--output", args->output, "Output mesh (.su2, .msh, .vtu, or an OpenFOAM case folder for a 3D case)");
+    cmd->add_option("-o,--output", args->output, "Output mesh (.su2, .msh, .vtu, .cgns, or an OpenFOAM case folder for a 3D case)");
     cmd->add_option("--motions", args->motions,
                     "Folder to write the case's motions to, one motion file per motion (<motion>.json, with its node "
                     "file for per-node motions; docs/MOTION.md): 'dgwarp deform' with one of them does what "

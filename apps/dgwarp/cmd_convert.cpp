@@ -49,10 +49,10 @@ void run_convert(const ConvertArgs& a) {
 void add_convert_command(CLI::App& app) {
     auto args = std::make_shared<ConvertArgs>();
     CLI::App* cmd = app.add_subcommand("convert", "Convert a mesh between formats (chosen by file extension)");
-    cmd->add_option("input", args->input, "Input mesh (.su2, .msh, .vtu, or an OpenFOAM case or polyMesh folder)")
+    cmd->add_option("input", args->input, "Input mesh (.su2, .msh, .vtu, .cgns, or an OpenFOAM case or polyMesh folder)")
         ->required();
     cmd->add_option("output", args->output,
-                    "Output mesh (.su2, .msh, .vtu, or an OpenFOAM case folder: a folder, a name ending in '/' or "
+                    "Output mesh (.su2, .msh, .vtu, .cgns, or an OpenFOAM case folder: a folder, a name ending in '/' or "
                     "without extension)")
         ->required();
     cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 input (1-based)")->check(positive_whole_number());
@@ -67,13 +67,15 @@ void add_convert_command(CLI::App& app) {
         "never left half-written. The output may not be the input, nor a read-only file.\n"
         "An OpenFOAM output gets a whole polyMesh in CASE/constant/polyMesh (points, faces, owner,\n"
         "neighbour, boundary; one patch per marker, defaultFaces for boundary faces in none);\n"
-        "OpenFOAM meshes are 3D (docs/OPENFOAM.md).\n\n"
+        "OpenFOAM meshes are 3D (docs/OPENFOAM.md). A CGNS output of a CGNS input is a copy of the\n"
+        "input with the mesh's coordinates; of another format, a whole file (docs/CGNS.md).\n\n"
         "Examples:\n"
         "  dgwarp convert mesh.su2 mesh.msh\n"
         "  dgwarp convert mesh.msh mesh.su2\n"
         "  dgwarp convert mesh.su2 mesh.msh --gmsh-version 22\n"
         "  dgwarp convert multizone.su2 zone2.vtu --zone 2\n"
         "  dgwarp convert cavity/ cavity.su2          (an OpenFOAM case)\n"
+        "  dgwarp convert wing.cgns wing.su2\n"
         "  dgwarp convert wing.su2 wing-case/ --foam-format binary");
     cmd->callback([args] { run_convert(*args); });
 }

@@ -507,7 +507,8 @@ void add_deform_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("deform", "Deform a mesh to follow the motion of its boundary markers");
     add_setup_options(cmd, args->setup);
     cmd->add_option("-o,--output", args->output,
-                    "Output mesh (.su2, .msh, .vtu; VTU adds displacement and quality); a time series writes "
+                    "Output mesh (.su2, .msh, .vtu, .cgns; VTU adds displacement and quality; a CGNS output of a "
+                    "CGNS input is a copy of it with new coordinates); a time series writes "
                     "one file per frame, numbered before the extension; --method all one per method. An "
                     "OpenFOAM case folder (a folder, a name ending in '/'): the moved points go to "
                     "CASE/<time>/polyMesh/points (--foam-time)")

@@ -60,7 +60,7 @@ void run_info(const InfoArgs& a) {
 void add_info_command(CLI::App& app) {
     auto args = std::make_shared<InfoArgs>();
     CLI::App* cmd = app.add_subcommand("info", "Show what a mesh holds: counts, markers, bounding box, quality");
-    cmd->add_option("mesh", args->mesh, "Mesh file (.su2, .msh, .vtu) or OpenFOAM case folder")->required();
+    cmd->add_option("mesh", args->mesh, "Mesh file (.su2, .msh, .vtu, .cgns) or OpenFOAM case folder")->required();
     cmd->add_option("--zone", args->zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (the exit code says whether the mesh reads)");

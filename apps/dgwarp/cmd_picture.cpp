@@ -73,7 +73,7 @@ void run_picture(const PictureArgs& a) {
 void add_picture_command(CLI::App& app) {
     auto args = std::make_shared<PictureArgs>();
     CLI::App* cmd = app.add_subcommand("picture", "Draw a 2D mesh as a PNG picture, cells coloured by quality");
-    cmd->add_option("mesh", args->mesh, "2D mesh file (.su2, .msh, .vtu)")->required();
+    cmd->add_option("mesh", args->mesh, "2D mesh file (.su2, .msh, .vtu, .cgns)")->required();
     cmd->add_option("-o,--output", args->output, "PNG file to write (NAME.png)")->required();
     cmd->add_option("--reference", args->reference, "The undeformed mesh: orientation (and --ratio) from it");
     cmd->add_flag("--ratio", args->ratio, "Colour by the per-cell quality ratio to --reference");

@@ -75,7 +75,7 @@ void run_quality(const QualityArgs& a) {
 void add_quality_command(CLI::App& app) {
     auto args = std::make_shared<QualityArgs>();
     CLI::App* cmd = app.add_subcommand("quality", "Print the shape quality of a mesh's cells (Knupp's metric)");
-    cmd->add_option("mesh", args->mesh, "Mesh file (.su2, .msh, .vtu) or OpenFOAM case folder")->required();
+    cmd->add_option("mesh", args->mesh, "Mesh file (.su2, .msh, .vtu, .cgns) or OpenFOAM case folder")->required();
     cmd->add_option("--reference", args->reference,
                     "The undeformed mesh: judge orientation against it and report the per-cell ratio "
                     "deformed/original (what matters on boundary-layer meshes)");

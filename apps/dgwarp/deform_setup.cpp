@@ -71,7 +71,7 @@ std::int64_t moving_count(const BoundarySet& b) {
 }  // namespace
 
 void add_input_options(CLI::App* cmd, SetupArgs& a) {
-    cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh, .vtu) or OpenFOAM case folder")->required();
+    cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh, .vtu, .cgns) or OpenFOAM case folder")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
     cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
 }

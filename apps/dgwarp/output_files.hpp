@@ -17,7 +17,7 @@ namespace dgwarp::cli {
 void require_extension(const std::string& flag, const std::filesystem::path& output,
                        const std::vector<std::string>& extensions, const std::string& what);
 
-/// require_extension for a mesh output: .su2, .msh or .vtu (writable_extensions()),
+/// require_extension for a mesh output: .su2, .msh, .vtu or .cgns (writable_extensions()),
 /// or an OpenFOAM case folder (writes_openfoam: a folder, a name ending in '/'
 /// or without extension).
 void require_mesh_extension(const std::string& flag, const std::filesystem::path& output);

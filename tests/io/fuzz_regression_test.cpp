@@ -78,6 +78,13 @@ TEST(FuzzRegression, OpenFoam) {
     EXPECT_EQ(replay(seeds("openfoam"), fuzz::check_openfoam), 0u);
 }
 
+TEST(FuzzRegression, Cgns) {
+    // Every hand-made hostile input (a structured zone, truncated HDF5 and ADF files) fails cleanly; every seed is read.
+    const std::size_t hostile = files_in(regressions("cgns")).size();
+    EXPECT_EQ(replay(regressions("cgns"), fuzz::check_cgns), hostile);
+    EXPECT_EQ(replay(seeds("cgns"), fuzz::check_cgns), 0u);
+}
+
 TEST(FuzzRegression, Motion) {
     replay(regressions("motion"), fuzz::check_motion);
     // Seeds that name a CSV or SU2 file fail with an IoError: the fuzz target's

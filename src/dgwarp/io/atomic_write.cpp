@@ -89,19 +89,24 @@ void check_folder_writable(const std::filesystem::path& folder) {
 
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
+    write_file_atomically_at(path, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw IoError(path.string(), std::string("cannot open the temporary file ") + tmp.string() +
+                                                   ": " + std::strerror(errno));
+        write(out);
+        out.flush();
+        if (!out) throw IoError(path.string(), "write failed (disk full?)");
+    });
+}
+
+void write_file_atomically_at(const std::filesystem::path& path,
+                              const std::function<void(const std::filesystem::path& tmp)>& write) {
     if (path.empty()) throw IoError("", "empty output file name");
     check_replaceable(path);
     const std::filesystem::path tmp = temporary_path_for(path);
     create_new_file(tmp, path);
     try {
-        {
-            std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-            if (!out) throw IoError(path.string(), std::string("cannot open the temporary file ") + tmp.string() +
-                                                       ": " + std::strerror(errno));
-            write(out);
-            out.flush();
-            if (!out) throw IoError(path.string(), "write failed (disk full?)");
-        }
+        write(tmp);
         sync_file(tmp);
         struct stat old {};
         if (::stat(path.c_str(), &old) == 0) ::chmod(tmp.c_str(), old.st_mode & 07777);  // keep its permissions

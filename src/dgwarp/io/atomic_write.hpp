@@ -20,6 +20,13 @@ namespace dgwarp {
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
 
+/// The same for a writer that needs a file name rather than a stream (a
+/// library that opens the file itself, such as libcgns): `write(tmp)` fills
+/// the temporary file `tmp` (which exists, empty, and which it may replace),
+/// then it is synced and renamed to `path`, with the same guarantees.
+void write_file_atomically_at(const std::filesystem::path& path,
+                              const std::function<void(const std::filesystem::path& tmp)>& write);
+
 /// Throws IoError when `path` exists and write_file_atomically would not
 /// replace it: a folder, not a regular file (a device, a pipe), or read-only
 /// (no write permission for anyone, or none for this user). A read-only file

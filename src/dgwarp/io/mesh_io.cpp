@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/vtu.hpp"
@@ -26,8 +27,8 @@ std::string lower_case_extension(const std::filesystem::path& path) {
     return ext;
 }
 
-std::vector<std::string> readable_extensions() { return {".su2", ".msh", ".vtu"}; }
-std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu"}; }
+std::vector<std::string> readable_extensions() { return {".su2", ".msh", ".vtu", ".cgns"}; }
+std::vector<std::string> writable_extensions() { return {".su2", ".msh", ".vtu", ".cgns"}; }
 
 namespace {
 bool has_mesh_extension(const std::filesystem::path& path) {
@@ -45,6 +46,11 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
     if (ext == ".su2") return read_su2(path, options.zone, progress);
     if (ext == ".msh") return read_gmsh(path, progress);
     if (ext == ".vtu") return read_vtu(path, progress);
+    if (ext == ".cgns") {
+        Mesh mesh = read_cgns(path);
+        if (progress) progress(1.0);
+        return mesh;
+    }
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
                       joined(readable_extensions()) + " and OpenFOAM case folders");
 }
@@ -56,6 +62,13 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
         OpenFoamSource source;
         Mesh mesh = read_openfoam(path, progress, &source);
         extras.openfoam = std::move(source);
+        return mesh;
+    }
+    if (lower_case_extension(path) == ".cgns") {
+        CgnsSource source;
+        Mesh mesh = read_cgns(path, &source);
+        if (progress) progress(1.0);
+        extras.cgns = std::move(source);
         return mesh;
     }
     if (lower_case_extension(path) != ".su2") return read_mesh(path, options, progress);
@@ -93,6 +106,12 @@ void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshF
     if (ext == ".su2") return write_su2(path, mesh);
     if (ext == ".msh") return write_gmsh(path, mesh, options.gmsh_version);
     if (ext == ".vtu") return write_vtu(path, mesh, fields);
+    if (ext == ".cgns") {
+        const CgnsSource* source = options.extras && options.extras->cgns ? &*options.extras->cgns : nullptr;
+        if (source && source->num_points == mesh.num_points() && source->dim == mesh.dim)
+            return write_cgns_points(path, *source, mesh.points);
+        return write_cgns(path, mesh);
+    }
     throw FormatError(path.string() + ": cannot write files of type '" + ext + "'; dgwarp writes " +
                       joined(writable_extensions()) + " and OpenFOAM case folders (a name ending in '/')");
 }

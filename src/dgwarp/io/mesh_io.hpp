@@ -4,6 +4,8 @@
 //   .msh  Gmsh ASCII 4.1 or 2.2 (read both; write 4.1 by default)
 //   .vtu  VTK XML unstructured grid (read: ascii, binary, appended, zlib; write:
 //         binary, with markers and point and cell data; see vtu.hpp)
+//   .cgns CGNS (HDF5 or ADF; read: unstructured zones of base 1, element
+//         sections, BCs and families as markers; write: HDF5; see cgns.hpp)
 //   a folder: an OpenFOAM case or polyMesh folder (read and write, ascii and
 //         binary; see openfoam.hpp). A path without one of the extensions
 //         above is one when it is a folder (input), or when it is a folder,
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "dgwarp/core/progress.hpp"
+#include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/mesh/mesh.hpp"
@@ -45,6 +48,9 @@ struct MeshExtras {
     std::optional<Su2Surroundings> su2;
     /// An OpenFOAM mesh's folder, points format and patch dictionaries (read_openfoam).
     std::optional<OpenFoamSource> openfoam;
+    /// A CGNS file's path and zones (read_cgns): a .cgns output of a mesh with
+    /// its points is a copy of that file with new coordinates (write_cgns_points).
+    std::optional<CgnsSource> cgns;
 };
 
 struct WriteOptions {
@@ -53,8 +59,9 @@ struct WriteOptions {
     /// (extras), else ascii.
     std::optional<foam::Format> foam_format;
     /// The input's extras: an SU2 output then keeps them around the mesh
-    /// (write_su2 with surroundings); other formats cannot hold them
-    /// (dropped_extras says what is lost).
+    /// (write_su2 with surroundings), a CGNS output of a CGNS input is a copy
+    /// of the input with the mesh's coordinates (write_cgns_points); other
+    /// formats cannot hold them (dropped_extras says what is lost).
     const MeshExtras* extras = nullptr;
 };
 

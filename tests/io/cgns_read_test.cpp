@@ -1,0 +1,289 @@
+// Reading CGNS files: those the CGNS project's converters wrote (tests/data/cgns),
+// and the cases they do not make (several zones, vertex BCs, families, MIXED
+// sections, structured zones, bad content) written here with libcgns.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/cgns.hpp"
+#include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+#include "support/cgns_test_writer.hpp"
+
+using namespace dgwarp;
+using namespace dgwarp::test;
+
+namespace {
+
+/// Every element of `list` as (type, nodes), sorted: the elements regardless of their order.
+std::vector<std::pair<CellType, std::vector<NodeId>>> cgns_sorted_elements(const ElementList& list) {
+    std::vector<std::pair<CellType, std::vector<NodeId>>> all;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const auto n = list.nodes_of(i);
+        all.push_back({list.types[i], {n.begin(), n.end()}});
+    }
+    std::sort(all.begin(), all.end());
+    return all;
+}
+
+/// The Gmsh mesh the committed mixed.cgns was made from (sources/README).
+Mesh cgns_source_mixed() { return read_gmsh(cgns_data("sources/mixed.msh")); }
+
+/// A zone holding the cells `cells` of `mesh` (3D), its vertices the nodes
+/// they use in increasing order; `vertex_of` gets the zone vertex (1-based) of each mesh node used.
+TestZone cgns_zone_of(const Mesh& mesh, const std::vector<std::size_t>& cells, const std::string& name,
+                      std::map<NodeId, cgns_size>& vertex_of) {
+    std::set<NodeId> used;
+    for (std::size_t c : cells)
+        for (NodeId v : mesh.cells.nodes_of(c)) used.insert(v);
+    TestZone z;
+    z.name = name;
+    for (NodeId v : used) {
+        vertex_of[v] = static_cast<cgns_size>(z.x.size()) + 1;
+        z.x.push_back(mesh.points[3 * static_cast<std::size_t>(v)]);
+        z.y.push_back(mesh.points[3 * static_cast<std::size_t>(v) + 1]);
+        z.z.push_back(mesh.points[3 * static_cast<std::size_t>(v) + 2]);
+    }
+    TestSection s{"Cells", cgns_code::MIXED, static_cast<cgns_size>(cells.size()), {}};
+    const int prism[] = {0, 2, 1, 3, 5, 4};
+    for (std::size_t c : cells) {
+        const CellType t = mesh.cells.types[c];
+        const auto nodes = mesh.cells.nodes_of(c);
+        s.connectivity.push_back(t == CellType::tetrahedron ? cgns_code::TETRA_4
+                                 : t == CellType::pyramid   ? cgns_code::PYRA_5
+                                 : t == CellType::prism     ? cgns_code::PENTA_6
+                                                            : cgns_code::HEXA_8);
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+            s.connectivity.push_back(vertex_of[nodes[t == CellType::prism ? static_cast<std::size_t>(prism[i]) : i]]);
+    }
+    z.sections.push_back(s);
+    return z;
+}
+
+/// The corner coordinates of each cell, in cell order: the cells' geometry whatever the point numbering.
+std::vector<std::vector<double>> cgns_cell_corners(const Mesh& mesh) {
+    std::vector<std::vector<double>> corners;
+    for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+        std::vector<double> x;
+        for (NodeId v : mesh.cells.nodes_of(c))
+            for (int a = 0; a < mesh.dim; ++a) x.push_back(mesh.points[static_cast<std::size_t>(v * mesh.dim + a)]);
+        corners.push_back(x);
+    }
+    return corners;
+}
+
+/// Reading `file` throws E whose message contains every one of `parts`.
+template <class E>
+void expect_cgns_error(const std::filesystem::path& file, const std::vector<std::string>& parts) {
+    try {
+        read_cgns(file);
+        ADD_FAILURE() << "no error reading " << file;
+    } catch (const E& e) {
+        for (const std::string& p : parts) EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "another error: " << e.what();
+    }
+}
+
+/// One-cell 3D zone: a tetrahedron, its base triangle a face section "base".
+TestZone cgns_tet_zone() {
+    TestZone z;
+    z.x = {0, 1, 0, 0};
+    z.y = {0, 0, 1, 0};
+    z.z = {0, 0, 0, 1};
+    z.sections = {{"Cells", cgns_code::TETRA_4, 1, {1, 2, 3, 4}}, {"base", cgns_code::TRI_3, 1, {1, 3, 2}}};
+    return z;
+}
+
+}  // namespace
+
+// aflr3_to_cgns's file holds the Gmsh mesh it was made from (through
+// sources/msh_to_ugrid.py): the same points bit for bit, the same cells in VTK
+// order (positive volumes), the boundary faces of each surface id as a marker.
+TEST(CgnsRead, Aflr3ToCgnsFileHoldsTheMeshItWasMadeFrom) {
+    const Mesh source = cgns_source_mixed();
+    CgnsSource info;
+    const Mesh mesh = read_cgns(cgns_data("mixed.cgns"), &info);
+    EXPECT_EQ(mesh.dim, 3);
+    EXPECT_EQ(mesh.points, source.points);
+    EXPECT_EQ(cgns_sorted_elements(mesh.cells), cgns_sorted_elements(source.cells));
+    const std::vector<std::int8_t> o = cell_orientations(mesh);
+    EXPECT_EQ(std::count(o.begin(), o.end(), 1), static_cast<std::ptrdiff_t>(mesh.cells.size()));
+    // aflr3_to_cgns names its BCs "UserDefined <n>", one per section of
+    // triangles or quadrilaterals of a surface id (sources/README.md).
+    ASSERT_EQ(mesh.markers.size(), 5u);
+    std::size_t elements = 0;
+    for (const Marker& m : mesh.markers) {
+        EXPECT_EQ(m.name.rfind("UserDefined ", 0), 0u) << m.name;
+        elements += m.elements.size();
+    }
+    std::size_t source_elements = 0;
+    for (const Marker& m : source.markers) source_elements += m.elements.size();
+    EXPECT_EQ(elements, source_elements);
+    ASSERT_EQ(info.zones.size(), 1u);
+    EXPECT_EQ(info.zones[0].name, "Zone");
+    EXPECT_EQ(info.num_points, mesh.num_points());
+    EXPECT_EQ(info.zones[0].points.size(), mesh.num_points());
+    EXPECT_EQ(info.zones[0].points[41], 41);
+}
+
+TEST(CgnsRead, TheAdfCopyReadsTheSame) {
+    EXPECT_TRUE(read_cgns(cgns_data("mixed-adf.cgns")) == read_cgns(cgns_data("mixed.cgns")));
+    EXPECT_TRUE(read_cgns(cgns_data("tet-adf.cgns")) == read_cgns(cgns_data("tet.cgns")));
+}
+
+TEST(CgnsRead, AStructuredZoneIsRefusedByName) {
+    expect_cgns_error<FormatError>(cgns_data("cube-structured.cgns"),
+                                   {"cube-structured.cgns", "zone 'Zone1' is structured", "unstructured zones only"});
+}
+
+// Two zones joined by vertex 1-to-1 connectivity share the points of their
+// interface: the mesh is the original, points renumbered; without the
+// connectivity their points stay apart.
+TEST(CgnsRead, ZonesShareThePointsTheirOneToOneConnectivityJoins) {
+    const Mesh source = cgns_source_mixed();
+    std::vector<std::size_t> first, second;
+    for (std::size_t c = 0; c < source.cells.size(); ++c) (c % 3 == 0 ? first : second).push_back(c);
+    std::map<NodeId, cgns_size> in_a, in_b;
+    TestZone a = cgns_zone_of(source, first, "A", in_a), b = cgns_zone_of(source, second, "B", in_b);
+    TestJoin ab{"A", {}, {}}, ba{"B", {}, {}};
+    for (const auto& [v, vb] : in_b)
+        if (in_a.count(v)) {
+            ab.points.push_back(vb);
+            ab.donor_points.push_back(in_a[v]);
+            ba.points.push_back(in_a[v]);
+            ba.donor_points.push_back(vb);
+        }
+    ASSERT_GT(ab.points.size(), 10u);
+    const auto dir = scratch_dir();
+    write_test_cgns(dir / "apart.cgns", 3, {a, b});
+    b.joins = {ab};
+    a.joins = {ba};
+    write_test_cgns(dir / "joined.cgns", 3, {a, b});
+
+    Mesh expected = source;
+    expected.cells = {};
+    for (std::size_t c : first) expected.cells.push_back(source.cells.types[c], source.cells.nodes_of(c));
+    for (std::size_t c : second) expected.cells.push_back(source.cells.types[c], source.cells.nodes_of(c));
+    CgnsSource info;
+    const Mesh joined = read_cgns(dir / "joined.cgns", &info);
+    EXPECT_EQ(joined.num_points(), source.num_points());
+    EXPECT_EQ(cgns_cell_corners(joined), cgns_cell_corners(expected));
+    ASSERT_EQ(info.zones.size(), 2u);
+    EXPECT_EQ(info.zones[1].name, "B");
+    for (const auto& [v, vb] : in_b)  // zone B's vertex is the point of the same place
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(joined.points[3 * static_cast<std::size_t>(info.zones[1].points[static_cast<std::size_t>(vb - 1)]) + static_cast<std::size_t>(k)],
+                      source.points[3 * static_cast<std::size_t>(v) + static_cast<std::size_t>(k)]);
+
+    const Mesh apart = read_cgns(dir / "apart.cgns");
+    EXPECT_EQ(apart.num_points(), in_a.size() + in_b.size());
+    EXPECT_EQ(cgns_cell_corners(apart), cgns_cell_corners(expected));
+}
+
+// BCs on vertices take the faces whose nodes are all in them; BCs of one
+// family are one marker of the family's name; a face section no BC refers to
+// is a marker of its name; MIXED sections hold cells and faces.
+TEST(CgnsRead, VertexBcsFamiliesAndUnreferencedSectionsAreMarkers) {
+    // 2D: a unit square of two triangles and a quadrilateral to its right, in one MIXED section.
+    TestZone z;
+    z.x = {0, 1, 1, 0, 2, 2};
+    z.y = {0, 0, 1, 1, 0, 1};
+    z.sections = {{"All", cgns_code::MIXED, 7,
+                   {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::QUAD_4, 2, 5, 6, 3,
+                    cgns_code::BAR_2, 1, 2, cgns_code::BAR_2, 2, 5, cgns_code::BAR_2, 5, 6, cgns_code::BAR_2, 4, 1}},
+                  {"top", cgns_code::BAR_2, 2, {6, 3, 3, 4}}};
+    z.cells = 3;
+    z.bcs = {{"lower", "wall", cgns_code::Vertex, false, {1, 2, 5}},
+             {"right", "", cgns_code::EdgeCenter, true, {6, 6}},
+             {"left", "wall", cgns_code::EdgeCenter, false, {7}}};
+    const auto dir = scratch_dir();
+    write_test_cgns(dir / "square.cgns", 2, {z});
+    const Mesh mesh = read_cgns(dir / "square.cgns");
+    EXPECT_EQ(mesh.dim, 2);
+    EXPECT_EQ(mesh.points, (std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 2, 1}));
+    ASSERT_EQ(mesh.cells.size(), 3u);
+    EXPECT_EQ(mesh.cells.types[2], CellType::quadrilateral);
+    ASSERT_EQ(mesh.markers.size(), 3u);
+    EXPECT_EQ(mesh.markers[0].name, "wall");  // lower (vertices 1, 2, 5: two bars) and left
+    EXPECT_EQ(mesh.markers[0].elements.nodes, (std::vector<NodeId>{0, 1, 1, 4, 3, 0}));
+    EXPECT_EQ(mesh.markers[1].name, "right");
+    EXPECT_EQ(mesh.markers[1].elements.nodes, (std::vector<NodeId>{4, 5}));
+    EXPECT_EQ(mesh.markers[2].name, "top");  // no BC refers to it
+    EXPECT_EQ(mesh.markers[2].elements.nodes, (std::vector<NodeId>{5, 2, 2, 3}));
+
+    // 3D without face elements: a vertex BC takes the cells' boundary faces, pointing out.
+    TestZone t = cgns_tet_zone();
+    t.sections.pop_back();
+    t.bcs = {{"slant", "", cgns_code::Vertex, false, {2, 3, 4}}, {"all", "", cgns_code::Vertex, true, {1, 4}}};
+    write_test_cgns(dir / "tet.cgns", 3, {t});
+    const Mesh tet = read_cgns(dir / "tet.cgns");
+    ASSERT_EQ(tet.markers.size(), 2u);
+    EXPECT_EQ(tet.markers[0].elements.nodes, (std::vector<NodeId>{1, 2, 3}));
+    EXPECT_EQ(tet.markers[1].elements.size(), 4u);
+}
+
+TEST(CgnsRead, BadContentIsNamedByFileZoneSectionAndBc) {
+    const auto dir = scratch_dir();
+    TestZone z = cgns_tet_zone();
+    z.sections[0].connectivity = {1, 2, 3, 5};
+    write_test_cgns(dir / "node.cgns", 3, {z});
+    expect_cgns_error<ParseError>(dir / "node.cgns", {"node.cgns", "node numbers from 1 to 4 in element 1 of section "
+                                                                   "'Cells' of zone 'Zone'", "found '5'"});
+    z = cgns_tet_zone();
+    z.bcs = {{"wall", "", cgns_code::FaceCenter, false, {1}}};
+    write_test_cgns(dir / "bc.cgns", 3, {z});
+    expect_cgns_error<ParseError>(dir / "bc.cgns", {"bc.cgns", "face elements (of dimension 2) of zone 'Zone' in BC 'wall'",
+                                                    "found '1'"});
+    z = cgns_tet_zone();
+    z.sections[1] = {"curved", cgns_code::TRI_6, 1, {1, 3, 2, 1, 2, 3}};
+    write_test_cgns(dir / "order.cgns", 3, {z});
+    expect_cgns_error<FormatError>(dir / "order.cgns", {"order.cgns", "section 'curved' of zone 'Zone' holds TRI_6"});
+    z = cgns_tet_zone();
+    z.joins = {{"Elsewhere", {1}, {1}}};
+    write_test_cgns(dir / "donor.cgns", 3, {z});
+    expect_cgns_error<ParseError>(dir / "donor.cgns", {"donor.cgns", "connectivity 1 of zone 'Zone'", "Elsewhere"});
+    z = cgns_tet_zone();
+    z.y[2] = std::nan("");
+    write_test_cgns(dir / "nan.cgns", 3, {z});
+    expect_cgns_error<ParseError>(dir / "nan.cgns", {"nan.cgns", "a finite CoordinateY of vertex 3 of zone 'Zone'", "found 'nan'"});
+    expect_cgns_error<IoError>(dir / "missing.cgns", {"missing.cgns", "No such file"});
+    write_text(dir / "text.cgns", "NDIME= 2\n");
+    expect_cgns_error<IoError>(dir / "text.cgns", {"text.cgns", "cannot open as a CGNS file"});
+}
+
+// The files written here are valid CGNS (when the CGNS tools are installed:
+// scripts/install-deps.sh installs cgns-convert).
+TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {
+    if (run_command("command -v cgnscheck").exit_code != 0) GTEST_SKIP() << "cgnscheck not installed (Debian package cgns-convert)";
+    const auto dir = scratch_dir();
+    TestZone z = cgns_tet_zone();
+    z.bcs = {{"base", "wall", cgns_code::FaceCenter, false, {2}}, {"tip", "", cgns_code::Vertex, false, {4}}};
+    write_test_cgns(dir / "checked.cgns", 3, {z});
+    // Two zones with 1-to-1 connectivity, MIXED sections of cells and faces in 2D.
+    TestZone a = cgns_tet_zone(), b = cgns_tet_zone();
+    a.name = "A";
+    b.name = "B";
+    b.z = {0, 0, 0, -1};
+    b.sections[0].connectivity = {1, 3, 2, 4};
+    b.joins = {{"A", {1, 2, 3}, {1, 2, 3}}};
+    write_test_cgns(dir / "zones.cgns", 3, {a, b});
+    TestZone square;
+    square.x = {0, 1, 1, 0};
+    square.y = {0, 0, 1, 1};
+    square.sections = {{"All", cgns_code::MIXED, 3,
+                        {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::BAR_2, 1, 2}}};
+    square.cells = 2;
+    square.bcs = {{"lower", "", cgns_code::EdgeCenter, false, {3}}};
+    write_test_cgns(dir / "square.cgns", 2, {square});
+    for (const char* name : {"checked.cgns", "zones.cgns", "square.cgns"}) {
+        const CommandResult r = run_command("cgnscheck " + quoted(dir / name));
+        EXPECT_EQ(r.exit_code, 0) << name << r.out << r.err;
+        EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << name << "\n" << r.out;
+        EXPECT_NO_THROW(read_cgns(dir / name)) << name;
+    }
+}
