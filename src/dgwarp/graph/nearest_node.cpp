@@ -33,14 +33,7 @@ struct NearestNode::Tree {
     NodeCloud cloud;
     NodeTree tree;
     Tree(int dim, std::span<const double> points, std::span<const NodeId> nodes)
-        : cloud{coordinates(dim, points, nodes), dim}, tree(dim, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
-
-    static std::vector<double> coordinates(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
-        std::vector<double> xyz(nodes.size() * static_cast<std::size_t>(dim));
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-            for (int d = 0; d < dim; ++d) xyz[i * dim + d] = points[static_cast<std::size_t>(nodes[i]) * dim + d];
-        return xyz;
-    }
+        : cloud{gather_points(dim, points, nodes), dim}, tree(dim, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
 };
 
 NearestNode::NearestNode(int dim, std::span<const double> points, std::span<const NodeId> nodes) {

@@ -43,6 +43,13 @@ std::array<std::int64_t, std::size(all_cell_types)> count_by_type(const ElementL
     return counts;
 }
 
+std::vector<double> gather_points(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
+    std::vector<double> out(nodes.size() * static_cast<std::size_t>(dim));
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        std::copy_n(points.data() + static_cast<std::size_t>(nodes[i]) * dim, dim, out.data() + i * dim);
+    return out;
+}
+
 BoundingBox bounding_box(const Mesh& mesh) {
     BoundingBox box;
     const std::size_t n = mesh.num_points(), dim = static_cast<std::size_t>(mesh.dim);

@@ -70,6 +70,11 @@ const Marker& find_marker(const Mesh& mesh, std::string_view name);
 /// How many elements of each type `list` holds, indexed by CellType.
 std::array<std::int64_t, std::size(all_cell_types)> count_by_type(const ElementList& list);
 
+/// The coordinates of `nodes` (ids into `points`, num_points × dim), in that
+/// order, in one compact nodes.size() × dim array: for loops that read the
+/// same few points again and again (they then stay in cache).
+std::vector<double> gather_points(int dim, std::span<const double> points, std::span<const NodeId> nodes);
+
 /// Axis-aligned bounding box of the points: min and max per coordinate
 /// (dim entries used); both empty-safe (zeros for a mesh without points).
 struct BoundingBox {

@@ -339,9 +339,7 @@ DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> po
     if (progress) progress(0.85);
 
     t0 = Clock::now();
-    std::vector<double> vertex_xyz(vertex_node.size() * static_cast<std::size_t>(dim));
-    for (std::size_t v = 0; v < vertex_node.size(); ++v)
-        for (int d = 0; d < dim; ++d) vertex_xyz[v * dim + d] = points[static_cast<std::size_t>(vertex_node[v]) * dim + d];
+    const std::vector<double> vertex_xyz = gather_points(dim, points, vertex_node);
     if (plan.num_vertices() > plan.num_boundary_vertices) {
         const auto edges = unknown_edges(dim, plan.simplices, plan.num_boundary_vertices);
         // Without a rigid zone (the 3D default) the distances would weigh

@@ -155,10 +155,7 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     // The boundary points by boundary index, in one small array (it stays in
     // cache), and each node's simplex row asked for ahead: in a spatially
     // random numbering the rows are far apart (as in deform, dg_idw_deform.cpp).
-    std::vector<double> boundary_points(boundary.nodes.size() * static_cast<std::size_t>(dim));
-    for (std::size_t b = 0; b < boundary.nodes.size(); ++b)
-        std::copy_n(points.data() + static_cast<std::size_t>(boundary.nodes[b]) * dim, dim,
-                    boundary_points.data() + b * dim);
+    const std::vector<double> boundary_points = gather_points(dim, points, boundary.nodes);
     constexpr std::int64_t row_ahead = 16;
     const auto num_volume = static_cast<std::int64_t>(volume.size());
     parallel_for(num_volume, [&](std::int64_t i) {

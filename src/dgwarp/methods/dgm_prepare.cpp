@@ -30,9 +30,7 @@ std::vector<double> barycentric_coordinates(int dim, std::span<const double> poi
     // The vertices' points in one small array (it stays in cache), and each
     // node's simplex row asked for ahead: in a spatially random numbering the
     // rows are far apart (as in DG-IDW's weights, dg_idw_prepare.cpp).
-    std::vector<double> vertex_points(vertex_node.size() * static_cast<std::size_t>(dim));
-    for (std::size_t v = 0; v < vertex_node.size(); ++v)
-        std::copy_n(points.data() + static_cast<std::size_t>(vertex_node[v]) * dim, dim, vertex_points.data() + v * dim);
+    const std::vector<double> vertex_points = gather_points(dim, points, vertex_node);
     constexpr std::int64_t row_ahead = 16;
     const auto n = static_cast<std::int64_t>(query_nodes.size());
     parallel_for(n, [&](std::int64_t i) {
