@@ -10,7 +10,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3 python3-jsonschema
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libeigen3-dev libnanoflann-dev libcli11-dev nlohmann-json3-dev
+  libeigen3-dev libmetis-dev libnanoflann-dev libcli11-dev nlohmann-json3-dev
   libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
   libcgns-dev cgns-convert
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib

@@ -1,4 +1,6 @@
 // prepare_dg_harmonic: coarse points, coarse graph, location, factorised Laplacian.
+#include <metis.h>
+
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -23,6 +25,35 @@ namespace dgwarp {
 
 namespace {
 
+// A fill-reducing ordering for SimplicialLDLT: METIS's nested dissection
+// (METIS_NodeND with its default, fixed seed: the same permutation on every
+// run and process), AMD when METIS declines (fewer than 3 unknowns, or an
+// error). Eigen's own MetisOrdering prints to stderr and leaves no
+// permutation on an error. `a`: the full symmetric pattern.
+struct MetisOrAmdOrdering {
+    template <class MatrixType>
+    void operator()(const MatrixType& a, Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& pinv) {
+        idx_t n = static_cast<idx_t>(a.cols());
+        std::vector<idx_t> start{0}, adjacent;
+        start.reserve(static_cast<std::size_t>(n) + 1);
+        adjacent.reserve(static_cast<std::size_t>(a.nonZeros()));
+        for (idx_t j = 0; j < n; ++j) {
+            for (typename MatrixType::InnerIterator it(a, j); it; ++it)
+                if (it.index() != j) adjacent.push_back(static_cast<idx_t>(it.index()));
+            start.push_back(static_cast<idx_t>(adjacent.size()));
+        }
+        std::vector<idx_t> perm(static_cast<std::size_t>(n)), iperm(static_cast<std::size_t>(n));
+        if (n < 3 || METIS_NodeND(&n, start.data(), adjacent.data(), nullptr, nullptr, perm.data(), iperm.data()) !=
+                         METIS_OK) {
+            Eigen::AMDOrdering<int>()(a, pinv);
+            return;
+        }
+        // As Eigen's MetisOrdering does: entry iperm[j] (j's new position) is j.
+        pinv.resize(n);
+        for (idx_t j = 0; j < n; ++j) pinv.indices()(iperm[j]) = static_cast<int>(j);
+    }
+};
+
 // The edges of the coarse graph that touch an unknown, as (u, v) with u < v.
 std::vector<std::pair<std::int32_t, std::int32_t>> unknown_edges(int dim, std::span<const std::int32_t> simplices,
                                                                  std::int32_t first_unknown) {
@@ -43,13 +74,15 @@ std::vector<std::pair<std::int32_t, std::int32_t>> unknown_edges(int dim, std::s
 
 // Assembles the Laplacians of the coarse graph with the two weights per edge
 // (edges as unknown_edges gives them) and factorises their unknown blocks:
-// one ordering and symbolic analysis, two numeric factorisations.
+// one ordering and symbolic analysis, two numeric factorisations. METIS's
+// nested dissection: on the 826k squeezed sphere's 9,877 unknowns the factor
+// has 1.11M non-zeros against AMD's 1.50M, and factorises in half the time.
 HarmonicFactors factorise(std::span<const std::pair<std::int32_t, std::int32_t>> edges,
                           std::span<const double> translation_weight, std::span<const double> rotation_weight,
                           std::int32_t first_unknown, std::int32_t num_unknowns) {
     const std::int32_t nb = first_unknown, n = num_unknowns;
     HarmonicFactors f;
-    using Ldlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>>;
+    using Ldlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, MetisOrAmdOrdering>;
     Ldlt ldlt;
     // B's entries grouped by unknown: the edges (to a boundary vertex) of each.
     std::vector<std::vector<std::size_t>> coupling(n);
