@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/coincident_points.hpp"
+#include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/graph/triangulate_detail.hpp"
 
 namespace dgwarp {
@@ -82,12 +84,22 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     const auto t1 = Clock::now();
     const bool spatial = options.order == LocateOrder::morton ||
                          (options.order == LocateOrder::automatic && !is_coherent_order(dim, points, query_nodes));
+    std::vector<std::uint32_t> morton;
+    std::span<const std::uint32_t> visit_order;  // empty: as given
+    if (spatial) {
+        if (options.morton.size() == query_nodes.size()) {
+            visit_order = options.morton;
+        } else {
+            morton = morton_order(dim, points, query_nodes);
+            visit_order = morton;
+        }
+    }
     const double order_seconds = seconds_since(t1);
     if (progress) progress(0.0);
     const ProgressFn locate_progress = progress_part(progress, graph_progress_share, 1.0);
     detail::TriangulationResult tri =
-        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, spatial, locate_progress)
-                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, spatial, locate_progress);
+        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, visit_order, locate_progress)
+                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, visit_order, locate_progress);
     out.graph.simplices = std::move(tri.simplices);
     out.location = std::move(tri.location);
     out.timings = tri.timings;

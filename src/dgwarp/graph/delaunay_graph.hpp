@@ -80,6 +80,11 @@ enum class LocateOrder {
 
 struct GraphOptions {
     LocateOrder order = LocateOrder::automatic;
+    /// morton_order(dim, points, query_nodes), when the caller has it already
+    /// (DG-harmonic's coarse-point selection visits the volume nodes in that
+    /// order too): used instead of sorting again when the order is Morton.
+    /// Ignored unless it has one entry per query node.
+    std::span<const std::uint32_t> morton = {};
 };
 
 /// Whether visiting `nodes` (ids into `points`, num_points × dim) in the

@@ -37,7 +37,6 @@
 
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/graph/triangulate_detail.hpp"
 
 namespace dgwarp::detail {
@@ -178,7 +177,8 @@ typename Dim::Handle canonical_simplex(const typename Dim::Delaunay& dt, const t
 
 template <class Dim>
 TriangulationResult triangulate_and_locate(std::span<const double> points, std::span<const NodeId> vertex_node,
-                                           std::span<const NodeId> query_nodes, bool spatial_order,
+                                           std::span<const NodeId> query_nodes,
+                                           std::span<const std::uint32_t> visit_order,
                                            const ProgressFn& locate_progress) {
     using Delaunay = typename Dim::Delaunay;
     using Point = typename Dim::Point;
@@ -202,13 +202,12 @@ TriangulationResult triangulate_and_locate(std::span<const double> points, std::
     result.timings.triangulate_seconds = seconds_since(t0);
 
     t0 = Clock::now();
-    std::vector<std::uint32_t> order;
-    if (spatial_order) {
-        order = morton_order(Dim::dim, points, query_nodes);
-    } else {
-        order.resize(query_nodes.size());
-        std::iota(order.begin(), order.end(), std::uint32_t{0});
+    std::vector<std::uint32_t> given;
+    if (visit_order.empty()) {
+        given.resize(query_nodes.size());
+        std::iota(given.begin(), given.end(), std::uint32_t{0});
     }
+    const std::span<const std::uint32_t> order = visit_order.empty() ? std::span<const std::uint32_t>(given) : visit_order;
     // The query points in visiting order: the walks then read them in sequence.
     std::vector<Point> query(order.size());
     parallel_for(static_cast<std::int64_t>(order.size()),

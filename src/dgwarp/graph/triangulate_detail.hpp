@@ -19,16 +19,20 @@ struct TriangulationResult {
 
 /// Delaunay triangulation of the points `vertex_node[v]` (graph vertex v; all
 /// distinct), then location of `query_nodes`. `points` is num_points × dim.
-/// `locate_progress` gets the fraction of the queries located, per block.
+/// `visit_order`: the order in which to locate query_nodes (indices into
+/// it, a permutation; empty: as given). `locate_progress` gets the fraction
+/// of the queries located, per block.
 /// Throws MeshError when the vertices do not span the plane / space.
 TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool spatial_order, const ProgressFn& locate_progress);
+                                              std::span<const std::uint32_t> visit_order,
+                                              const ProgressFn& locate_progress);
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              bool spatial_order, const ProgressFn& locate_progress);
+                                              std::span<const std::uint32_t> visit_order,
+                                              const ProgressFn& locate_progress);
 
 /// Queries are located in blocks of this many visits, each block walking from
 /// its own start, so blocks can run in parallel and the result does not

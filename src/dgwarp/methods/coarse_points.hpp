@@ -26,10 +26,14 @@ struct CoarseSpacing {
 /// others are thinned on nested grids: level l = floor(log2(s / s_min)),
 /// cells of size s_min 2^l, and each (level, cell) keeps the node nearest to
 /// the cell's centre (lowest id on ties). Deterministic, independent of the
-/// thread count.
+/// thread count. The volume nodes are visited in their given order when it is
+/// spatially coherent (is_coherent_order), else along a Morton curve: `morton`
+/// when it is morton_order(dim, points, volume_nodes) already (one entry per
+/// volume node), else sorted here. The order changes only the time taken.
 std::vector<NodeId> select_coarse_points(int dim, std::span<const double> points,
                                          std::span<const NodeId> boundary_nodes,
-                                         std::span<const NodeId> volume_nodes, const CoarseSpacing& spacing);
+                                         std::span<const NodeId> volume_nodes, const CoarseSpacing& spacing,
+                                         std::span<const std::uint32_t> morton = {});
 
 // select_coarse_points in three stages, for a mesh whose volume nodes are
 // spread over processes (dgwarp/mpi): each process computes its nodes' wants
@@ -44,7 +48,8 @@ struct CoarseWants {
     std::array<double, 3> lo;  // lower corner of the volume nodes' bounding box (infinity: no volume node)
 };
 CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<const NodeId> boundary_nodes,
-                         std::span<const NodeId> volume_nodes, const CoarseSpacing& spacing);
+                         std::span<const NodeId> volume_nodes, const CoarseSpacing& spacing,
+                         std::span<const std::uint32_t> morton = {});
 
 /// The best node of one cell of the nested grids.
 struct CoarseWinner {

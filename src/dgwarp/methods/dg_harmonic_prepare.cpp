@@ -12,6 +12,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
+#include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/graph/nearest_node.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/methods/coarse_points.hpp"
@@ -334,18 +335,22 @@ DgHarmonicPlan prepare_dg_harmonic(int dim, std::span<const double> points, cons
     std::vector<std::int32_t> node_simplex;
     const std::vector<NodeId> volume = split_volume_nodes(num_points, boundary, node_simplex);
     const auto t0 = Clock::now();
+    // The coarse selection and the location both visit the volume nodes along
+    // a Morton curve when their numbering is not spatially coherent: sorted once.
+    const std::vector<std::uint32_t> morton =
+        is_coherent_order(dim, points, volume) ? std::vector<std::uint32_t>{} : morton_order(dim, points, volume);
     const std::vector<NodeId> coarse =
-        select_coarse_points(dim, points, boundary.nodes, volume, {options.wall_spacing, options.growth});
+        select_coarse_points(dim, points, boundary.nodes, volume, {options.wall_spacing, options.growth}, morton);
     const double select_seconds = seconds_since(t0);
     if (progress) progress(0.1);
-    DgHarmonicPlan plan = prepare_dg_harmonic_on_coarse(dim, points, boundary, coarse, options, progress);
+    DgHarmonicPlan plan = prepare_dg_harmonic_on_coarse(dim, points, boundary, coarse, options, progress, morton);
     plan.stats.select_seconds = select_seconds;
     return plan;
 }
 
 DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> points, const BoundarySet& boundary,
                                              std::span<const NodeId> coarse, const DgHarmonicOptions& options,
-                                             const ProgressFn& progress) {
+                                             const ProgressFn& progress, std::span<const std::uint32_t> volume_morton) {
     const std::size_t num_points = check_points_and_boundary("DG-harmonic", dim, points, boundary);
     check_dg_harmonic_options(options);
 
@@ -363,7 +368,8 @@ DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> po
     // index, so the boundary vertices come first.
     std::vector<NodeId> graph_nodes(boundary.nodes);
     graph_nodes.insert(graph_nodes.end(), coarse.begin(), coarse.end());
-    LocatedGraph lg = build_located_graph(dim, points, graph_nodes, volume, {}, progress_part(progress, 0.1, 0.8));
+    LocatedGraph lg = build_located_graph(dim, points, graph_nodes, volume, {LocateOrder::automatic, volume_morton},
+                                          progress_part(progress, 0.1, 0.8));
     plan.stats.graph_seconds = lg.timings.triangulate_seconds;
     plan.stats.locate_seconds = lg.timings.locate_seconds;
     plan.stats.outside_count = lg.location.outside_count;
