@@ -60,6 +60,7 @@ struct PolyMeshPart {
     std::vector<Patch> patches;
     Format points_format = Format::ascii;
     std::int64_t num_faces = 0;
+    std::vector<NodeId> processor_nodes;  // the nodes of the processor patches' faces, sorted, each once
 };
 PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files, bool processor_patches);
 

@@ -398,8 +398,13 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
     mesh.dim = 3;
     mesh.cells = foam::cells_from_faces(pm, num_cells, where);
     mesh.points = std::move(pm.points);
+    std::vector<NodeId> processor_nodes;
     for (const foam::Patch& patch : pm.patches) {
-        if (patch.processor) continue;  // faces another processor shares: inner faces of the whole mesh
+        if (patch.processor) {  // faces another processor shares: inner faces of the whole mesh
+            processor_nodes.insert(processor_nodes.end(), pm.face_nodes.begin() + pm.face_offsets[patch.start],
+                                   pm.face_nodes.begin() + pm.face_offsets[patch.start + patch.size]);
+            continue;
+        }
         Marker marker{patch.name, {}};
         marker.elements.reserve(static_cast<std::size_t>(patch.size), 4);
         for (std::int64_t f = patch.start; f < patch.start + patch.size; ++f) {
@@ -411,7 +416,9 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
         mesh.markers.push_back(std::move(marker));
     }
     validate(mesh);
-    return {std::move(mesh), std::move(pm.patches), points_header.format, num_faces};
+    std::sort(processor_nodes.begin(), processor_nodes.end());
+    processor_nodes.erase(std::unique(processor_nodes.begin(), processor_nodes.end()), processor_nodes.end());
+    return {std::move(mesh), std::move(pm.patches), points_header.format, num_faces, std::move(processor_nodes)};
 }
 
 Mesh read_openfoam_files(const std::filesystem::path& dir, const PolyMeshFiles& files, OpenFoamSource* source) {
