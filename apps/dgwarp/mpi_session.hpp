@@ -4,7 +4,10 @@
 // reports); the deformation's prepare and steps run on every process with the
 // distributed plans of dgwarp/mpi. Rank 0 gives each process the nodes of a
 // block of cells and, every step, their boundary motions, and gathers their
-// new coordinates. The other ranks only serve rank 0 (mpi_serve).
+// new coordinates. The other ranks only serve rank 0 (mpi_serve). On a
+// decomposed OpenFOAM case of P processor folders, rank 0 instead has every
+// process run the command on its own folder (mpi_run_everywhere,
+// deform_processors.hpp), with the collectives below.
 //
 // Built with MPI: mpi_session.cpp; without: mpi_session_serial.cpp (one
 // process; started by mpirun with several, it refuses to run, rather than

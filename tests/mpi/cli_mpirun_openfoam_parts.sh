@@ -28,6 +28,13 @@ for p in one/processor*; do
   cmp "$p/0/polyMesh/points" "out/$(basename "$p")/0/polyMesh/points" || { echo "DIFFERENT: out/$p"; exit 1; }
 done
 
+# A series (plunging, three frames): every time folder the same as one process's.
+echo "{\"markers\": {\"$marker\": {\"periodic\": {\"plunge\": {\"amplitude\": $move, \"frequency\": 1, \"phase_deg\": 90}}}}, \"default\": \"fixed\", \"time\": {\"time_step\": 0.25, \"steps\": 3}}" > series.json
+"$dgwarp" deform input -m series.json --method "$method" -o series_one -q
+run deform input -m series.json --method "$method" -o series_many -q
+diff -r series_one series_many || { echo "DIFFERENT: a series on $np processes"; exit 1; }
+[ "$(ls series_many/processor0 | tr '\n' ' ')" = "0 0.25 0.5 constant " ] || { echo "time folders:"; ls series_many/processor0; exit 1; }
+
 [ "$(grep -c '"schema_version"' report.json)" = 1 ] || { echo "expected one report"; cat report.json; exit 1; }
 /usr/bin/python3 "$source/tests/tools/check_json_schema.py" "$source/docs/schema" deform report.json
 /usr/bin/python3 - "$np" <<'PY'
