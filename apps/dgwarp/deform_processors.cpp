@@ -3,20 +3,17 @@
 #include "deform_processors.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <tuple>
-#include <unordered_map>
 #include <variant>
 
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/repair/unrepairable_cells.hpp"
@@ -24,6 +21,8 @@
 #include "foam_output.hpp"
 #include "frame_output.hpp"
 #include "output_files.hpp"
+#include "part_reductions.hpp"
+#include "processor_part.hpp"
 #include "report.hpp"
 
 namespace dgwarp::cli {
@@ -93,269 +92,11 @@ DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_
     return a;
 }
 
-/// Runs `phase` on this process, then agrees with the others (mpi_agree):
-/// every process goes on, or every process throws the first failure.
-template <class F>
-void collectively(F&& phase) {
-    std::exception_ptr error;
-    try {
-        phase();
-    } catch (...) {
-        error = std::current_exception();
-    }
-    mpi_agree(error);
-}
-
-/// What this process holds of the case, beyond its part of the mesh.
-struct ProcessorPart {
-    fs::path poly_mesh;                   // CASE/processor<r>/constant/polyMesh
-    std::vector<std::int64_t> point_ids;  // pointProcAddressing
-    std::vector<std::int64_t> cell_ids;   // cellProcAddressing
-    foam::Format points_format = foam::Format::ascii;
-    std::vector<std::uint8_t> owned;      // per point: this process is the lowest rank holding it
-    std::vector<std::int64_t> marker_elements;  // per marker: its faces here (before shared nodes were added)
-};
-
-/// Every process's interface points (on processor patches) are held by
-/// several processes, possibly on different markers: a point on the edge of a
-/// patch whose faces are all on one side. Gives each process every marker
-/// any process has each of its points on (as vertex elements added to the
-/// marker, which resolve_boundary reads as the marker's nodes), so that every
-/// process classifies and moves a shared point as the whole case does; and
-/// marks the points this process owns (the lowest rank holding them).
-void share_interface_markers(Mesh& mesh, const std::vector<NodeId>& interface, ProcessorPart& part) {
-    const int rank = mpi_rank();
-    std::vector<std::uint8_t> on_interface(mesh.num_points(), 0);
-    for (NodeId n : interface) on_interface[static_cast<std::size_t>(n)] = 1;
-    std::unordered_map<std::int64_t, NodeId> local_of;
-    local_of.reserve(interface.size());
-    std::vector<std::int64_t> ids;
-    for (NodeId n : interface) {
-        local_of.emplace(part.point_ids[static_cast<std::size_t>(n)], n);
-        ids.push_back(part.point_ids[static_cast<std::size_t>(n)]);
-    }
-    // Owners: the lowest rank holding each interface point.
-    std::vector<int> counts;
-    const std::vector<std::int64_t> all_ids = mpi_all_gather(ids, &counts);
-    part.owned.assign(mesh.num_points(), 1);
-    std::size_t at = 0;
-    for (int r = 0; r < static_cast<int>(counts.size()); ++r)
-        for (int k = 0; k < counts[static_cast<std::size_t>(r)]; ++k, ++at)
-            if (r < rank)
-                if (const auto it = local_of.find(all_ids[at]); it != local_of.end())
-                    part.owned[static_cast<std::size_t>(it->second)] = 0;
-    // (point id, marker) of every interface point on a marker, from every process.
-    std::vector<std::vector<NodeId>> nodes_of(mesh.markers.size());
-    std::vector<std::int64_t> pairs;
-    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
-        nodes_of[m] = marker_nodes(mesh.markers[m]);
-        for (NodeId n : nodes_of[m])
-            if (on_interface[static_cast<std::size_t>(n)])
-                pairs.insert(pairs.end(), {part.point_ids[static_cast<std::size_t>(n)], static_cast<std::int64_t>(m)});
-    }
-    const std::vector<std::int64_t> all_pairs = mpi_all_gather(pairs);
-    std::vector<std::vector<NodeId>> extra(mesh.markers.size());
-    for (std::size_t k = 0; k + 1 < all_pairs.size(); k += 2) {
-        const auto it = local_of.find(all_pairs[k]);
-        const auto m = static_cast<std::size_t>(all_pairs[k + 1]);
-        if (it == local_of.end() || m >= mesh.markers.size()) continue;
-        if (!std::binary_search(nodes_of[m].begin(), nodes_of[m].end(), it->second)) extra[m].push_back(it->second);
-    }
-    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
-        std::sort(extra[m].begin(), extra[m].end());
-        extra[m].erase(std::unique(extra[m].begin(), extra[m].end()), extra[m].end());
-        for (NodeId n : extra[m]) mesh.markers[m].elements.push_back(CellType::vertex, {&n, 1});
-    }
-}
-
 /// "a, b", or "none".
 std::string processor_name_list(const std::vector<std::string>& names) {
     std::string s;
     for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
     return s.empty() ? "none" : s;
-}
-
-/// The whole case's counts, from every process's part.
-MeshCounts case_counts(const Mesh& mesh, const ProcessorPart& part) {
-    MeshCounts c = mesh_counts(mesh);
-    std::int64_t largest = -1;
-    for (std::int64_t id : part.point_ids) largest = std::max(largest, id);
-    c.nodes = mpi_max(largest) + 1;
-    c.cells = mpi_sum(c.cells);
-    c.cell_types = mpi_sum(c.cell_types);
-    std::vector<std::int64_t> elements(part.marker_elements), nodes;
-    for (const Marker& m : mesh.markers) {
-        std::int64_t owned = 0;
-        for (NodeId n : marker_nodes(m)) owned += part.owned[static_cast<std::size_t>(n)];
-        nodes.push_back(owned);
-    }
-    elements = mpi_sum(elements);
-    nodes = mpi_sum(nodes);
-    for (std::size_t m = 0; m < c.markers.size(); ++m) c.markers[m] = {mesh.markers[m].name, elements[m], nodes[m]};
-    return c;
-}
-
-/// A compensated (Kahan) sum, as summarize_quality's mean.
-double compensated_sum(std::span<const double> values) {
-    double sum = 0, carry = 0;
-    for (double v : values) {
-        const double y = v - carry;
-        const double t = sum + y;
-        carry = (t - sum) - y;
-        sum = t;
-    }
-    return sum;
-}
-
-/// The smallest of `values` over every process and the lowest case id of a
-/// cell holding it (worst_cell: the first in the case's order).
-std::pair<double, std::int64_t> case_minimum(std::span<const double> values, const std::vector<std::int64_t>& cell_ids) {
-    double local = std::numeric_limits<double>::infinity();
-    for (double v : values) local = std::min(local, v);
-    const double min = mpi_min(local);
-    std::int64_t first = std::numeric_limits<std::int64_t>::max();
-    for (std::size_t i = 0; i < values.size(); ++i)
-        if (values[i] == min) first = std::min(first, cell_ids[i]);
-    first = mpi_min(first);
-    return {min, first == std::numeric_limits<std::int64_t>::max() ? -1 : first};
-}
-
-/// summarize_quality over every process's cells (the mean's last bits may
-/// differ from one process's: the sums are added in another order).
-QualitySummary case_quality(std::span<const double> q, const std::vector<std::int64_t>& cell_ids) {
-    QualitySummary s = summarize_quality(q);
-    s.cells = mpi_sum(s.cells);
-    s.inverted = mpi_sum(s.inverted);
-    s.histogram.counts = mpi_sum(s.histogram.counts);
-    const auto [min, worst] = case_minimum(q, cell_ids);
-    s.min = s.cells > 0 ? min : 0;
-    s.worst_cell = worst;
-    s.mean = s.cells > 0 ? mpi_sum(std::vector<double>{compensated_sum(q)})[0] / static_cast<double>(s.cells) : 0;
-    return s;
-}
-
-RatioSummary case_ratios(std::span<const double> r, const std::vector<std::int64_t>& cell_ids) {
-    RatioSummary s;
-    const std::int64_t cells = mpi_sum(static_cast<std::int64_t>(r.size()));
-    const auto [min, worst] = case_minimum(r, cell_ids);
-    s.min = cells > 0 ? min : 0;
-    s.worst_cell = worst;
-    s.mean = cells > 0 ? mpi_sum(std::vector<double>{compensated_sum(r)})[0] / static_cast<double>(cells) : 0;
-    return s;
-}
-
-/// worst_cells over every process: up to `count` of the cells `cells` (local
-/// indices) of every process, smallest quality first, then the lowest case
-/// id, as case ids; and their number over every process.
-std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<std::int64_t>& cells,
-                                                               const std::vector<double>& quality,
-                                                               const std::vector<std::int64_t>& cell_ids,
-                                                               std::size_t count) {
-    std::vector<std::pair<double, std::int64_t>> mine;
-    for (std::int64_t c : cells) mine.emplace_back(quality[static_cast<std::size_t>(c)], cell_ids[static_cast<std::size_t>(c)]);
-    std::sort(mine.begin(), mine.end());
-    if (mine.size() > count) mine.resize(count);
-    std::vector<std::int64_t> flat;
-    for (const auto& [q, id] : mine) flat.insert(flat.end(), {std::bit_cast<std::int64_t>(q), id});
-    const std::vector<std::int64_t> all = mpi_all_gather(flat);
-    std::vector<std::pair<double, std::int64_t>> every;
-    for (std::size_t k = 0; k + 1 < all.size(); k += 2) every.emplace_back(std::bit_cast<double>(all[k]), all[k + 1]);
-    std::sort(every.begin(), every.end());
-    if (every.size() > count) every.resize(count);
-    std::vector<std::int64_t> ids;
-    for (const auto& e : every) ids.push_back(e.second);
-    return {ids, mpi_sum(static_cast<std::int64_t>(cells.size()))};
-}
-
-/// Every process's warnings on rank 0: a text every process gives, once; one
-/// that only some give, prefixed by "process r: " (its counts and node
-/// numbers are that process's), except a marker "with no elements" on some
-/// processes, which has faces on another, dropped. `shared_nodes`: the whole
-/// case's count of boundary nodes on a moving and a static marker, which
-/// replaces each process's in that warning.
-std::vector<std::string> case_warnings(const std::vector<std::string>& mine, std::int64_t shared_nodes = -1) {
-    std::string joined;
-    for (const auto& w : mine) joined += w + '\x1f';
-    const std::vector<std::string> all = mpi_gather_text(joined);
-    const std::string shared_text = " on both a moving and a static marker; ";
-    std::vector<std::vector<std::string>> by_rank(all.size());
-    std::unordered_map<std::string, std::size_t> given_by;
-    for (std::size_t r = 0; r < all.size(); ++r) {
-        std::size_t start = 0;
-        for (std::size_t end; (end = all[r].find('\x1f', start)) != std::string::npos; start = end + 1) {
-            std::string w = all[r].substr(start, end - start);
-            if (const auto at = w.find(shared_text); at != std::string::npos && shared_nodes >= 0)
-                w = std::to_string(shared_nodes) + " boundary node" + (shared_nodes == 1 ? " is" : "s are") + w.substr(at);
-            if (std::find(by_rank[r].begin(), by_rank[r].end(), w) != by_rank[r].end()) continue;
-            by_rank[r].push_back(w);
-            ++given_by[w];
-        }
-    }
-    std::vector<std::string> out;
-    std::unordered_map<std::string, bool> done;
-    for (std::size_t r = 0; r < by_rank.size(); ++r)
-        for (const std::string& w : by_rank[r]) {
-            if (given_by[w] == all.size()) {
-                if (!done[w]) out.push_back(w);
-                done[w] = true;
-            } else if (w.find("which has no elements") == std::string::npos) {
-                out.push_back("process " + std::to_string(r) + ": " + w);
-            }
-        }
-    return out;
-}
-
-/// The boundary nodes this process owns that are on a moving and on a static marker.
-std::int64_t owned_moving_and_static(const Mesh& mesh, const ResolvedBoundary& b, const std::vector<std::uint8_t>& owned) {
-    std::vector<std::uint8_t> on(mesh.num_points(), 0);  // bit 1: a moving marker, bit 2: a static one
-    for (const Marker& m : mesh.markers) {
-        const bool moving = std::find(b.moving_markers.begin(), b.moving_markers.end(), m.name) != b.moving_markers.end();
-        for (NodeId n : marker_nodes(m)) on[static_cast<std::size_t>(n)] |= moving ? 1 : 2;
-    }
-    std::int64_t count = 0;
-    for (std::size_t n = 0; n < on.size(); ++n) count += on[n] == 3 && owned[n];
-    return count;
-}
-
-/// The points of frame `time` for this process's processor folder of
-/// `out`: written to a temporary file beside the points file, renamed into
-/// place only when every process wrote its own (so that an error on one
-/// leaves no process's new points). Returns the points file.
-fs::path write_processor_points(const fs::path& out, const std::string& time, const ProcessorPart& part,
-                                const std::vector<double>& points, bool& base_written) {
-    const fs::path folder = out / ("processor" + std::to_string(mpi_rank()));
-    const OpenFoamPointsFile file = openfoam_points_file(folder, time);
-    const fs::path tmp = file.file.string() + ".dgwarp-part";
-    collectively([&] {
-        try {
-            if (!base_written) {
-                const fs::path base = openfoam_output_poly_mesh(folder);
-                std::error_code ec;
-                if (!fs::equivalent(base, part.poly_mesh, ec)) {
-                    const bool points_here = file.file.parent_path() == base;
-                    copy_poly_mesh(part.poly_mesh, base,
-                                   points_here ? std::vector<std::string>{"points", "points.gz"} : std::vector<std::string>{});
-                }
-                base_written = true;
-            }
-            write_openfoam_points(tmp, points, part.points_format, file.location);
-        } catch (...) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw;
-        }
-    });
-    // Every process has its new points beside the old: each renames its own
-    // (an error in a rename leaves the other processes' files renamed).
-    collectively([&] {
-        std::error_code ec;
-        fs::rename(tmp, file.file, ec);
-        if (ec) {
-            fs::remove(tmp, ec);
-            throw IoError(file.file.string(), "cannot rename " + tmp.string() + " to it: " + ec.message());
-        }
-    });
-    return file.file;
 }
 
 void deform_per_processor(const DeformArgs& a, const std::string& given_output) {
@@ -373,7 +114,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     Stopwatch sw;
 
     // Each process reads the motion and its own processor folder.
-    collectively([&] {
+    mpi_collectively([&] {
         if (rank == 0) refuse_other_methods_options(a.setup, method);
         in.spec = read_motion_file(a.setup.motion);
         foam_times = foam_time_names(in.spec, frame_count(in.spec), a.foam_time);
@@ -403,7 +144,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     std::string names;
     for (const Marker& m : in.mesh.markers) names += m.name + "\n";
     const std::string names0 = mpi_broadcast_text(names);
-    collectively([&] {
+    mpi_collectively([&] {
         if (names != names0)
             throw ParseError((part.poly_mesh / "boundary").string(), 0,
                              "the patches of processor 0, in the same order (decomposePar writes every patch to every "
@@ -429,7 +170,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         }
         in.spec.shared_tolerance = 1e-9 * std::sqrt(sum);
     }
-    collectively([&] { in.boundary = resolve_boundary(in.mesh, in.spec); });
+    mpi_collectively([&] { in.boundary = resolve_boundary(in.mesh, in.spec); });
     const MeshCounts counts = case_counts(in.mesh, part);
     std::int64_t boundary_nodes = 0, moving_nodes = 0;
     for (std::size_t b = 0; b < in.boundary.boundary.nodes.size(); ++b)
@@ -481,7 +222,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     run.planned.options = method_options(a.setup);
     progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(processes) + " processes");
     std::int64_t outside_hull = 0;
-    collectively([&] {
+    mpi_collectively([&] {
         run.planned.distributed =
             mpi_prepare_own(method, 3, run.planned.options, in.mesh.points, part.point_ids, in.boundary.boundary,
                             run.planned.plan, run.planned.process_prepare_seconds, outside_hull);
@@ -502,7 +243,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
                                          std::to_string(frames) + ")"
                                    : ""));
         ResolvedFrame motion;
-        collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
+        mpi_collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
         const std::vector<std::string> motion_warnings = case_warnings(motion.warnings);
         f.warnings = motion_warnings;
         Stopwatch step_sw;

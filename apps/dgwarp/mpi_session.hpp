@@ -57,6 +57,19 @@ int run_everywhere(const std::string& payload);
 /// error of the lowest failing rank, of the same kind (usage error, bad
 /// input, invalid result), its message prefixed by "process r: " when r > 0.
 void mpi_agree(const std::exception_ptr& error);
+/// Runs `phase` on this process, then agrees with the others (mpi_agree):
+/// every process goes on, or every process throws the first failure.
+template <class F>
+void mpi_collectively(F&& phase) {
+    std::exception_ptr error;
+    try {
+        phase();
+    } catch (...) {
+        error = std::current_exception();
+    }
+    mpi_agree(error);
+}
+
 std::int64_t mpi_sum(std::int64_t value);
 std::vector<std::int64_t> mpi_sum(std::vector<std::int64_t> values);  // element by element
 std::vector<double> mpi_sum(std::vector<double> values);              // element by element
