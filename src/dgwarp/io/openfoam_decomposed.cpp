@@ -98,7 +98,7 @@ OpenFoamProcessorMesh read_openfoam_processor(const fs::path& dir) {
     PolyMeshFiles files;
     std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
     for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
-    foam::PolyMeshPart part = foam::read_poly_mesh_part(dir, files, true);
+    foam::PolyMeshPart part = foam::read_poly_mesh_part(dir, std::move(files), true);
     OpenFoamProcessorMesh out;
     const std::vector<std::int32_t> point_of =
         read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(part.mesh.num_points()), false);
@@ -152,7 +152,7 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
         PolyMeshFiles files;
         std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
         for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
-        ProcessorPart part{foam::read_poly_mesh_part(dir, files, true), {}, {}, {}};
+        ProcessorPart part{foam::read_poly_mesh_part(dir, std::move(files), true), {}, {}, {}};
         const Mesh& m = part.part.mesh;
         part.point_of = read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(m.num_points()), false);
         part.face_of = read_addressing(dir, "faceProcAddressing", part.part.num_faces, true);
