@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages dgwarp needs to build, test and run.
 # Open MPI (libopenmpi-dev, openmpi-bin): the dgwarp_mpi library, `mpirun dgwarp`
-# and the MPI tests (docs/MPI.md); without it they are skipped.
+# and the MPI tests (docs/MPI.md); without it they are skipped. strace: the MPI
+# test that each process opens only its own processor folder of an OpenFOAM case.
 # Idempotent: prints nothing and touches nothing when everything is present.
 # `install-deps.sh fuzz` also installs what scripts/fuzz.sh needs (clang,
 # libFuzzer and the sanitizer runtimes, LLVM's OpenMP).
@@ -15,7 +16,7 @@ packages=(
   libcgns-dev cgns-convert
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
   libgtest-dev libbenchmark-dev
-  libopenmpi-dev openmpi-bin
+  libopenmpi-dev openmpi-bin strace
 )
 if [ "${1:-}" = fuzz ]; then
   packages+=(clang libclang-rt-14-dev libomp-dev)

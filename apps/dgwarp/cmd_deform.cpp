@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "deform_processors.hpp"
+#include "deform_report.hpp"
 #include "deform_setup.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
@@ -24,139 +26,6 @@
 namespace dgwarp::cli {
 
 namespace {
-
-struct DeformArgs {
-    SetupArgs setup;
-    std::string output;
-    std::string plan;
-    bool json = false;
-    bool allow_invalid = false;
-    bool untangle = false;
-    bool no_untangle = false;  // dg-harmonic without its last resort
-    double untangle_target = UntangleOptions{}.target_quality;
-    std::string foam_time;  // OpenFOAM output: a single frame's time folder, or "constant"
-    bool quiet = false;
-};
-
-struct FrameResult {
-    std::size_t frame = 0;
-    double time = 0;
-    std::string output;  // empty when not written
-    QualitySummary quality;
-    RatioSummary ratio;
-    StepReport step;
-    std::int64_t inverted_by_motion = 0;       // cells valid in the input and inverted now (what makes a frame invalid)
-    std::vector<std::int64_t> worst_inverted;  // the worst of those
-    // Of those, the cells whose every node is on the boundary: the boundary
-    // motion alone inverts them, and nothing that moves volume nodes can help.
-    std::int64_t inverted_on_boundary = 0;
-    std::vector<std::int64_t> worst_on_boundary;  // the worst of those
-    std::optional<UntangleReport> untangled;  // when --untangle (or dg-harmonic's last resort) found cells to repair
-    bool last_resort = false;                 // the repair was dg-harmonic's last resort, not --untangle
-    double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
-    std::vector<double> process_seconds;  // under mpirun: each process's step
-    std::vector<std::string> warnings;
-};
-
-/// One method's run over every frame.
-struct MethodRun {
-    PlannedMethod planned;
-    std::vector<FrameResult> frames;
-    std::string error;  // why the method stopped (invalid graph, too large, ...), "" if it ran
-    bool invalid = false;  // a frame had inverted cells, or the method could not produce a valid mesh
-    bool failed = false;   // the method stopped with an error before producing a mesh (with --method all)
-};
-
-std::string cell_list(const std::vector<std::int64_t>& cells) {
-    std::string s;
-    for (auto c : cells) s += (s.empty() ? "" : ", ") + std::to_string(c);
-    return s;
-}
-
-nlohmann::json untangle_json(const UntangleReport& u) {
-    return {{"inverted_before", u.inverted_before},
-            {"inverted_after", u.inverted_after},
-            {"below_target_before", u.below_target_before},
-            {"below_target_after", u.below_target_after},
-            {"nodes_moved", u.nodes_moved},
-            {"max_move", u.max_move},
-            {"rounds", u.rounds},
-            {"min_quality_after", u.min_quality_after}};
-}
-
-nlohmann::json frame_json(const FrameResult& f) {
-    nlohmann::json j = {{"frame", f.frame},
-            {"time", f.time},
-            {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)},
-            {"quality", quality_json(f.quality)},
-            {"ratio", ratio_json(f.ratio)},
-            {"inverted_by_motion", f.inverted_by_motion},
-            {"worst_inverted_cells", f.worst_inverted},
-            {"inverted_on_boundary", f.inverted_on_boundary},
-            {"substeps", f.step.substeps},
-            {"invalid_graph_simplices", f.step.invalid_graph_simplices},
-            {"rbf_centres", f.step.rbf_centres},
-            {"rbf_boundary_error", f.step.rbf_boundary_error},
-            {"untangle", f.untangled ? untangle_json(*f.untangled) : nlohmann::json(nullptr)},
-            {"last_resort", f.last_resort},
-            {"seconds",
-             {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
-              {"write", f.write_seconds}}},
-            {"warnings", f.warnings}};
-    if (!f.process_seconds.empty()) j["process_seconds"] = f.process_seconds;
-    return j;
-}
-
-nlohmann::json run_json(const Inputs& in, const MethodRun& r) {
-    nlohmann::json j = {{"method", method_name(r.planned.method)}, {"plan", plan_json(in, r.planned)},
-                        {"frames", nlohmann::json::array()}, {"valid", !r.invalid},
-                        {"error", r.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.error)}};
-    for (const auto& f : r.frames) j["frames"].push_back(frame_json(f));
-    return j;
-}
-
-void print_single_frame(const Inputs& in, const FrameResult& f) {
-    std::cout << "quality (Knupp shape)   before      after\n" << std::fixed << std::setprecision(6);
-    std::cout << "  min               " << std::setw(10) << in.original_quality.min << "  " << std::setw(10)
-              << f.quality.min << "  (cell " << f.quality.worst_cell << ")\n";
-    std::cout << "  mean              " << std::setw(10) << in.original_quality.mean << "  " << std::setw(10)
-              << f.quality.mean << "\n";
-    std::cout << "  inverted          " << std::setw(10) << in.original_quality.inverted << "  " << std::setw(10)
-              << f.quality.inverted << "\n";
-    if (in.original_quality.inverted > 0)
-        std::cout << "  inverted by the motion " << f.inverted_by_motion << " (the other "
-                  << f.quality.inverted - f.inverted_by_motion << " were already inverted or degenerate in the input)\n";
-    if (f.inverted_on_boundary > 0)
-        std::cout << "  inverted with every node on the boundary " << f.inverted_on_boundary << " (cells "
-                  << cell_list(f.worst_on_boundary) << (f.inverted_on_boundary > 10 ? ", ..." : "")
-                  << "): the boundary motion itself folds them\n";
-    std::cout << "ratio after/before, per cell: min " << f.ratio.min << " (cell " << f.ratio.worst_cell
-              << "), mean " << f.ratio.mean << "\n";
-    std::cout.unsetf(std::ios::floatfield);
-    std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
-              << ", write " << milliseconds(f.write_seconds) << "\n";
-    if (!f.process_seconds.empty()) {
-        std::cout << "processes " << f.process_seconds.size() << ", step on each:";
-        for (double s : f.process_seconds) std::cout << " " << milliseconds(s);
-        std::cout << " (deform: with the scatter and gather by rank 0)\n";
-    }
-    if (const auto& u = f.untangled)
-        std::cout << "untangle  " << (f.last_resort ? "(dg-harmonic's last resort) " : "") << "inverted cells "
-                  << u->inverted_before << " -> " << u->inverted_after
-                  << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
-                  << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
-                  << milliseconds(f.untangle_seconds) << "\n";
-    if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
-                                       << f.step.invalid_graph_simplices << " invalid simplices)\n";
-}
-
-void print_frame_line(const FrameResult& f) {
-    char line[200];
-    std::snprintf(line, sizeof line, "frame %4zu  t=%-10g min %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
-                  f.frame, f.time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
-                  f.ratio.min, milliseconds(f.deform_seconds).c_str());
-    std::cout << line << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
-}
 
 /// The output of `method` when several methods run: OUT with the method's name before the extension.
 std::filesystem::path method_output(const std::filesystem::path& out, Method method, bool several) {
@@ -214,19 +83,6 @@ FrameQuality repair_and_measure(const Inputs& in, Method method, const DeformArg
     f.worst_on_boundary = worst_cells(on_boundary, q.quality, 10);
     f.quality_seconds += sw.lap();
     return q;
-}
-
-/// A frame's text report: its warnings, then the single-frame table or the frame's line.
-void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,
-                 const std::vector<std::string>& step_warning_texts, std::size_t frames, WarningPrinter& warnings) {
-    for (const auto& w : motion_warnings) warnings.print(w);  // they name the frame
-    for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(f.frame) + ": ");
-    if (frames == 1) {
-        print_single_frame(in, f);
-        if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
-    } else {
-        print_frame_line(f);
-    }
 }
 
 /// The run's plan (built or loaded); false, with the run's error set, when
@@ -319,15 +175,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         run.frames.push_back(std::move(f));
         if (invalid) {
             run.invalid = true;
-            const FrameResult& bad = run.frames.back();
-            run.error = std::to_string(bad.inverted_by_motion) + " inverted cell" + (bad.inverted_by_motion == 1 ? "" : "s") +
-                        " in frame " + std::to_string(bad.frame) + " (worst: " + cell_list(bad.worst_inverted) + ")";
-            if (bad.inverted_on_boundary > 0)
-                run.error += "; " + std::to_string(bad.inverted_on_boundary) + " of them ha" +
-                             (bad.inverted_on_boundary == 1 ? "s" : "ve") +
-                             " every node on the boundary (worst: " + cell_list(bad.worst_on_boundary) +
-                             "): the boundary motion itself folds them, which no method can repair; check the "
-                             "motion (nodes a moving marker shares with a static one follow the moving one)";
+            run.error = invalid_frame_error(run.frames.back());
             if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
         }
     }
@@ -395,6 +243,11 @@ void run_deform(const DeformArgs& given) {
     if (several && !a.plan.empty())
         throw CLI::ValidationError("--plan", "a saved plan belongs to one method; it cannot be used with --method all");
     require_mesh_extension("--output", a.output);
+    if (foam && deforms_per_processor(a, methods)) {
+        // mpirun on a decomposed case: each process reads and writes its own processor folder.
+        run_deform_per_processor(a, given.output);
+        return;
+    }
     const bool text = !a.json && !a.quiet;
     ProgressLine progress(text);
     const Inputs in = read_inputs(a.setup, progress, [&](const MotionSpec& spec) {

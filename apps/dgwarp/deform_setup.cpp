@@ -49,6 +49,14 @@ void refuse_conflict(const SetupArgs& args, const std::string& plan_file, const 
                                              "; prepare it again with the option, or drop it");
 }
 
+std::int64_t moving_count(const BoundarySet& b) {
+    std::int64_t n = 0;
+    for (auto m : b.moving) n += m;
+    return n;
+}
+
+}  // namespace
+
 // An option of another method than the one that runs would be silently
 // ignored: a usage error instead (with --method all, every option applies).
 void refuse_other_methods_options(const SetupArgs& args, Method method) {
@@ -61,14 +69,6 @@ void refuse_other_methods_options(const SetupArgs& args, Method method) {
                                                                     : " (the default method): add --method " +
                                                                           std::string(method_name(owner))));
 }
-
-std::int64_t moving_count(const BoundarySet& b) {
-    std::int64_t n = 0;
-    for (auto m : b.moving) n += m;
-    return n;
-}
-
-}  // namespace
 
 void add_input_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh, .vtu, .cgns) or OpenFOAM case folder")->required();

@@ -54,6 +54,10 @@ void add_setup_options(CLI::App* cmd, SetupArgs& args);
 /// The methods `args.method` names: one, or all of them for "all" (when allowed).
 std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all);
 
+/// Usage error (CLI::ValidationError) when an option of another method than
+/// `method` was given (it would do nothing), unless every method runs.
+void refuse_other_methods_options(const SetupArgs& args, Method method);
+
 /// The method options from the command line.
 MethodOptions method_options(const SetupArgs& args);
 

@@ -18,9 +18,9 @@ int main(int argc, char** argv) {
         return exit_bad_input;
     }
     if (mpi_rank() > 0) {
-        mpi_serve();
+        const int code = mpi_serve();  // that of the last run every process made
         mpi_stop();
-        return exit_ok;
+        return code;
     }
     struct StopTheOtherRanks {
         ~StopTheOtherRanks() { mpi_stop(); }

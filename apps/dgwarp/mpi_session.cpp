@@ -6,8 +6,12 @@
 #include <cstdlib>
 #include <exception>
 #include <optional>
+#include <string>
 #include <type_traits>
 
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
@@ -29,7 +33,7 @@ namespace {
 bool mpi_started = false;
 int mpi_my_rank = 0, mpi_size = 1;
 
-enum MpiCommand : int { command_stop = 0, command_prepare = 1, command_deform = 2 };
+enum MpiCommand : int { command_stop = 0, command_prepare = 1, command_deform = 2, command_everywhere = 3 };
 struct MpiPrepareHeader {
     int method;
     int dim;
@@ -115,15 +119,18 @@ void mpi_stop() {
     mpi_started = false;
 }
 
-void mpi_serve() {
+int mpi_serve() {
     std::optional<mpi::DistributedPlan> plan;
     MpiPart part;
+    int code = exit_ok;
     for (;;) {
         int command = command_stop;
         MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
-        if (command == command_stop) return;
+        if (command == command_stop) return code;
         try {
-            if (command == command_prepare) {
+            if (command == command_everywhere) {
+                code = run_everywhere(mpi_broadcast_text(""));
+            } else if (command == command_prepare) {
                 MpiPrepareHeader h{};
                 MPI_Bcast(&h, sizeof h, MPI_BYTE, 0, MPI_COMM_WORLD);
                 set_num_threads(h.threads);
@@ -207,6 +214,159 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
 }
 
 std::int64_t mpi_outside_hull(const DistributedRun& run) { return run.outside_hull; }
+
+void mpi_run_everywhere(const std::string& payload) {
+    int command = command_everywhere;
+    MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    mpi_broadcast_text(payload);
+}
+
+namespace {
+
+// The kinds of error mpi_agree passes between processes (main's exit codes).
+enum MpiErrorKind : int { error_none = 0, error_usage = 1, error_input = 2, error_invalid = 3, error_internal = 4 };
+
+}  // namespace
+
+void mpi_agree(const std::exception_ptr& error) {
+    int kind = error_none;
+    std::string message;
+    std::int64_t count = 0;
+    if (error) {
+        try {
+            std::rethrow_exception(error);
+        } catch (const CLI::ParseError& e) {
+            kind = error_usage;
+            message = e.what();
+        } catch (const InvalidResultError& e) {
+            kind = error_invalid;
+            message = e.what();
+            count = e.count();
+        } catch (const Error& e) {
+            kind = error_input;
+            message = e.what();
+        } catch (const std::exception& e) {
+            kind = error_internal;
+            message = e.what();
+        }
+    }
+    // The lowest failing rank.
+    int failing = kind != error_none ? mpi_my_rank : mpi_size;
+    MPI_Allreduce(MPI_IN_PLACE, &failing, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (failing == mpi_size) return;
+    if (failing == mpi_my_rank) {
+        MPI_Bcast(&kind, 1, MPI_INT, failing, MPI_COMM_WORLD);
+        MPI_Bcast(&count, 1, MPI_INT64_T, failing, MPI_COMM_WORLD);
+        long long n = static_cast<long long>(message.size());
+        MPI_Bcast(&n, 1, MPI_LONG_LONG, failing, MPI_COMM_WORLD);
+        MPI_Bcast(message.data(), static_cast<int>(n), MPI_CHAR, failing, MPI_COMM_WORLD);
+        std::rethrow_exception(error);
+    }
+    MPI_Bcast(&kind, 1, MPI_INT, failing, MPI_COMM_WORLD);
+    MPI_Bcast(&count, 1, MPI_INT64_T, failing, MPI_COMM_WORLD);
+    long long n = 0;
+    MPI_Bcast(&n, 1, MPI_LONG_LONG, failing, MPI_COMM_WORLD);
+    message.assign(static_cast<std::size_t>(n), '\0');
+    MPI_Bcast(message.data(), static_cast<int>(n), MPI_CHAR, failing, MPI_COMM_WORLD);
+    message = "process " + std::to_string(failing) + ": " + message;
+    switch (kind) {
+        case error_usage: throw CLI::ValidationError(message);
+        case error_invalid: throw InvalidResultError(message, count);
+        case error_input: throw Error(message);
+        default: throw std::runtime_error(message);
+    }
+}
+
+std::int64_t mpi_sum(std::int64_t value) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+    return value;
+}
+std::vector<std::int64_t> mpi_sum(std::vector<std::int64_t> values) {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+    return values;
+}
+std::vector<double> mpi_sum(std::vector<double> values) {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return values;
+}
+double mpi_min(double value) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    return value;
+}
+double mpi_max(double value) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return value;
+}
+std::int64_t mpi_min(std::int64_t value) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT64_T, MPI_MIN, MPI_COMM_WORLD);
+    return value;
+}
+std::int64_t mpi_max(std::int64_t value) {
+    MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT64_T, MPI_MAX, MPI_COMM_WORLD);
+    return value;
+}
+
+std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values, std::vector<int>* counts) {
+    std::vector<int> n(mpi_size, 0), displ(mpi_size, 0);
+    const int mine = static_cast<int>(values.size());
+    MPI_Allgather(&mine, 1, MPI_INT, n.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    for (int r = 1; r < mpi_size; ++r) displ[r] = displ[r - 1] + n[r - 1];
+    std::vector<std::int64_t> all(static_cast<std::size_t>(displ[mpi_size - 1] + n[mpi_size - 1]));
+    MPI_Allgatherv(values.data(), mine, MPI_INT64_T, all.data(), n.data(), displ.data(), MPI_INT64_T, MPI_COMM_WORLD);
+    if (counts) *counts = std::move(n);
+    return all;
+}
+
+std::vector<std::string> mpi_gather_text(const std::string& text) {
+    std::vector<int> n(mpi_size, 0), displ(mpi_size, 0);
+    const int mine = static_cast<int>(text.size());
+    MPI_Gather(&mine, 1, MPI_INT, n.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    for (int r = 1; r < mpi_size; ++r) displ[r] = displ[r - 1] + n[r - 1];
+    std::string all(mpi_my_rank == 0 ? static_cast<std::size_t>(displ[mpi_size - 1] + n[mpi_size - 1]) : 0, '\0');
+    MPI_Gatherv(text.data(), mine, MPI_CHAR, all.data(), n.data(), displ.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+    std::vector<std::string> texts;
+    if (mpi_my_rank == 0)
+        for (int r = 0; r < mpi_size; ++r) texts.push_back(all.substr(static_cast<std::size_t>(displ[r]), static_cast<std::size_t>(n[r])));
+    return texts;
+}
+
+std::string mpi_broadcast_text(const std::string& text) {
+    long long n = static_cast<long long>(text.size());
+    MPI_Bcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+    std::string out = mpi_my_rank == 0 ? text : std::string(static_cast<std::size_t>(n), '\0');
+    MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, 0, MPI_COMM_WORLD);
+    return out;
+}
+
+std::shared_ptr<DistributedRun> mpi_prepare_own(Method method, int dim, const MethodOptions& options,
+                                                std::span<const double> points, std::span<const std::int64_t> global_ids,
+                                                const BoundarySet& boundary, Plan& my_plan, std::vector<double>& seconds,
+                                                std::int64_t& outside_hull) {
+    auto run = std::make_shared<DistributedRun>();
+    run->dim = dim;
+    MpiPart part;  // mpi_prepare_part's input (copies: prepare holds no reference to them)
+    part.points.assign(points.begin(), points.end());
+    part.global_ids.assign(global_ids.begin(), global_ids.end());
+    part.boundary = boundary;
+    const MpiPrepareHeader h{static_cast<int>(method), dim, num_threads(), options};
+    std::int64_t outside = 0;
+    run->plan = mpi_prepare_part(h, part, mpi_my_rank == 0 ? &seconds : nullptr, &outside);
+    MPI_Bcast(&outside, 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
+    outside_hull = outside;
+    run->outside_hull = outside;
+    my_plan = run->plan.plan;
+    return run;
+}
+
+StepReport mpi_deform_own(const DistributedRun& run, std::span<const double> points, const BoundaryMotion& motion,
+                          std::span<double> out, std::vector<double>& seconds) {
+    Stopwatch sw;
+    const StepReport report = mpi::deform_distributed(run.plan, points, motion, out);
+    const double s = sw.lap();
+    seconds.resize(mpi_my_rank == 0 ? mpi_size : 0);
+    MPI_Gather(&s, 1, MPI_DOUBLE, mpi_my_rank == 0 ? seconds.data() : nullptr, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    return report;
+}
 
 StepReport mpi_deform(const DistributedRun& run, const BoundaryMotion& motion, std::span<double> out,
                       std::vector<double>& seconds) {

@@ -4,20 +4,28 @@
 // reports); the deformation's prepare and steps run on every process with the
 // distributed plans of dgwarp/mpi. Rank 0 gives each process the nodes of a
 // block of cells and, every step, their boundary motions, and gathers their
-// new coordinates. The other ranks only serve rank 0 (mpi_serve).
+// new coordinates. The other ranks only serve rank 0 (mpi_serve). On a
+// decomposed OpenFOAM case of P processor folders, rank 0 instead has every
+// process run the command on its own folder (mpi_run_everywhere,
+// deform_processors.hpp), with the collectives below.
 //
 // Built with MPI: mpi_session.cpp; without: mpi_session_serial.cpp (one
 // process; started by mpirun with several, it refuses to run, rather than
 // have P copies write the same files).
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
 
 namespace dgwarp::cli {
+
+/// A distributed deformation (its plans on every process).
+struct DistributedRun;
 
 /// Starts MPI when this process was started by mpirun (else nothing).
 /// Returns the number of processes (1 without mpirun).
@@ -30,13 +38,68 @@ int mpi_rank();
 int mpi_processes();
 
 /// Ranks > 0: serve rank 0's prepares and steps until it stops (mpi_stop).
-void mpi_serve();
+/// Returns the exit code of the last run every process made
+/// (mpi_run_everywhere): 0, or the exit code of its error.
+int mpi_serve();
+
+/// Rank 0: has every other process call `run_everywhere(payload)`
+/// (deform_processors.hpp) now, and returns: rank 0 then makes the same call.
+/// For the runs where every process reads and writes its own part.
+void mpi_run_everywhere(const std::string& payload);
+/// Ranks > 0, from mpi_serve: the run rank 0 started; returns its exit code.
+int run_everywhere(const std::string& payload);
+
+// Collectives over every process of the mpirun, for the runs where each
+// process holds its own part (the identity on one process).
+
+/// Every process calls it after a phase, with the phase's error on this
+/// process (or none): when some process failed, every process throws the
+/// error of the lowest failing rank, of the same kind (usage error, bad
+/// input, invalid result), its message prefixed by "process r: " when r > 0.
+void mpi_agree(const std::exception_ptr& error);
+/// Runs `phase` on this process, then agrees with the others (mpi_agree):
+/// every process goes on, or every process throws the first failure.
+template <class F>
+void mpi_collectively(F&& phase) {
+    std::exception_ptr error;
+    try {
+        phase();
+    } catch (...) {
+        error = std::current_exception();
+    }
+    mpi_agree(error);
+}
+
+std::int64_t mpi_sum(std::int64_t value);
+std::vector<std::int64_t> mpi_sum(std::vector<std::int64_t> values);  // element by element
+std::vector<double> mpi_sum(std::vector<double> values);              // element by element
+double mpi_min(double value);
+double mpi_max(double value);
+std::int64_t mpi_min(std::int64_t value);
+std::int64_t mpi_max(std::int64_t value);
+/// Every process's `values`, concatenated by rank, on every process;
+/// `counts` (when given) gets each process's size.
+std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values, std::vector<int>* counts = nullptr);
+/// Every process's `text` on rank 0 (by rank); empty elsewhere.
+std::vector<std::string> mpi_gather_text(const std::string& text);
+/// Rank 0's `text` on every process.
+std::string mpi_broadcast_text(const std::string& text);
+
+/// Every process: prepares `method` over this process's own nodes (points,
+/// global ids, boundary), collectively; `my_plan`: this process's plan (over
+/// its working nodes), `seconds` (rank 0): each process's prepare time,
+/// `outside_hull`: the volume nodes outside the graph's hull, summed over the processes.
+std::shared_ptr<DistributedRun> mpi_prepare_own(Method method, int dim, const MethodOptions& options,
+                                                std::span<const double> points, std::span<const std::int64_t> global_ids,
+                                                const BoundarySet& boundary, Plan& my_plan, std::vector<double>& seconds,
+                                                std::int64_t& outside_hull);
+/// Every process: one step over its own nodes (`motion`: one per its
+/// boundary node); `seconds` (rank 0): each process's step time.
+StepReport mpi_deform_own(const DistributedRun& run, std::span<const double> points, const BoundaryMotion& motion,
+                          std::span<double> out, std::vector<double>& seconds);
 
 /// Rank 0: tells the other ranks to stop; every rank: ends MPI.
 void mpi_stop();
-
-/// A distributed deformation run from rank 0.
-struct DistributedRun;
 
 /// Rank 0: prepares `method` on every process, each with the nodes of its
 /// block of cells along a Morton curve, or, when `node_parts` has one list

@@ -19,7 +19,8 @@ int mpi_start(int&, char**&) {
 }
 int mpi_rank() { return 0; }
 int mpi_processes() { return 1; }
-void mpi_serve() {}
+int mpi_serve() { return 0; }
+void mpi_run_everywhere(const std::string&) {}
 void mpi_stop() {}
 
 std::shared_ptr<DistributedRun> mpi_prepare(const Mesh&, const BoundarySet&, Method, const MethodOptions&,
@@ -28,6 +29,34 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh&, const BoundarySet&, Met
 }
 
 std::int64_t mpi_outside_hull(const DistributedRun&) { return 0; }
+
+// One process: the collectives are the identity.
+void mpi_agree(const std::exception_ptr& error) {
+    if (error) std::rethrow_exception(error);
+}
+std::int64_t mpi_sum(std::int64_t value) { return value; }
+std::vector<std::int64_t> mpi_sum(std::vector<std::int64_t> values) { return values; }
+std::vector<double> mpi_sum(std::vector<double> values) { return values; }
+double mpi_min(double value) { return value; }
+double mpi_max(double value) { return value; }
+std::int64_t mpi_min(std::int64_t value) { return value; }
+std::int64_t mpi_max(std::int64_t value) { return value; }
+std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values, std::vector<int>* counts) {
+    if (counts) *counts = {static_cast<int>(values.size())};
+    return values;
+}
+std::vector<std::string> mpi_gather_text(const std::string& text) { return {text}; }
+std::string mpi_broadcast_text(const std::string& text) { return text; }
+
+std::shared_ptr<DistributedRun> mpi_prepare_own(Method, int, const MethodOptions&, std::span<const double>,
+                                                std::span<const std::int64_t>, const BoundarySet&, Plan&,
+                                                std::vector<double>&, std::int64_t&) {
+    throw Error("mpi_prepare_own: dgwarp was built without MPI");
+}
+StepReport mpi_deform_own(const DistributedRun&, std::span<const double>, const BoundaryMotion&, std::span<double>,
+                          std::vector<double>&) {
+    throw Error("mpi_deform_own: dgwarp was built without MPI");
+}
 
 StepReport mpi_deform(const DistributedRun&, const BoundaryMotion&, std::span<double>, std::vector<double>&) {
     throw Error("mpi_deform: dgwarp was built without MPI");

@@ -6,33 +6,44 @@
 
 namespace dgwarp::cli {
 
-std::string describe_mesh(const Mesh& mesh) {
-    std::ostringstream s;
-    s << mesh.dim << "D, " << mesh.num_points() << " nodes, " << mesh.cells.size() << " cells (";
+MeshCounts mesh_counts(const Mesh& mesh) {
+    MeshCounts c;
+    c.dim = mesh.dim;
+    c.nodes = static_cast<std::int64_t>(mesh.num_points());
+    c.cells = static_cast<std::int64_t>(mesh.cells.size());
     const auto counts = count_by_type(mesh.cells);
+    c.cell_types.assign(counts.begin(), counts.end());
+    for (const Marker& m : mesh.markers)
+        c.markers.push_back({m.name, static_cast<std::int64_t>(m.elements.size()),
+                             static_cast<std::int64_t>(marker_nodes(m).size())});
+    return c;
+}
+
+std::string describe_mesh(const Mesh& mesh) { return describe_mesh(mesh_counts(mesh)); }
+
+std::string describe_mesh(const MeshCounts& c) {
+    std::ostringstream s;
+    s << c.dim << "D, " << c.nodes << " nodes, " << c.cells << " cells (";
     bool first = true;
     for (CellType t : all_cell_types) {
-        if (counts[static_cast<int>(t)] == 0) continue;
-        s << (first ? "" : ", ") << counts[static_cast<int>(t)] << " " << cell_type_name(t);
+        if (c.cell_types[static_cast<std::size_t>(t)] == 0) continue;
+        s << (first ? "" : ", ") << c.cell_types[static_cast<std::size_t>(t)] << " " << cell_type_name(t);
         first = false;
     }
-    s << "), " << mesh.markers.size() << " markers";
+    s << "), " << c.markers.size() << " markers";
     return s.str();
 }
 
-nlohmann::json mesh_json(const Mesh& mesh) {
+nlohmann::json mesh_json(const Mesh& mesh) { return mesh_json(mesh_counts(mesh)); }
+
+nlohmann::json mesh_json(const MeshCounts& c) {
     nlohmann::json types = nlohmann::json::object();
-    const auto counts = count_by_type(mesh.cells);
     for (CellType t : all_cell_types)
-        if (counts[static_cast<int>(t)] > 0) types[std::string(cell_type_name(t))] = counts[static_cast<int>(t)];
+        if (c.cell_types[static_cast<std::size_t>(t)] > 0)
+            types[std::string(cell_type_name(t))] = c.cell_types[static_cast<std::size_t>(t)];
     nlohmann::json markers = nlohmann::json::array();
-    for (const Marker& m : mesh.markers)
-        markers.push_back({{"name", m.name}, {"elements", m.elements.size()}, {"nodes", marker_nodes(m).size()}});
-    return {{"dim", mesh.dim},
-            {"nodes", mesh.num_points()},
-            {"cells", mesh.cells.size()},
-            {"cell_types", types},
-            {"markers", markers}};
+    for (const auto& m : c.markers) markers.push_back({{"name", m.name}, {"elements", m.elements}, {"nodes", m.nodes}});
+    return {{"dim", c.dim}, {"nodes", c.nodes}, {"cells", c.cells}, {"cell_types", types}, {"markers", markers}};
 }
 
 nlohmann::json quality_json(const QualitySummary& q) {

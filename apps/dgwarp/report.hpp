@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/mesh/mesh.hpp"
@@ -14,11 +15,27 @@ namespace dgwarp::cli {
 /// JSON schema version of every --json report; bumped on incompatible changes.
 inline constexpr int json_schema_version = 2;
 
+/// What describe_mesh and mesh_json say about a mesh (under mpirun, summed
+/// over the processes' parts: deform_processors.cpp).
+struct MeshCounts {
+    int dim = 3;
+    std::int64_t nodes = 0, cells = 0;
+    std::vector<std::int64_t> cell_types;  // per CellType (count_by_type)
+    struct MarkerCounts {
+        std::string name;
+        std::int64_t elements = 0, nodes = 0;
+    };
+    std::vector<MarkerCounts> markers;
+};
+MeshCounts mesh_counts(const Mesh& mesh);
+
 /// "2D, 5233 nodes, 10216 cells (10216 triangle)".
 std::string describe_mesh(const Mesh& mesh);
+std::string describe_mesh(const MeshCounts& counts);
 
 /// {"dim", "nodes", "cells", "cell_types": {"triangle": n, ...}, "markers": [{"name", "elements", "nodes"}]}
 nlohmann::json mesh_json(const Mesh& mesh);
+nlohmann::json mesh_json(const MeshCounts& counts);
 
 /// {"cells", "min", "mean", "inverted", "worst_cell", "histogram": {"edges", "counts"}}
 nlohmann::json quality_json(const QualitySummary& q);

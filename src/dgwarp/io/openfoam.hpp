@@ -75,6 +75,27 @@ std::filesystem::path find_poly_mesh(const std::filesystem::path& path);
 /// collated decomposition (one processors<N> folder).
 std::vector<std::filesystem::path> openfoam_processor_meshes(const std::filesystem::path& path);
 
+/// One processor of a decomposed case, read alone (under mpirun each process
+/// reads its own: docs/MPI.md). `mesh` is its polyMesh as read_openfoam reads
+/// a polyMesh, in the processor's numbering: its markers are the patches
+/// other than processor patches (every processor has every patch, maybe with
+/// no face), and each cell's nodes are in the order that reading the whole
+/// decomposed case gives the cell (so that per-cell quality has the same
+/// bits).
+struct OpenFoamProcessorMesh {
+    Mesh mesh;
+    std::vector<std::int64_t> point_ids;  // pointProcAddressing: the case's id of each point
+    std::vector<std::int64_t> cell_ids;   // cellProcAddressing: the case's id of each cell
+    std::vector<NodeId> interface_nodes;  // the points on processor patches (held by other processors too), sorted
+    foam::Format points_format = foam::Format::ascii;  // of its points file
+    std::vector<OpenFoamPatch> patches;                // one per marker
+};
+
+/// Reads the processor polyMesh folder `poly_mesh`
+/// (CASE/processorN/constant/polyMesh) and its pointProcAddressing and
+/// cellProcAddressing. Errors as read_openfoam's, naming the processor's files.
+OpenFoamProcessorMesh read_openfoam_processor(const std::filesystem::path& poly_mesh);
+
 /// The decomposition's files read besides the five polyMesh files, in each
 /// processor's polyMesh folder.
 inline constexpr const char* processor_addressing_file_names[] = {"pointProcAddressing", "faceProcAddressing",

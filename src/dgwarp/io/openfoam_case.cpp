@@ -128,8 +128,15 @@ Mesh read_openfoam(const fs::path& path, const ProgressFn& progress, OpenFoamSou
         done += parts[k]->size();
         if (progress && total > 0) progress(std::min(1.0, static_cast<double>(done) / static_cast<double>(total)));
     }
-    Mesh mesh = read_openfoam_files(dir, files, source);
-    if (source) source->poly_mesh = dir;
+    // As read_openfoam_files, each file's text freed once parsed (a lower peak of memory).
+    foam::PolyMeshPart part = foam::read_poly_mesh_part(dir, std::move(files), false);
+    if (source) {
+        source->points_format = part.points_format;
+        source->patches.clear();
+        for (const foam::Patch& patch : part.patches) source->patches.push_back(patch.info);
+        source->poly_mesh = dir;
+    }
+    Mesh mesh = std::move(part.mesh);
     if (progress) progress(1.0);
     return mesh;
 }

@@ -4,6 +4,7 @@
 // cellProcAddressing), and each processor's point numbering kept for
 // writing moved points back.
 #include <algorithm>
+#include <array>
 #include <map>
 #include <string>
 #include <system_error>
@@ -93,6 +94,55 @@ std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const
     return out;
 }
 
+OpenFoamProcessorMesh read_openfoam_processor(const fs::path& dir) {
+    PolyMeshFiles files;
+    std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
+    for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
+    foam::PolyMeshPart part = foam::read_poly_mesh_part(dir, std::move(files), true);
+    OpenFoamProcessorMesh out;
+    const std::vector<std::int32_t> point_of =
+        read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(part.mesh.num_points()), false);
+    const std::vector<std::int32_t> cell_of =
+        read_addressing(dir, "cellProcAddressing", static_cast<std::int64_t>(part.mesh.cells.size()), false);
+    out.point_ids.assign(point_of.begin(), point_of.end());
+    out.cell_ids.assign(cell_of.begin(), cell_of.end());
+    // Each cell's nodes in the order read_openfoam_decomposed gives them: the
+    // canonical order of order_cell over the case's point ids.
+    const Mesh& m = part.mesh;
+    ElementList cells;
+    cells.reserve(m.cells.size(), 8);
+    for (std::size_t c = 0; c < m.cells.size(); ++c) {
+        const CellType type = m.cells.types[c];
+        const auto nodes = m.cells.nodes_of(c);
+        const foam::FaceTable& t = foam::outward_faces(type);
+        foam::CellFaces faces;
+        faces.count = t.count;
+        for (int k = 0; k < t.count; ++k) {
+            faces.size[k] = t.size[k];
+            for (int i = 0; i < t.size[k]; ++i)
+                faces.node[k][i] = point_of[static_cast<std::size_t>(nodes[static_cast<std::size_t>(t.node[k][i])])];
+        }
+        const foam::OrderedCell oc = foam::order_cell(faces);
+        if (oc.shape != foam::CellShape::ok)
+            throw ParseError((dir / "pointProcAddressing").string(), 0,
+                             "distinct points of the case for the corners of cell " + str(static_cast<std::int64_t>(c)),
+                             "a point twice");
+        std::array<NodeId, 8> local{};
+        const int n = nodes_per_cell(oc.type);
+        for (int k = 0; k < n; ++k)
+            for (NodeId node : nodes)
+                if (point_of[static_cast<std::size_t>(node)] == oc.node[static_cast<std::size_t>(k)]) local[static_cast<std::size_t>(k)] = node;
+        cells.push_back(oc.type, {local.data(), static_cast<std::size_t>(n)});
+    }
+    out.mesh = std::move(part.mesh);
+    out.mesh.cells = std::move(cells);
+    out.interface_nodes = std::move(part.processor_nodes);
+    out.points_format = part.points_format;
+    for (const foam::Patch& patch : part.patches)
+        if (!patch.processor) out.patches.push_back(patch.info);
+    return out;
+}
+
 Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const ProgressFn& progress,
                                     OpenFoamSource* source) {
     std::vector<ProcessorPart> parts;
@@ -102,7 +152,7 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
         PolyMeshFiles files;
         std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
         for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
-        ProcessorPart part{foam::read_poly_mesh_part(dir, files, true), {}, {}, {}};
+        ProcessorPart part{foam::read_poly_mesh_part(dir, std::move(files), true), {}, {}, {}};
         const Mesh& m = part.part.mesh;
         part.point_of = read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(m.num_points()), false);
         part.face_of = read_addressing(dir, "faceProcAddressing", part.part.num_faces, true);

@@ -60,8 +60,12 @@ struct PolyMeshPart {
     std::vector<Patch> patches;
     Format points_format = Format::ascii;
     std::int64_t num_faces = 0;
+    std::vector<NodeId> processor_nodes;  // the nodes of the processor patches' faces, sorted, each once
 };
 PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files, bool processor_patches);
+/// The same, freeing each file's text once it is parsed (the faces, the
+/// largest, before the cells are built): a lower peak of memory.
+PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, PolyMeshFiles&& files, bool processor_patches);
 
 /// The file dir/name, or dir/name.gz uncompressed (IoError when neither can be read).
 std::string read_mesh_file(const std::filesystem::path& dir, const char* name);

@@ -322,8 +322,17 @@ std::vector<std::int32_t> foam::read_label_list_file(const std::string& file, st
     return labels;
 }
 
-foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files,
-                                             bool processor_patches) {
+namespace {
+
+/// Clears `text` and gives its memory back.
+void release_text(std::string* text) {
+    if (text) std::string().swap(*text);
+}
+
+/// read_poly_mesh_part; with `release` (the same files as `files`), each
+/// file's text is freed once parsed.
+foam::PolyMeshPart read_part(const std::filesystem::path& dir, const PolyMeshFiles& files, PolyMeshFiles* release,
+                             bool processor_patches) {
     const auto name = [&](const char* file) { return (dir / file).string(); };
     foam::PolyMesh pm;
     foam::FaceLines where{name("faces"), name("owner"), {}};
@@ -335,6 +344,7 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
     const auto num_points = static_cast<std::int64_t>(pm.points.size() / 3);
     if (num_points > max_label)
         points.fail("at most " + str(max_label) + " points", str(num_points));
+    release_text(release ? &release->points : nullptr);
 
     Scanner faces(name("faces"), files.faces);
     const foam::Header faces_header = open_file(faces, {"faceList", "faceCompactList"});
@@ -343,6 +353,7 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
     else read_face_compact_list(faces, sink);
     expect_end(faces);
     const auto num_faces = static_cast<std::int64_t>(pm.num_faces());
+    release_text(release ? &release->faces : nullptr);  // the largest: freed before the cells are built
 
     Scanner owner(name("owner"), files.owner);
     open_file(owner, {"labelList"});
@@ -390,6 +401,8 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
                          str(static_cast<std::int64_t>(pm.neighbour.size())) +
                          " of them internal, can bound no more cells of 4 faces or more)",
                      str(largest.cells - 1));
+    release_text(release ? &release->owner : nullptr);
+    release_text(release ? &release->neighbour : nullptr);
 
     Scanner boundary(name("boundary"), files.boundary);
     pm.patches = read_boundary(boundary, static_cast<std::int64_t>(pm.neighbour.size()), num_faces, processor_patches);
@@ -398,8 +411,13 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
     mesh.dim = 3;
     mesh.cells = foam::cells_from_faces(pm, num_cells, where);
     mesh.points = std::move(pm.points);
+    std::vector<NodeId> processor_nodes;
     for (const foam::Patch& patch : pm.patches) {
-        if (patch.processor) continue;  // faces another processor shares: inner faces of the whole mesh
+        if (patch.processor) {  // faces another processor shares: inner faces of the whole mesh
+            processor_nodes.insert(processor_nodes.end(), pm.face_nodes.begin() + pm.face_offsets[patch.start],
+                                   pm.face_nodes.begin() + pm.face_offsets[patch.start + patch.size]);
+            continue;
+        }
         Marker marker{patch.name, {}};
         marker.elements.reserve(static_cast<std::size_t>(patch.size), 4);
         for (std::int64_t f = patch.start; f < patch.start + patch.size; ++f) {
@@ -411,7 +429,21 @@ foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, c
         mesh.markers.push_back(std::move(marker));
     }
     validate(mesh);
-    return {std::move(mesh), std::move(pm.patches), points_header.format, num_faces};
+    std::sort(processor_nodes.begin(), processor_nodes.end());
+    processor_nodes.erase(std::unique(processor_nodes.begin(), processor_nodes.end()), processor_nodes.end());
+    return {std::move(mesh), std::move(pm.patches), points_header.format, num_faces, std::move(processor_nodes)};
+}
+
+}  // namespace
+
+foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files,
+                                             bool processor_patches) {
+    return read_part(dir, files, nullptr, processor_patches);
+}
+
+foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, PolyMeshFiles&& files,
+                                             bool processor_patches) {
+    return read_part(dir, files, &files, processor_patches);
 }
 
 Mesh read_openfoam_files(const std::filesystem::path& dir, const PolyMeshFiles& files, OpenFoamSource* source) {

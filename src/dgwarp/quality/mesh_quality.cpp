@@ -7,6 +7,7 @@
 #include <iterator>
 #include <limits>
 
+#include "dgwarp/core/ordered_sum.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
 
@@ -15,21 +16,6 @@ namespace dgwarp {
 namespace {
 
 constexpr int histogram_bins = 11;  // (-inf,0], (0,0.1], ..., (0.9,1]
-
-/// Compensated (Neumaier) sum in index order: deterministic, and accurate to
-/// about one rounding whatever the number of cells.
-class OrderedSum {
-public:
-    void add(double v) {
-        const double t = sum_ + v;
-        compensation_ += std::fabs(sum_) >= std::fabs(v) ? (sum_ - t) + v : (v - t) + sum_;
-        sum_ = t;
-    }
-    double value() const { return sum_ + compensation_; }
-
-private:
-    double sum_ = 0, compensation_ = 0;
-};
 
 /// Copies the coordinates (from `points`) of cell i into `out` (nodes × dim, row-major).
 std::span<const double> cell_coords(const Mesh& mesh, std::span<const double> points, std::size_t i,

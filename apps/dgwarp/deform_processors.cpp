@@ -1,0 +1,367 @@
+// deform_processors.hpp: each process reads, deforms, measures and writes its
+// own processor folder of a decomposed OpenFOAM case; rank 0 reports.
+#include "deform_processors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <tuple>
+#include <variant>
+
+#include "commands.hpp"
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/io/motion_file.hpp"
+#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/repair/unrepairable_cells.hpp"
+#include "flag_values.hpp"
+#include "foam_output.hpp"
+#include "frame_output.hpp"
+#include "output_files.hpp"
+#include "part_reductions.hpp"
+#include "processor_part.hpp"
+#include "report.hpp"
+
+namespace dgwarp::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The arguments every process needs, sent by rank 0 (mpi_run_everywhere).
+nlohmann::json processor_args_json(const DeformArgs& a, const std::string& given_output) {
+    const SetupArgs& s = a.setup;
+    return {{"mesh", s.mesh},
+            {"motion", s.motion},
+            {"method", s.method},
+            {"method_given", s.method_given},
+            {"given", std::vector<std::string>(s.given.begin(), s.given.end())},
+            {"zone", s.zone},
+            {"threads", s.threads},
+            {"a_translation", s.a_translation},
+            {"a_rotation", s.a_rotation},
+            {"length_scale", s.length_scale},
+            {"weights", s.weights},
+            {"dgm_substep", s.dgm_substep},
+            {"idw_exponent_moving", s.idw_exponent_moving},
+            {"idw_exponent_static", s.idw_exponent_static},
+            {"rbf_radius", s.rbf_radius},
+            {"rbf_greedy", s.rbf_greedy},
+            {"harmonic_wall_spacing", s.harmonic_wall_spacing},
+            {"harmonic_growth", s.harmonic_growth},
+            {"output", a.output},
+            {"given_output", given_output},
+            {"json", a.json},
+            {"allow_invalid", a.allow_invalid},
+            {"no_untangle", a.no_untangle},
+            {"foam_time", a.foam_time},
+            {"quiet", a.quiet}};
+}
+
+DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_output) {
+    DeformArgs a;
+    SetupArgs& s = a.setup;
+    s.mesh = j.at("mesh");
+    s.motion = j.at("motion");
+    s.method = j.at("method");
+    s.method_given = j.at("method_given");
+    for (const auto& g : j.at("given")) s.given.insert(g.get<std::string>());
+    s.zone = j.at("zone");
+    s.threads = j.at("threads");
+    s.a_translation = j.at("a_translation");
+    s.a_rotation = j.at("a_rotation");
+    s.length_scale = j.at("length_scale");
+    s.weights = j.at("weights");
+    s.dgm_substep = j.at("dgm_substep");
+    s.idw_exponent_moving = j.at("idw_exponent_moving");
+    s.idw_exponent_static = j.at("idw_exponent_static");
+    s.rbf_radius = j.at("rbf_radius");
+    s.rbf_greedy = j.at("rbf_greedy");
+    s.harmonic_wall_spacing = j.at("harmonic_wall_spacing");
+    s.harmonic_growth = j.at("harmonic_growth");
+    a.output = j.at("output");
+    given_output = j.at("given_output");
+    a.json = j.at("json");
+    a.allow_invalid = j.at("allow_invalid");
+    a.no_untangle = j.at("no_untangle");
+    a.foam_time = j.at("foam_time");
+    a.quiet = j.at("quiet");
+    return a;
+}
+
+/// "a, b", or "none".
+std::string processor_name_list(const std::vector<std::string>& names) {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+    return s.empty() ? "none" : s;
+}
+
+void deform_per_processor(const DeformArgs& a, const std::string& given_output) {
+    const int rank = mpi_rank(), processes = mpi_processes();
+    const bool text = rank == 0 && !a.json && !a.quiet;
+    ProgressLine progress(text);
+    WarningPrinter warnings(text);
+    use_threads(a.setup.threads);
+    const Method method = chosen_methods(a.setup, false).front();
+    Inputs in;
+    in.args = a.setup;
+    ProcessorPart part;
+    std::vector<NodeId> interface;
+    std::vector<std::string> foam_times;
+    Stopwatch sw;
+
+    // Each process reads the motion and its own processor folder.
+    mpi_collectively([&] {
+        if (rank == 0) refuse_other_methods_options(a.setup, method);
+        in.spec = read_motion_file(a.setup.motion);
+        foam_times = foam_time_names(in.spec, frame_count(in.spec), a.foam_time);
+        if (rank == 0) {
+            std::vector<fs::path> inputs = motion_files(in.spec);
+            inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
+            for (const auto& file : mesh_input_files(a.setup.mesh)) inputs.push_back(file);
+            check_foam_outputs(a.output, foam_times, a.setup.mesh, inputs);
+        }
+        const std::vector<fs::path> processors = openfoam_processor_meshes(a.setup.mesh);
+        if (processors.size() != static_cast<std::size_t>(processes))
+            throw FormatError(a.setup.mesh + ": " + std::to_string(processors.size()) + " processor folders for " +
+                              std::to_string(processes) + " processes");
+        progress.phase("reading " + processors[static_cast<std::size_t>(rank)].string());
+        OpenFoamProcessorMesh read = read_openfoam_processor(processors[static_cast<std::size_t>(rank)]);
+        part.poly_mesh = processors[static_cast<std::size_t>(rank)];
+        part.point_ids = std::move(read.point_ids);
+        part.cell_ids = std::move(read.cell_ids);
+        part.points_format = read.points_format;
+        interface = std::move(read.interface_nodes);
+        in.mesh = std::move(read.mesh);
+        for (const Marker& m : in.mesh.markers) part.marker_elements.push_back(static_cast<std::int64_t>(m.elements.size()));
+    });
+    in.read_seconds = sw.lap();
+
+    // The same patches, in the same order, on every process.
+    std::string names;
+    for (const Marker& m : in.mesh.markers) names += m.name + "\n";
+    const std::string names0 = mpi_broadcast_text(names);
+    mpi_collectively([&] {
+        if (names != names0)
+            throw ParseError((part.poly_mesh / "boundary").string(), 0,
+                             "the patches of processor 0, in the same order (decomposePar writes every patch to every "
+                             "processor)",
+                             "other patches");
+    });
+
+    // The boundary: each process's nodes on the markers every process has them on.
+    progress.phase("classifying the boundary");
+    share_interface_markers(in.mesh, interface, part);
+    if (in.spec.shared_tolerance <= 0) {
+        // The tolerance one process takes: 1e-9 × the whole case's bounding-box diagonal.
+        double sum = 0;
+        for (int d = 0; d < 3; ++d) {
+            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+            for (std::size_t p = static_cast<std::size_t>(d); p < in.mesh.points.size(); p += 3) {
+                lo = std::min(lo, in.mesh.points[p]);
+                hi = std::max(hi, in.mesh.points[p]);
+            }
+            lo = mpi_min(lo);
+            hi = mpi_max(hi);
+            sum += (hi - lo) * (hi - lo);
+        }
+        in.spec.shared_tolerance = 1e-9 * std::sqrt(sum);
+    }
+    mpi_collectively([&] { in.boundary = resolve_boundary(in.mesh, in.spec); });
+    const MeshCounts counts = case_counts(in.mesh, part);
+    std::int64_t boundary_nodes = 0, moving_nodes = 0;
+    for (std::size_t b = 0; b < in.boundary.boundary.nodes.size(); ++b)
+        if (part.owned[static_cast<std::size_t>(in.boundary.boundary.nodes[b])]) {
+            ++boundary_nodes;
+            moving_nodes += in.boundary.boundary.moving[b];
+        }
+    boundary_nodes = mpi_sum(boundary_nodes);
+    moving_nodes = mpi_sum(moving_nodes);
+    in.resolve_seconds = sw.lap();
+
+    // The original quality, judged by the whole case's majority orientation per cell type.
+    progress.phase("measuring the original mesh's quality");
+    in.own_orientation = cell_orientations(in.mesh);
+    std::vector<std::int64_t> balance(std::size(all_cell_types), 0);
+    for (std::size_t c = 0; c < in.own_orientation.size(); ++c)
+        balance[static_cast<std::size_t>(in.mesh.cells.types[c])] += in.own_orientation[c];
+    balance = mpi_sum(balance);
+    in.orientation.resize(in.own_orientation.size());
+    for (std::size_t c = 0; c < in.orientation.size(); ++c)
+        in.orientation[c] = balance[static_cast<std::size_t>(in.mesh.cells.types[c])] < 0 ? -1 : 1;
+    in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
+    in.original_quality = case_quality(in.original_cell_quality, part.cell_ids);
+    if (const std::int64_t bad = in.original_quality.inverted; bad > 0)
+        in.boundary.warnings.push_back(
+            std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
+            " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
+            std::to_string(in.original_quality.worst_cell) +
+            "): they are counted as inverted before and after, but not blamed on the motion, and do not make a "
+            "step invalid");
+    in.boundary.warnings =
+        case_warnings(in.boundary.warnings, mpi_sum(owned_moving_and_static(in.mesh, in.boundary, part.owned)));
+    in.quality_seconds = sw.lap();
+    progress.clear();
+    const std::size_t frames = frame_count(in.spec);
+    if (text) {
+        std::cout << "mesh      " << in.args.mesh << ": " << describe_mesh(counts) << ", read by " << processes
+                  << " processes, each its own processor folder\n";
+        std::cout << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
+                  << "; moving: " << processor_name_list(in.boundary.moving_markers)
+                  << "; static: " << processor_name_list(in.boundary.static_markers) << "\n";
+        std::cout << "boundary  " << boundary_nodes << " nodes (" << moving_nodes << " moving)\n";
+        for (const auto& w : in.boundary.warnings) warnings.print(w);
+    }
+
+    // The plan, on every process over its own nodes.
+    MethodRun run;
+    run.planned.method = method;
+    run.planned.options = method_options(a.setup);
+    progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(processes) + " processes");
+    std::int64_t outside_hull = 0;
+    mpi_collectively([&] {
+        run.planned.distributed =
+            mpi_prepare_own(method, 3, run.planned.options, in.mesh.points, part.point_ids, in.boundary.boundary,
+                            run.planned.plan, run.planned.process_prepare_seconds, outside_hull);
+    });
+    run.planned.prepare_seconds = sw.lap();
+    progress.clear();
+    if (text) print_plan(std::cout, in, run.planned, warnings);
+
+    std::vector<double> deformed(in.mesh.points.size());
+    bool base_written = false;
+    for (std::size_t k = 0; k < frames; ++k) {
+        FrameResult f;
+        f.frame = k;
+        f.time = frame_time(in.spec, k);
+        f.own_parts = true;
+        progress.phase(std::string(method_name(method)) + ": deforming" +
+                       (frames > 1 ? " frame " + std::to_string(k) + " (" + std::to_string(k + 1) + " of " +
+                                         std::to_string(frames) + ")"
+                                   : ""));
+        ResolvedFrame motion;
+        mpi_collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
+        const std::vector<std::string> motion_warnings = case_warnings(motion.warnings);
+        f.warnings = motion_warnings;
+        Stopwatch step_sw;
+        f.step = mpi_deform_own(*run.planned.distributed, in.mesh.points, motion.motion, deformed, f.process_seconds);
+        f.deform_seconds = step_sw.lap();
+        const std::vector<std::string> step_warning_texts = step_warnings(f.step);
+        f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
+
+        // The frame's quality, reduced over the processes.
+        const std::vector<double> quality = cell_qualities(in.mesh, deformed, in.orientation);
+        const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
+        const std::vector<std::int64_t> folded = newly_inverted_cells(quality, in.original_cell_quality);
+        const std::vector<std::int64_t> on_boundary =
+            cells_with_only_fixed_nodes(in.mesh.cells, in.boundary.boundary.nodes, folded);
+        f.quality = case_quality(quality, part.cell_ids);
+        f.ratio = case_ratios(ratio, part.cell_ids);
+        std::tie(f.worst_inverted, f.inverted_by_motion) = case_worst(folded, quality, part.cell_ids, 10);
+        std::tie(f.worst_on_boundary, f.inverted_on_boundary) = case_worst(on_boundary, quality, part.cell_ids, 10);
+        f.quality_seconds = step_sw.lap();
+        if (method == Method::dg_harmonic && !a.no_untangle && f.inverted_by_motion > 0 && f.inverted_on_boundary == 0)
+            // One process would repair them (the last resort); it moves nodes
+            // that several processes hold, so it is not run on the parts.
+            throw InvalidResultError(
+                "dg-harmonic inverted " + std::to_string(f.inverted_by_motion) + " cell" +
+                    (f.inverted_by_motion == 1 ? "" : "s") + " in frame " + std::to_string(k) + " (worst: " +
+                    cell_list(f.worst_inverted) +
+                    "), which its last resort (untangle) would repair on one process; it does not run when each "
+                    "process reads its own processor folder. Nothing was written for this frame. Run with "
+                    "--untangle (rank 0 then reads the whole case and repairs them), or on one process",
+                f.inverted_by_motion);
+        const bool invalid = f.inverted_by_motion > 0;
+        if (!invalid || a.allow_invalid) {
+            write_processor_points(a.output, foam_times[k], part, deformed, base_written);
+            f.output = openfoam_points_file(fs::path(a.output) / "processor*", foam_times[k]).file.string();
+            f.write_seconds = step_sw.lap();
+        }
+        if (text) {
+            progress.clear();
+            print_frame(in, f, motion_warnings, step_warning_texts, frames, warnings);
+        }
+        run.frames.push_back(std::move(f));
+        if (invalid) {
+            run.invalid = true;
+            run.error = invalid_frame_error(run.frames.back());
+            if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
+        }
+    }
+    progress.clear();
+
+    if (a.json && rank == 0) {
+        nlohmann::json j = inputs_json(in, "deform");
+        j["mesh"] = mesh_json(counts);
+        j["boundary"]["nodes"] = boundary_nodes;
+        j["boundary"]["moving_nodes"] = moving_nodes;
+        j["output"] = given_output;
+        j["processes"] = processes;
+        for (const auto& w : plan_warnings(run.planned)) j["warnings"].push_back(w);
+        const nlohmann::json method_run = run_json(in, run);
+        for (const auto& [key, value] : method_run.items()) j[key] = value;
+        j["valid"] = !run.invalid;
+        std::cout << j.dump(2) << "\n";
+    }
+    if (run.invalid) {
+        if (!a.allow_invalid)
+            throw InvalidResultError(run.error + ". Nothing was written for an invalid frame. " +
+                                         invalid_result_advice(method) + "; or --allow-invalid to write it anyway",
+                                     1);
+        if (!a.quiet && rank == 0) std::cerr << "warning: " << run.error << "; written anyway (--allow-invalid)\n";
+    }
+}
+
+/// True when a marker of `spec` moves by a per-node table (node ids of the whole case).
+bool has_node_tables(const MotionSpec& spec) {
+    const auto tabled = [](const MarkerMotion& m) {
+        return std::holds_alternative<PrescribedDisplacements>(m) || std::holds_alternative<PrescribedPositions>(m) ||
+               std::holds_alternative<PrescribedNodeMotions>(m);
+    };
+    if (tabled(spec.default_motion)) return true;
+    for (const MotionFrame& frame : spec.frames)
+        for (const auto& [name, motion] : frame.markers)
+            if (tabled(motion)) return true;
+    return false;
+}
+
+}  // namespace
+
+bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& methods) {
+    if (mpi_processes() < 2 || methods.size() != 1 || !a.plan.empty() || a.untangle || !writes_openfoam(a.output))
+        return false;
+    try {
+        if (openfoam_processor_meshes(a.setup.mesh).size() != static_cast<std::size_t>(mpi_processes())) return false;
+        return !has_node_tables(read_motion_file(a.setup.motion));
+    } catch (const Error&) {
+        return false;  // the whole-case run reports it
+    }
+}
+
+void run_deform_per_processor(const DeformArgs& a, const std::string& given_output) {
+    mpi_run_everywhere(processor_args_json(a, given_output).dump());
+    deform_per_processor(a, given_output);
+}
+
+int run_everywhere(const std::string& payload) {
+    // Rank 0 reports every error; the other processes only exit with its code.
+    try {
+        std::string given_output;
+        const DeformArgs a = processor_args_from_json(nlohmann::json::parse(payload), given_output);
+        deform_per_processor(a, given_output);
+        return exit_ok;
+    } catch (const CLI::ParseError&) {
+        return exit_usage;
+    } catch (const InvalidResultError&) {
+        return exit_invalid_result;
+    } catch (const Error&) {
+        return exit_bad_input;
+    } catch (const std::exception&) {
+        return exit_internal;
+    }
+}
+
+}  // namespace dgwarp::cli

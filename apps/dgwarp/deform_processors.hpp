@@ -1,0 +1,28 @@
+#pragma once
+// `mpirun -np P dgwarp deform CASE -m MOTION -o OUT` where CASE is a
+// decomposed OpenFOAM case of P processor folders (docs/MPI.md): process r
+// reads only CASE/processor<r> (its polyMesh, pointProcAddressing and
+// cellProcAddressing), resolves its boundary nodes' motions, prepares and
+// deforms with the distributed plans of dgwarp/mpi, measures its cells, and
+// writes only OUT/processor<r>; no process holds the whole mesh. The report
+// (the same fields as one process's) is reduced to rank 0, which prints it.
+#include <string>
+#include <vector>
+
+#include "deform_report.hpp"
+
+namespace dgwarp::cli {
+
+/// Rank 0: whether `a` runs this way: more than one process, one method,
+/// no --plan nor --untangle, an OpenFOAM case output, a mesh that is a
+/// decomposed case of as many processor folders as processes, and a motion
+/// file that reads and gives no marker per-node tables (their node ids are
+/// the whole case's). Otherwise rank 0 reads the whole case (mpi_session.hpp).
+bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& methods);
+
+/// Rank 0: every process runs the deformation on its own processor folder;
+/// `given_output`: the output as given (for the report). Throws as `dgwarp
+/// deform` does, on every process alike.
+void run_deform_per_processor(const DeformArgs& a, const std::string& given_output);
+
+}  // namespace dgwarp::cli

@@ -1,0 +1,126 @@
+// deform_report.hpp: the frames' and methods' reports of `dgwarp deform`.
+#include "deform_report.hpp"
+
+#include <iomanip>
+#include <iostream>
+
+#include "report.hpp"
+
+namespace dgwarp::cli {
+
+std::string cell_list(const std::vector<std::int64_t>& cells) {
+    std::string s;
+    for (auto c : cells) s += (s.empty() ? "" : ", ") + std::to_string(c);
+    return s;
+}
+
+nlohmann::json untangle_json(const UntangleReport& u) {
+    return {{"inverted_before", u.inverted_before},
+            {"inverted_after", u.inverted_after},
+            {"below_target_before", u.below_target_before},
+            {"below_target_after", u.below_target_after},
+            {"nodes_moved", u.nodes_moved},
+            {"max_move", u.max_move},
+            {"rounds", u.rounds},
+            {"min_quality_after", u.min_quality_after}};
+}
+
+nlohmann::json frame_json(const FrameResult& f) {
+    nlohmann::json j = {{"frame", f.frame},
+            {"time", f.time},
+            {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)},
+            {"quality", quality_json(f.quality)},
+            {"ratio", ratio_json(f.ratio)},
+            {"inverted_by_motion", f.inverted_by_motion},
+            {"worst_inverted_cells", f.worst_inverted},
+            {"inverted_on_boundary", f.inverted_on_boundary},
+            {"substeps", f.step.substeps},
+            {"invalid_graph_simplices", f.step.invalid_graph_simplices},
+            {"rbf_centres", f.step.rbf_centres},
+            {"rbf_boundary_error", f.step.rbf_boundary_error},
+            {"untangle", f.untangled ? untangle_json(*f.untangled) : nlohmann::json(nullptr)},
+            {"last_resort", f.last_resort},
+            {"seconds",
+             {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
+              {"write", f.write_seconds}}},
+            {"warnings", f.warnings}};
+    if (!f.process_seconds.empty()) j["process_seconds"] = f.process_seconds;
+    return j;
+}
+
+nlohmann::json run_json(const Inputs& in, const MethodRun& r) {
+    nlohmann::json j = {{"method", method_name(r.planned.method)}, {"plan", plan_json(in, r.planned)},
+                        {"frames", nlohmann::json::array()}, {"valid", !r.invalid},
+                        {"error", r.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.error)}};
+    for (const auto& f : r.frames) j["frames"].push_back(frame_json(f));
+    return j;
+}
+
+void print_single_frame(const Inputs& in, const FrameResult& f) {
+    std::cout << "quality (Knupp shape)   before      after\n" << std::fixed << std::setprecision(6);
+    std::cout << "  min               " << std::setw(10) << in.original_quality.min << "  " << std::setw(10)
+              << f.quality.min << "  (cell " << f.quality.worst_cell << ")\n";
+    std::cout << "  mean              " << std::setw(10) << in.original_quality.mean << "  " << std::setw(10)
+              << f.quality.mean << "\n";
+    std::cout << "  inverted          " << std::setw(10) << in.original_quality.inverted << "  " << std::setw(10)
+              << f.quality.inverted << "\n";
+    if (in.original_quality.inverted > 0)
+        std::cout << "  inverted by the motion " << f.inverted_by_motion << " (the other "
+                  << f.quality.inverted - f.inverted_by_motion << " were already inverted or degenerate in the input)\n";
+    if (f.inverted_on_boundary > 0)
+        std::cout << "  inverted with every node on the boundary " << f.inverted_on_boundary << " (cells "
+                  << cell_list(f.worst_on_boundary) << (f.inverted_on_boundary > 10 ? ", ..." : "")
+                  << "): the boundary motion itself folds them\n";
+    std::cout << "ratio after/before, per cell: min " << f.ratio.min << " (cell " << f.ratio.worst_cell
+              << "), mean " << f.ratio.mean << "\n";
+    std::cout.unsetf(std::ios::floatfield);
+    std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
+              << ", write " << milliseconds(f.write_seconds) << "\n";
+    if (!f.process_seconds.empty()) {
+        std::cout << "processes " << f.process_seconds.size() << ", step on each:";
+        for (double s : f.process_seconds) std::cout << " " << milliseconds(s);
+        std::cout << (f.own_parts ? " (each process its own processor folder)\n"
+                                  : " (deform: with the scatter and gather by rank 0)\n");
+    }
+    if (const auto& u = f.untangled)
+        std::cout << "untangle  " << (f.last_resort ? "(dg-harmonic's last resort) " : "") << "inverted cells "
+                  << u->inverted_before << " -> " << u->inverted_after
+                  << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
+                  << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
+                  << milliseconds(f.untangle_seconds) << "\n";
+    if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
+                                       << f.step.invalid_graph_simplices << " invalid simplices)\n";
+}
+
+void print_frame_line(const FrameResult& f) {
+    char line[200];
+    std::snprintf(line, sizeof line, "frame %4zu  t=%-10g min %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
+                  f.frame, f.time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
+                  f.ratio.min, milliseconds(f.deform_seconds).c_str());
+    std::cout << line << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
+}
+
+void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,
+                 const std::vector<std::string>& step_warning_texts, std::size_t frames, WarningPrinter& warnings) {
+    for (const auto& w : motion_warnings) warnings.print(w);  // they name the frame
+    for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(f.frame) + ": ");
+    if (frames == 1) {
+        print_single_frame(in, f);
+        if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
+    } else {
+        print_frame_line(f);
+    }
+}
+
+std::string invalid_frame_error(const FrameResult& bad) {
+    std::string e = std::to_string(bad.inverted_by_motion) + " inverted cell" + (bad.inverted_by_motion == 1 ? "" : "s") +
+                    " in frame " + std::to_string(bad.frame) + " (worst: " + cell_list(bad.worst_inverted) + ")";
+    if (bad.inverted_on_boundary > 0)
+        e += "; " + std::to_string(bad.inverted_on_boundary) + " of them ha" + (bad.inverted_on_boundary == 1 ? "s" : "ve") +
+             " every node on the boundary (worst: " + cell_list(bad.worst_on_boundary) +
+             "): the boundary motion itself folds them, which no method can repair; check the "
+             "motion (nodes a moving marker shares with a static one follow the moving one)";
+    return e;
+}
+
+}  // namespace dgwarp::cli

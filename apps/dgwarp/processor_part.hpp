@@ -1,0 +1,52 @@
+#pragma once
+// Under mpirun on a decomposed OpenFOAM case (deform_processors.hpp): what a
+// process holds of the case besides its part of the mesh, and what the
+// processes share about their parts. Collective: every process calls them.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "deform_setup.hpp"
+#include "dgwarp/io/openfoam.hpp"
+#include "report.hpp"
+
+namespace dgwarp::cli {
+
+/// What this process holds of the case, beyond its part of the mesh.
+struct ProcessorPart {
+    std::filesystem::path poly_mesh;      // CASE/processor<r>/constant/polyMesh
+    std::vector<std::int64_t> point_ids;  // pointProcAddressing
+    std::vector<std::int64_t> cell_ids;   // cellProcAddressing
+    foam::Format points_format = foam::Format::ascii;
+    std::vector<std::uint8_t> owned;      // per point: this process is the lowest rank holding it
+    std::vector<std::int64_t> marker_elements;  // per marker: its faces here (before shared nodes were added)
+};
+
+/// Every process's interface points (on processor patches) are held by
+/// several processes, possibly on different markers: a point on the edge of a
+/// patch whose faces are all on one side. Gives each process every marker
+/// any process has each of its points on (as vertex elements added to the
+/// marker, which resolve_boundary reads as the marker's nodes), so that every
+/// process classifies and moves a shared point as the whole case does; and
+/// sets part.owned (the lowest rank holding a point owns it). `interface`:
+/// the local points on processor patches, sorted.
+void share_interface_markers(Mesh& mesh, const std::vector<NodeId>& interface, ProcessorPart& part);
+
+/// The whole case's counts (describe_mesh, mesh_json), from every process's part.
+MeshCounts case_counts(const Mesh& mesh, const ProcessorPart& part);
+
+/// The boundary nodes this process owns that are on a moving and on a static marker.
+std::int64_t owned_moving_and_static(const Mesh& mesh, const ResolvedBoundary& b, const std::vector<std::uint8_t>& owned);
+
+/// Writes this process's points of frame `time` into its processor folder of
+/// `out` (OUT/processor<r>/<time>/polyMesh/points; first, unless
+/// `base_written`, a copy of its constant/polyMesh when OUT is not the input):
+/// to a temporary file beside the points file, renamed into place only when
+/// every process wrote its own, so that an error on one leaves no process's
+/// new points (every process throws it). Returns the points file.
+std::filesystem::path write_processor_points(const std::filesystem::path& out, const std::string& time,
+                                             const ProcessorPart& part, const std::vector<double>& points,
+                                             bool& base_written);
+
+}  // namespace dgwarp::cli
