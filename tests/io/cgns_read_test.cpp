@@ -256,6 +256,23 @@ TEST(CgnsRead, BadContentIsNamedByFileZoneSectionAndBc) {
     expect_cgns_error<IoError>(dir / "text.cgns", {"text.cgns", "cannot open as a CGNS file"});
 }
 
+// libcgns 3.4 reads a node's data through a pointer it never set when the
+// node's data type is not one it knows (exactly MT, I4, I8, R4, R8, C1): the
+// fuzzer's ADF file (a BC's GridLocation of type "c1") made it write into
+// memory it had freed. The tree walk before cg_open refuses such a node by its path.
+TEST(CgnsRead, ANodeOfADataTypeLibcgnsCannotReadIsRefusedByItsPath) {
+    const auto adf = source_dir() / "tests" / "data" / "fuzz_regressions" / "cgns" / "adf-bc-gridlocation-type-c1.cgns";
+    expect_cgns_error<IoError>(adf, {adf.string(), "it is damaged (/Base/Zone/ZoneBC/UserDefined 5/GridLocation: data of "
+                                                   "type 'c1'; CGNS's types are MT, I4, I8, R4, R8 and C1)"});
+    const auto dir = scratch_dir();
+    TestZone z = cgns_tet_zone();
+    z.bcs = {{"wall", "", cgns_code::FaceCenter, false, {2}}};
+    write_test_cgns(dir / "b1.cgns", 3, {z});
+    ASSERT_NO_THROW(read_cgns(dir / "b1.cgns"));
+    set_cgns_node_data(dir / "b1.cgns", "/Base/Zone/ZoneBC/wall/GridLocation", "B1", "FaceCenter");
+    expect_cgns_error<IoError>(dir / "b1.cgns", {"b1.cgns", "(/Base/Zone/ZoneBC/wall/GridLocation: data of type 'B1'"});
+}
+
 // The files written here are valid CGNS (when the CGNS tools are installed:
 // scripts/install-deps.sh installs cgns-convert).
 TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {
