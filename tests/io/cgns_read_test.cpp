@@ -273,6 +273,21 @@ TEST(CgnsRead, ANodeOfADataTypeLibcgnsCannotReadIsRefusedByItsPath) {
     expect_cgns_error<IoError>(dir / "b1.cgns", {"b1.cgns", "(/Base/Zone/ZoneBC/wall/GridLocation: data of type 'B1'"});
 }
 
+// ADF takes bytes 100 and 101 of its header (numeric format, pointer size)
+// as they are and asserts, aborting the program, when one is 0 (the fuzzer's
+// crash-994eedb...): anything but 'B' or 'L' is refused before libcgns opens the file.
+TEST(CgnsRead, AnAdfHeaderOfAnotherNumericFormatIsRefused) {
+    const auto dir = scratch_dir();
+    const std::string bytes = slurp(cgns_data("tet-adf.cgns"));
+    ASSERT_EQ(bytes.substr(100, 2), "LB");
+    for (const auto& [at, value] : std::vector<std::pair<std::size_t, char>>{{100, '\0'}, {101, '\0'}, {100, 'C'}, {101, 'x'}}) {
+        std::string damaged = bytes;
+        damaged[at] = value;
+        write_text(dir / "format.cgns", damaged);
+        expect_cgns_error<IoError>(dir / "format.cgns", {"format.cgns", "its ADF header is damaged (its numeric format"});
+    }
+}
+
 // The files written here are valid CGNS (when the CGNS tools are installed:
 // scripts/install-deps.sh installs cgns-convert).
 TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {

@@ -35,7 +35,7 @@ void install_quiet_handler() {
 /// it begins with HDF5's signature (at 0 or a user block of 512, 1024, ...
 /// bytes), or with an ADF header whose tags are in place and whose end of file
 /// (after "AdF4": the root node's and the end's block and offset, in
-/// hexadecimal) the file reaches.
+/// hexadecimal) the file reaches, and whose format bytes are IEEE's.
 void check_file_kind(const std::filesystem::path& path, const std::string& name) {
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
@@ -60,6 +60,13 @@ void check_file_kind(const std::filesystem::path& path, const std::string& name)
         at = text.find(tag, at);
         if (at == std::string::npos) throw not_cgns(std::string("its ADF header is damaged (no ") + tag + ")");
     }
+    // Bytes 100 and 101: the numeric format (IEEE big or little endian) and
+    // the pointer size (64 or 32 bits), 'B' or 'L' each. ADF asserts (aborting
+    // the program) that neither is 0, and any other value would read the file
+    // in a format it was not written in.
+    const auto ieee = [](char c) { return c == 'B' || c == 'L'; };
+    if (text.size() < 102 || !ieee(text[100]) || !ieee(text[101]))
+        throw not_cgns("its ADF header is damaged (its numeric format and pointer size are not 'B' or 'L')");
     const std::size_t pointers = text.find("AdF4") + 4;
     if (pointers + 48 > text.size() ||
         text.substr(pointers, 48).find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
