@@ -105,3 +105,15 @@ TEST(CliCgns, DamagedFilesExitWith2AndWriteNothing) {
     }
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 2);
 }
+
+// The ADF file on which libcgns 3.4 wrote into freed memory (a GridLocation
+// of data type "c1"): refused before libcgns reads it, exit 2 naming the file and the node.
+TEST(CliCgns, AFileLibcgnsWouldCrashOnExitsWith2NamingTheNode) {
+    const auto file = source_dir() / "tests" / "data" / "fuzz_regressions" / "cgns" / "adf-bc-gridlocation-type-c1.cgns";
+    const CommandResult r = run_cli("info " + quoted(file));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(file.string() + ": cannot open as a CGNS file: it is damaged (/Base/Zone/ZoneBC/UserDefined "
+                                          "5/GridLocation: data of type 'c1'"),
+              std::string::npos)
+        << r.err;
+}

@@ -256,6 +256,38 @@ TEST(CgnsRead, BadContentIsNamedByFileZoneSectionAndBc) {
     expect_cgns_error<IoError>(dir / "text.cgns", {"text.cgns", "cannot open as a CGNS file"});
 }
 
+// libcgns 3.4 reads a node's data through a pointer it never set when the
+// node's data type is not one it knows (exactly MT, I4, I8, R4, R8, C1): the
+// fuzzer's ADF file (a BC's GridLocation of type "c1") made it write into
+// memory it had freed. The tree walk before cg_open refuses such a node by its path.
+TEST(CgnsRead, ANodeOfADataTypeLibcgnsCannotReadIsRefusedByItsPath) {
+    const auto adf = source_dir() / "tests" / "data" / "fuzz_regressions" / "cgns" / "adf-bc-gridlocation-type-c1.cgns";
+    expect_cgns_error<IoError>(adf, {adf.string(), "it is damaged (/Base/Zone/ZoneBC/UserDefined 5/GridLocation: data of "
+                                                   "type 'c1'; CGNS's types are MT, I4, I8, R4, R8 and C1)"});
+    const auto dir = scratch_dir();
+    TestZone z = cgns_tet_zone();
+    z.bcs = {{"wall", "", cgns_code::FaceCenter, false, {2}}};
+    write_test_cgns(dir / "b1.cgns", 3, {z});
+    ASSERT_NO_THROW(read_cgns(dir / "b1.cgns"));
+    set_cgns_node_data(dir / "b1.cgns", "/Base/Zone/ZoneBC/wall/GridLocation", "B1", "FaceCenter");
+    expect_cgns_error<IoError>(dir / "b1.cgns", {"b1.cgns", "(/Base/Zone/ZoneBC/wall/GridLocation: data of type 'B1'"});
+}
+
+// ADF takes bytes 100 and 101 of its header (numeric format, pointer size)
+// as they are and asserts, aborting the program, when one is 0 (the fuzzer's
+// crash-994eedb...): anything but 'B' or 'L' is refused before libcgns opens the file.
+TEST(CgnsRead, AnAdfHeaderOfAnotherNumericFormatIsRefused) {
+    const auto dir = scratch_dir();
+    const std::string bytes = slurp(cgns_data("tet-adf.cgns"));
+    ASSERT_EQ(bytes.substr(100, 2), "LB");
+    for (const auto& [at, value] : std::vector<std::pair<std::size_t, char>>{{100, '\0'}, {101, '\0'}, {100, 'C'}, {101, 'x'}}) {
+        std::string damaged = bytes;
+        damaged[at] = value;
+        write_text(dir / "format.cgns", damaged);
+        expect_cgns_error<IoError>(dir / "format.cgns", {"format.cgns", "its ADF header is damaged (its numeric format"});
+    }
+}
+
 // The files written here are valid CGNS (when the CGNS tools are installed:
 // scripts/install-deps.sh installs cgns-convert).
 TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {

@@ -78,7 +78,8 @@ TEST(CgnsWrite, CgnscheckAcceptsWhatItWritesAndCgnsToVtkReadsIt) {
 TEST(CgnsWrite, MeshesCgnsCannotHoldAreRefusedBeforeWriting) {
     const auto dir = scratch_dir();
     Mesh mesh = make_rect_box();
-    for (const std::string& bad : {std::string(), std::string("a/b"), std::string(33, 'm'), std::string("Cells"), std::string(" padded")}) {
+    for (const std::string& bad : {std::string(), std::string("a/b"), std::string(33, 'm'), std::string("Cells"), std::string(" padded"),
+                                 std::string("U\t"), std::string("\nwall"), std::string("wall\r"), std::string("\v")}) {
         Mesh renamed = mesh;
         renamed.markers[0].name = bad;
         EXPECT_THROW(write_cgns(dir / "bad.cgns", renamed), MeshError) << "'" << bad << "'";

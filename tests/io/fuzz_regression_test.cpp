@@ -79,8 +79,12 @@ TEST(FuzzRegression, OpenFoam) {
 }
 
 TEST(FuzzRegression, Cgns) {
-    // Every hand-made hostile input (a structured zone, truncated HDF5 and ADF files) fails cleanly; every seed is read.
-    const std::size_t hostile = files_in(regressions("cgns")).size();
+    // Every input fails cleanly (hand-made: a structured zone, truncated HDF5
+    // and ADF files) but those named readable-*, files dgwarp reads whose
+    // mesh the fuzz check writes and reads back (a marker name the writer
+    // refuses); every seed is read.
+    std::size_t hostile = 0;
+    for (const auto& file : files_in(regressions("cgns"))) hostile += file.filename().string().rfind("readable-", 0) != 0;
     EXPECT_EQ(replay(regressions("cgns"), fuzz::check_cgns), hostile);
     EXPECT_EQ(replay(seeds("cgns"), fuzz::check_cgns), 0u);
 }

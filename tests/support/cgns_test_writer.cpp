@@ -1,5 +1,6 @@
 #include "support/cgns_test_writer.hpp"
 
+#include <cgns_io.h>
 #include <cgnslib.h>
 
 #include <set>
@@ -86,6 +87,26 @@ void write_test_cgns(const std::filesystem::path& path, int dim, const std::vect
         }
     }
     cgns_test_check(cg_close(fn), "close");
+}
+
+void set_cgns_node_data(const std::filesystem::path& path, const std::string& node_path, const std::string& type,
+                        const std::string& bytes) {
+    int cgio = 0;
+    double root = 0, node = 0;
+    const auto check = [&](int status, const std::string& what) {
+        if (status == CG_OK) return;
+        char message[CGIO_MAX_ERROR_LENGTH + 1] = {};
+        cgio_error_message(message);
+        if (cgio > 0) cgio_close_file(cgio);
+        throw std::runtime_error("test CGNS writer: " + what + ": " + message);
+    };
+    check(cgio_open_file(path.c_str(), CGIO_MODE_MODIFY, CGIO_FILE_NONE, &cgio), "open " + path.string());
+    check(cgio_get_root_id(cgio, &root), "root");
+    check(cgio_get_node_id(cgio, root, node_path.c_str(), &node), node_path);
+    const cgsize_t size = static_cast<cgsize_t>(bytes.size());
+    check(cgio_set_dimensions(cgio, node, type.c_str(), 1, &size), "data type " + type);
+    check(cgio_write_all_data(cgio, node, bytes.data()), "data");
+    check(cgio_close_file(cgio), "close");
 }
 
 }  // namespace dgwarp::test

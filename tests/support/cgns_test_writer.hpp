@@ -65,4 +65,10 @@ struct TestZone {
 /// std::runtime_error with libcgns's message when libcgns refuses.
 void write_test_cgns(const std::filesystem::path& path, int dim, const std::vector<TestZone>& zones);
 
+/// Rewrites the node at `node_path` ("/Base/Zone/ZoneBC/wall/GridLocation")
+/// of the file as `bytes` of data type `type` (one dimension), through cgio:
+/// the damaged content no CGNS writer makes. Throws std::runtime_error when cgio refuses.
+void set_cgns_node_data(const std::filesystem::path& path, const std::string& node_path, const std::string& type,
+                        const std::string& bytes);
+
 }  // namespace dgwarp::test

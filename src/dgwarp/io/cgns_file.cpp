@@ -35,7 +35,7 @@ void install_quiet_handler() {
 /// it begins with HDF5's signature (at 0 or a user block of 512, 1024, ...
 /// bytes), or with an ADF header whose tags are in place and whose end of file
 /// (after "AdF4": the root node's and the end's block and offset, in
-/// hexadecimal) the file reaches.
+/// hexadecimal) the file reaches, and whose format bytes are IEEE's.
 void check_file_kind(const std::filesystem::path& path, const std::string& name) {
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
@@ -60,6 +60,13 @@ void check_file_kind(const std::filesystem::path& path, const std::string& name)
         at = text.find(tag, at);
         if (at == std::string::npos) throw not_cgns(std::string("its ADF header is damaged (no ") + tag + ")");
     }
+    // Bytes 100 and 101: the numeric format (IEEE big or little endian) and
+    // the pointer size (64 or 32 bits), 'B' or 'L' each. ADF asserts (aborting
+    // the program) that neither is 0, and any other value would read the file
+    // in a format it was not written in.
+    const auto ieee = [](char c) { return c == 'B' || c == 'L'; };
+    if (text.size() < 102 || !ieee(text[100]) || !ieee(text[101]))
+        throw not_cgns("its ADF header is damaged (its numeric format and pointer size are not 'B' or 'L')");
     const std::size_t pointers = text.find("AdF4") + 4;
     if (pointers + 48 > text.size() ||
         text.substr(pointers, 48).find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
@@ -72,12 +79,33 @@ void check_file_kind(const std::filesystem::path& path, const std::string& name)
                        std::to_string(size) + ")");
 }
 
+/// A node's name or data type as read from a (maybe damaged) file, for a message.
+std::string printable(const char* text) {
+    std::string s(text);
+    for (char& c : s)
+        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+    return s;
+}
+
+/// libcgns 3.4 reads a node's data (cgi_read_node) into a buffer it allocates
+/// only for these data types, spelled exactly so; for any other (a damaged
+/// "c1", ADF's "B1", "U4", "X4", ...) it reads the data through a pointer it
+/// never set, which may be memory it freed just before (a heap
+/// use-after-free, e.g. through the BC type's string while reading a BC's
+/// GridLocation). A valid file holds no other type (CGNS 3.4's DataType_t).
+bool libcgns_reads_data_type(const std::string& type) {
+    for (const char* known : {"MT", "I4", "I8", "R4", "R8", "C1"})
+        if (type == known) return true;
+    return false;
+}
+
 /// libcgns allocates, while opening a file, as many values as a node's
 /// header says its children or data hold, and ends the process (exit) when
 /// the allocation fails: a damaged header (a child count of 2^31) would end
 /// the program instead of raising an error. So the file's tree is walked
 /// first through libcgns's lower layer (cgio), refusing a node with more
-/// children or data values than the file could hold (`most`).
+/// children or data values than the file could hold (`most`), or of a data
+/// type libcgns cannot read (above). Errors name the node's path.
 void check_tree(const std::filesystem::path& path, const std::string& name, std::uintmax_t file_size) {
     const std::int64_t most = 64 * static_cast<std::int64_t>(file_size) + 4096;
     int cgio = 0;
@@ -90,38 +118,54 @@ void check_tree(const std::filesystem::path& path, const std::string& name, std:
         int cgio;
         ~Closer() { cgio_close_file(cgio); }
     } closer{cgio};
-    auto damaged = [&](const std::string& what) {
-        return IoError(name, "cannot open as a CGNS file: it is damaged (" + what + ")");
+    auto damaged = [&](const std::string& node, const std::string& what) {
+        return IoError(name, "cannot open as a CGNS file: it is damaged (" + (node.empty() ? "/" : node) + ": " + what + ")");
     };
     double root = 0;
-    if (cgio_get_root_id(cgio, &root) != CG_OK) throw damaged("no root node");
-    std::vector<std::pair<double, int>> stack{{root, 0}};  // node, depth
+    if (cgio_get_root_id(cgio, &root) != CG_OK) throw damaged("", "no root node");
+    struct Node {
+        double id;
+        int depth;
+        std::string path;  // "/Base/Zone/ZoneBC/wall"; "" for the root
+    };
+    std::vector<Node> stack{{root, 0, ""}};
     std::int64_t visited = 0;
     while (!stack.empty()) {
-        const auto [id, depth] = stack.back();
+        const Node node = std::move(stack.back());
         stack.pop_back();
-        if (++visited > most / 16 || depth > 64) throw damaged("more nodes than the file can hold, or a loop");
+        const double id = node.id;
+        if (++visited > most / 16 || node.depth > 64)
+            throw damaged(node.path, "more nodes than the file can hold, or a loop");
+        // ADF returns up to 32 characters (and a terminator) for a data type.
+        char type[CGIO_MAX_NAME_LENGTH + 1] = {};
+        if (cgio_get_data_type(cgio, id, type) == CG_OK && !libcgns_reads_data_type(type))
+            throw damaged(node.path, "data of type '" + printable(type) + "'; CGNS's types are MT, I4, I8, R4, R8 and C1");
         int ndims = 0;
         cgsize_t dims[CGIO_MAX_DIMENSIONS] = {};
         if (cgio_get_dimensions(cgio, id, &ndims, dims) == CG_OK) {
-            if (ndims < 0 || ndims > CGIO_MAX_DIMENSIONS) throw damaged("a node of " + std::to_string(ndims) + " dimensions");
+            if (ndims < 0 || ndims > CGIO_MAX_DIMENSIONS)
+                throw damaged(node.path, "data of " + std::to_string(ndims) + " dimensions");
             std::int64_t values = ndims > 0 ? 1 : 0;
             for (int d = 0; d < ndims; ++d) {
                 if (dims[d] < 0 || (dims[d] > 0 && values > most / dims[d]))
-                    throw damaged("a node's data larger than the file");
+                    throw damaged(node.path, "data larger than the file");
                 values *= dims[d];
             }
-            if (values > most) throw damaged("a node's data larger than the file");
+            if (values > most) throw damaged(node.path, "data larger than the file");
         }
         int children = 0;
-        if (cgio_number_children(cgio, id, &children) != CG_OK) throw damaged("a node's children cannot be counted");
+        if (cgio_number_children(cgio, id, &children) != CG_OK) throw damaged(node.path, "its children cannot be counted");
         if (children < 0 || children > most / 16)
-            throw damaged("a node with " + std::to_string(children) + " children");
+            throw damaged(node.path, std::to_string(children) + " children");
         std::vector<double> ids(static_cast<std::size_t>(children));
         int got = 0;
         if (children > 0 && (cgio_children_ids(cgio, id, 1, children, &got, ids.data()) != CG_OK || got != children))
-            throw damaged("a node's children cannot be read");
-        for (double child : ids) stack.push_back({child, depth + 1});
+            throw damaged(node.path, "its children cannot be read");
+        for (double child : ids) {
+            char child_name[CGIO_MAX_NAME_LENGTH + 1] = {};
+            if (cgio_get_name(cgio, child, child_name) != CG_OK) throw damaged(node.path, "a child's name cannot be read");
+            stack.push_back({child, node.depth + 1, node.path + "/" + printable(child_name)});
+        }
         if (id != root) cgio_release_id(cgio, id);
     }
 }

@@ -3,6 +3,7 @@
 
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dgwarp/core/error.hpp"
@@ -56,6 +57,10 @@ SectionData section_of(const ElementList& list) {
     return s;
 }
 
+/// What libcgns's HDF5 layer strips from both ends of a node's name (C's
+/// isspace): a marker name beginning or ending with one would come back another.
+constexpr const char* cgns_name_blanks = " \t\n\v\f\r";
+
 void check_writable(const std::filesystem::path& path, const Mesh& mesh) {
     validate(mesh);
     const std::string file = path.string();
@@ -64,12 +69,15 @@ void check_writable(const std::filesystem::path& path, const Mesh& mesh) {
     for (const Marker& m : mesh.markers) {
         if (m.name.empty() || m.name.size() > 32 || m.name.find('/') != std::string::npos ||
             m.name.find('\0') != std::string::npos || m.name == "." || m.name == ".." ||
-            m.name.find_first_not_of(' ') == std::string::npos)
+            m.name.find_first_not_of(cgns_name_blanks) == std::string::npos)
             throw MeshError(file + ": marker '" + m.name +
                                 "' cannot be a CGNS name (1 to 32 characters, not blank, no '/'); rename it",
                             m.name);
-        if (m.name.back() == ' ' || m.name.front() == ' ')
-            throw MeshError(file + ": marker '" + m.name + "' begins or ends with a blank, which CGNS names drop", m.name);
+        const std::string_view blanks(cgns_name_blanks);
+        if (blanks.find(m.name.front()) != std::string_view::npos || blanks.find(m.name.back()) != std::string_view::npos)
+            throw MeshError(file + ": marker '" + m.name +
+                                "' begins or ends with a blank (a space, tab, line break, ...), which CGNS names drop",
+                            m.name);
         if (reserved_names.count(m.name))
             throw MeshError(file + ": marker '" + m.name + "' has the name of a node of dgwarp's CGNS zone; rename it",
                             m.name);
