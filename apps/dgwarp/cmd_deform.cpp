@@ -172,12 +172,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             progress.clear();
             print_frame(in, f, motion.warnings, step_warning_texts, frames, warnings);
         }
-        run.frames.push_back(std::move(f));
-        if (invalid) {
-            run.invalid = true;
-            run.error = invalid_frame_error(run.frames.back());
-            if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
-        }
+        if (!add_frame(run, std::move(f), a.allow_invalid)) break;
     }
     progress.clear();
     return run;

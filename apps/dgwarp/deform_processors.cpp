@@ -194,13 +194,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         in.orientation[c] = balance[static_cast<std::size_t>(in.mesh.cells.types[c])] < 0 ? -1 : 1;
     in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
     in.original_quality = case_quality(in.original_cell_quality, part.cell_ids);
-    if (const std::int64_t bad = in.original_quality.inverted; bad > 0)
-        in.boundary.warnings.push_back(
-            std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
-            " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
-            std::to_string(in.original_quality.worst_cell) +
-            "): they are counted as inverted before and after, but not blamed on the motion, and do not make a "
-            "step invalid");
+    warn_already_inverted(in);
     in.boundary.warnings =
         case_warnings(in.boundary.warnings, mpi_sum(owned_moving_and_static(in.mesh, in.boundary, part.owned)));
     in.quality_seconds = sw.lap();
@@ -284,12 +278,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
             progress.clear();
             print_frame(in, f, motion_warnings, step_warning_texts, frames, warnings);
         }
-        run.frames.push_back(std::move(f));
-        if (invalid) {
-            run.invalid = true;
-            run.error = invalid_frame_error(run.frames.back());
-            if (!a.allow_invalid) break;  // nothing more is written after an invalid frame
-        }
+        if (!add_frame(run, std::move(f), a.allow_invalid)) break;
     }
     progress.clear();
 

@@ -123,4 +123,13 @@ std::string invalid_frame_error(const FrameResult& bad) {
     return e;
 }
 
+bool add_frame(MethodRun& run, FrameResult f, bool allow_invalid) {
+    const bool invalid = f.inverted_by_motion > 0;
+    run.frames.push_back(std::move(f));
+    if (!invalid) return true;
+    run.invalid = true;
+    run.error = invalid_frame_error(run.frames.back());
+    return allow_invalid;
+}
+
 }  // namespace dgwarp::cli

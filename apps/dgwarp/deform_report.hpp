@@ -63,6 +63,11 @@ std::string cell_list(const std::vector<std::int64_t>& cells);
 /// Why frame `bad` (with inverted cells) makes the run invalid.
 std::string invalid_frame_error(const FrameResult& bad);
 
+/// Appends frame `f` to `run`; a frame with cells the motion inverted makes
+/// the run invalid (invalid_frame_error). Whether the run goes on: not after
+/// an invalid frame unless `allow_invalid` (nothing more is written then).
+bool add_frame(MethodRun& run, FrameResult f, bool allow_invalid);
+
 nlohmann::json untangle_json(const UntangleReport& u);
 nlohmann::json frame_json(const FrameResult& f);
 nlohmann::json run_json(const Inputs& in, const MethodRun& r);

@@ -188,6 +188,16 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     return in;
 }
 
+void warn_already_inverted(Inputs& in) {
+    if (const std::int64_t bad = in.original_quality.inverted; bad > 0)
+        in.boundary.warnings.push_back(
+            std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
+            " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
+            std::to_string(in.original_quality.worst_cell) +
+            "): they are counted as inverted before and after, but not blamed on the motion, and do not make a "
+            "step invalid");
+}
+
 Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
                    const std::function<void(const MotionSpec&)>& check_outputs) {
     Inputs in = read_motion_inputs(args, progress, check_outputs);
@@ -197,13 +207,7 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
     in.orientation = dominant_orientations(in.mesh, in.own_orientation);
     in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
     in.original_quality = summarize_quality(in.original_cell_quality);
-    if (const std::int64_t bad = in.original_quality.inverted; bad > 0)
-        in.boundary.warnings.push_back(
-            std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
-            " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
-            std::to_string(in.original_quality.worst_cell) +
-            "): they are counted as inverted before and after, but not blamed on the motion, and do not make a "
-            "step invalid");
+    warn_already_inverted(in);
 
     in.quality_seconds = sw.lap();
     progress.clear();

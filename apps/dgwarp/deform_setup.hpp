@@ -91,6 +91,10 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
 Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
                    const std::function<void(const MotionSpec&)>& check_outputs);
 
+/// Adds the boundary warning about the cells already inverted or degenerate
+/// in the input (in.original_quality, its worst cell named), if any.
+void warn_already_inverted(Inputs& in);
+
 /// A method's plan for the inputs: built, or loaded from `plan_file` (DG-IDW
 /// only) and checked to fit the mesh and boundary.
 struct PlannedMethod {

@@ -57,6 +57,29 @@ std::vector<std::int32_t> read_addressing(const fs::path& dir, const char* name,
     return labels;
 }
 
+/// Cell c of a processor's mesh `m` with its corners as the case's points
+/// (`point_of`: pointProcAddressing) in order_cell's canonical order, the
+/// order the whole case's reader gives them. Two corners that are one point
+/// of the case: a ParseError naming `addressing`.
+foam::OrderedCell case_ordered_cell(const Mesh& m, std::size_t c, const std::vector<std::int32_t>& point_of,
+                                    const fs::path& addressing) {
+    const auto nodes = m.cells.nodes_of(c);
+    const foam::FaceTable& t = foam::outward_faces(m.cells.types[c]);
+    foam::CellFaces faces;
+    faces.count = t.count;
+    for (int k = 0; k < t.count; ++k) {
+        faces.size[k] = t.size[k];
+        for (int i = 0; i < t.size[k]; ++i)
+            faces.node[k][i] = point_of[static_cast<std::size_t>(nodes[static_cast<std::size_t>(t.node[k][i])])];
+    }
+    const foam::OrderedCell oc = foam::order_cell(faces);
+    if (oc.shape != foam::CellShape::ok)
+        throw ParseError(addressing.string(), 0,
+                         "distinct points of the case for the corners of cell " + str(static_cast<std::int64_t>(c)),
+                         "a point twice");
+    return oc;
+}
+
 }  // namespace
 
 std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
@@ -112,21 +135,8 @@ OpenFoamProcessorMesh read_openfoam_processor(const fs::path& dir) {
     ElementList cells;
     cells.reserve(m.cells.size(), 8);
     for (std::size_t c = 0; c < m.cells.size(); ++c) {
-        const CellType type = m.cells.types[c];
+        const foam::OrderedCell oc = case_ordered_cell(m, c, point_of, dir / "pointProcAddressing");
         const auto nodes = m.cells.nodes_of(c);
-        const foam::FaceTable& t = foam::outward_faces(type);
-        foam::CellFaces faces;
-        faces.count = t.count;
-        for (int k = 0; k < t.count; ++k) {
-            faces.size[k] = t.size[k];
-            for (int i = 0; i < t.size[k]; ++i)
-                faces.node[k][i] = point_of[static_cast<std::size_t>(nodes[static_cast<std::size_t>(t.node[k][i])])];
-        }
-        const foam::OrderedCell oc = foam::order_cell(faces);
-        if (oc.shape != foam::CellShape::ok)
-            throw ParseError((dir / "pointProcAddressing").string(), 0,
-                             "distinct points of the case for the corners of cell " + str(static_cast<std::int64_t>(c)),
-                             "a point twice");
         std::array<NodeId, 8> local{};
         const int n = nodes_per_cell(oc.type);
         for (int k = 0; k < n; ++k)
@@ -212,21 +222,8 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
                 throw ParseError((meshes[p] / "cellProcAddressing").string(), 0,
                                  "each cell of the case from 0 to " + str(num_cells - 1) + " once over the processors",
                                  "cell " + str(g) + (g < num_cells ? " again" : ""));
-            const CellType type = m.cells.types[c];
-            const auto nodes = m.cells.nodes_of(c);
-            const foam::FaceTable& t = foam::outward_faces(type);
-            foam::CellFaces faces;
-            faces.count = t.count;
-            for (int k = 0; k < t.count; ++k) {
-                faces.size[k] = t.size[k];
-                for (int i = 0; i < t.size[k]; ++i)
-                    faces.node[k][i] = parts[p].point_of[static_cast<std::size_t>(nodes[static_cast<std::size_t>(t.node[k][i])])];
-            }
-            const foam::OrderedCell oc = foam::order_cell(faces);
-            if (oc.shape != foam::CellShape::ok)  // two corners of the cell are one point of the case
-                throw ParseError((meshes[p] / "pointProcAddressing").string(), 0,
-                                 "distinct points of the case for the corners of cell " + str(static_cast<std::int64_t>(c)),
-                                 "a point twice");
+            const foam::OrderedCell oc =
+                case_ordered_cell(m, c, parts[p].point_of, meshes[p] / "pointProcAddressing");
             cells[static_cast<std::size_t>(g)] = {oc.type, oc.node, true};
         }
     }
