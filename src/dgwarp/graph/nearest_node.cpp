@@ -60,6 +60,10 @@ double NearestNode::spacing(std::int64_t index, int k) const {
     constexpr int k_max = 16;
     std::uint32_t found[k_max];
     double dist2[k_max];
+    // Two neighbours first (the node itself and the nearest other) answer
+    // unless the node has a twin; the same value as the k-search (both exact).
+    if (k >= 2 && tree_->tree.knnSearch(x, 2, found, dist2) == 2 && dist2[0] == 0 && dist2[1] > 0)
+        return std::sqrt(dist2[1]);
     const std::size_t n =
         tree_->tree.knnSearch(x, static_cast<std::size_t>(std::clamp(k, 1, k_max)), found, dist2);
     for (std::size_t i = 0; i < n; ++i)

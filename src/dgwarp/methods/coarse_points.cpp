@@ -11,6 +11,7 @@
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/graph/nearest_node.hpp"
+#include "dgwarp/methods/nearest_boundary_cells.hpp"
 
 namespace dgwarp {
 
@@ -49,13 +50,12 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
     std::vector<double> h(boundary_nodes.size());
     parallel_for(static_cast<std::int64_t>(h.size()), [&](std::int64_t j) { h[j] = tree.spacing(j); });
 
-    // The spacing each volume node wants (0: not a candidate). Queried in a
+    // The spacing each volume node wants (0: not a candidate). Visited in a
     // spatially coherent order (the given one when it is, else along a Morton
-    // curve): neighbouring queries then walk the same tree branches. The
-    // nodes' points are gathered in a Morton order first, so that the queries
-    // read them in sequence (826k nodes in Gmsh's random numbering, under load:
-    // the whole selection 1.3 -> 0.75 s). Each query's answer depends on its
-    // point only, not on the order.
+    // curve): neighbouring nodes then fall in the same cells and walk the same
+    // tree branches. The nodes' points are gathered in a Morton order first,
+    // so that the visits read them in sequence (826k nodes in Gmsh's random
+    // numbering, under load: the whole selection 1.3 -> 0.75 s).
     std::vector<double>& want = w.want;
     std::vector<std::uint32_t> own;
     if (morton.size() != volume_nodes.size() && !is_coherent_order(dim, points, volume_nodes)) {
@@ -71,15 +71,33 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
                         sorted_points.data() + k * dim);
         });
     }
-    parallel_for(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t k) {
-        const std::size_t i = given ? static_cast<std::size_t>(k) : morton[k];
+    // Most nodes take their leaf's boundary node (nearest_boundary_cells.hpp);
+    // a node the leaf leaves in doubt (outside the boundary's cube, or wanting
+    // a wall spacing it may be too close to the wall for) asks the k-d tree.
+    // Either way its want depends on its coordinates only.
+    auto want_of = [&](double d, std::int64_t j) {
+        const double s = std::max(spacing.wall_spacing * h[j], spacing.growth * d);
+        return d > 0 && d >= 0.5 * s ? s : 0.0;
+    };
+    NearestBoundaryCells cells(dim, points, boundary_nodes, tree, h, spacing);
+    std::vector<std::int64_t> ask;  // positions in the visit order
+    for (std::size_t k = 0; k < volume_nodes.size(); ++k) {
+        const std::size_t i = given ? k : morton[k];
+        const double* x = given ? points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim
+                                : sorted_points.data() + k * dim;
+        const NearestBoundaryCells::Answer a = cells.find(x);
+        if (a.index >= 0) want[i] = want_of(a.distance, a.index);
+        if (a.index < 0 || (want[i] > 0 && a.lower_bound < 0.5 * spacing.wall_spacing * h[a.index]))
+            ask.push_back(static_cast<std::int64_t>(k));
+    }
+    parallel_for(static_cast<std::int64_t>(ask.size()), [&](std::int64_t a) {
+        const auto k = static_cast<std::size_t>(ask[a]);
+        const std::size_t i = given ? k : morton[k];
         const double* x = given ? points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim
                                 : sorted_points.data() + k * dim;
         // A spacing needs no exact distance: within 50% it is as good.
         const NearestNode::Found f = tree.nearest(x, 0.5);
-        const double d = f.distance;
-        const double s = std::max(spacing.wall_spacing * h[f.index], spacing.growth * d);
-        want[i] = d > 0 && d >= 0.5 * s ? s : 0.0;
+        want[i] = want_of(f.distance, f.index);
     });
     for (std::size_t i = 0; i < volume_nodes.size(); ++i) {
         if (want[i] > 0) w.s_min = std::min(w.s_min, want[i]);
