@@ -61,10 +61,10 @@ TEST(CasesStore, TheStoreNeverComesWithinTwoCellsOfThePlate) {
 }
 
 TEST(CasesStore, DgHarmonicKeepsEveryCellValid) {
-    // Measured: min 0.229 / 0.177 / 0.110 at 10 / 20 / 30°; the paper's DG-IDW
+    // Measured: min 0.229 / 0.177 / 0.102 at 10 / 20 / 30°; the paper's DG-IDW
     // inverts 7 / 18 / 254 cells, IDW hundreds.
     const std::map<std::string, double> measured_min = {{"drop-pitch-10", 0.229}, {"drop-pitch-20", 0.177},
-                                                        {"drop-pitch-30", 0.110}};
+                                                        {"drop-pitch-30", 0.102}};
     const Mesh& m = store_mesh();
     const auto orientation = cell_orientations(m);
     for (const CaseMotion& c : case_motions("store", m)) {

@@ -52,6 +52,23 @@ NearestNode::Found NearestNode::nearest(const double* x, double relative_error) 
     return {static_cast<std::int64_t>(j), std::sqrt(d2)};
 }
 
+std::size_t NearestNode::nearest_k(const double* x, int k, std::int64_t* index, double* distance,
+                                   double relative_error) const {
+    if (!tree_) return 0;
+    constexpr int k_max = 16;
+    std::uint32_t found[k_max];
+    double dist2[k_max];
+    nanoflann::KNNResultSet<double, std::uint32_t> result(static_cast<std::size_t>(std::clamp(k, 1, k_max)));
+    result.init(found, dist2);
+    tree_->tree.findNeighbors(result, x, nanoflann::SearchParams(32, static_cast<float>(relative_error)));
+    const std::size_t n = result.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        index[i] = static_cast<std::int64_t>(found[i]);
+        distance[i] = std::sqrt(dist2[i]);
+    }
+    return n;
+}
+
 double NearestNode::spacing(std::int64_t index, int k) const {
     if (!tree_) return 0;
     const NodeCloud& c = tree_->cloud;

@@ -27,6 +27,10 @@ public:
     /// With relative_error e > 0, a node at most (1 + e) times farther than
     /// the nearest (faster). Thread-safe.
     Found nearest(const double* x, double relative_error = 0) const;
+    /// The k (at most 16) nearest nodes to x, nearest first, as nearest()
+    /// finds one; how many were found (fewer when the set is smaller).
+    std::size_t nearest_k(const double* x, int k, std::int64_t* index, double* distance,
+                          double relative_error = 0) const;
     /// The distance from node `nodes[index]` to the nearest node of the set at
     /// another position (0 when its nearest `k` (at most 16) neighbours all coincide with it).
     double spacing(std::int64_t index, int k = 8) const;

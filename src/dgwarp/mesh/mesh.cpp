@@ -45,8 +45,11 @@ std::array<std::int64_t, std::size(all_cell_types)> count_by_type(const ElementL
 
 std::vector<double> gather_points(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
     std::vector<double> out(nodes.size() * static_cast<std::size_t>(dim));
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        std::copy_n(points.data() + static_cast<std::size_t>(nodes[i]) * dim, dim, out.data() + i * dim);
+    // A plain loop: std::copy_n of a run-time `dim` doubles is a memmove call per node.
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const double* x = points.data() + static_cast<std::size_t>(nodes[i]) * dim;
+        for (int d = 0; d < dim; ++d) out[i * dim + d] = x[d];
+    }
     return out;
 }
 

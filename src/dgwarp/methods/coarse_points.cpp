@@ -67,14 +67,16 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
     if (!given) {
         sorted_points.resize(volume_nodes.size() * static_cast<std::size_t>(dim));
         parallel_for(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t k) {
-            std::copy_n(points.data() + static_cast<std::size_t>(volume_nodes[morton[k]]) * dim, dim,
-                        sorted_points.data() + k * dim);
+            const double* x = points.data() + static_cast<std::size_t>(volume_nodes[morton[k]]) * dim;
+            for (int d = 0; d < dim; ++d) sorted_points[k * dim + d] = x[d];
         });
     }
-    // Most nodes take their leaf's boundary node (nearest_boundary_cells.hpp);
-    // a node the leaf leaves in doubt (outside the boundary's cube, or wanting
-    // a wall spacing it may be too close to the wall for) asks the k-d tree.
-    // Either way its want depends on its coordinates only.
+    // Most nodes take the nearest of their leaf's boundary nodes
+    // (nearest_boundary_cells.hpp). A node outside the boundary's cube, or
+    // whose wall distance may be under half the wall spacing (where whether it
+    // is a candidate, and the smallest want that sets the grids, hang on its
+    // own nearest node), asks the k-d tree. Either way its want depends on its
+    // coordinates only.
     auto want_of = [&](double d, std::int64_t j) {
         const double s = std::max(spacing.wall_spacing * h[j], spacing.growth * d);
         return d > 0 && d >= 0.5 * s ? s : 0.0;
@@ -87,7 +89,7 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
                                 : sorted_points.data() + k * dim;
         const NearestBoundaryCells::Answer a = cells.find(x);
         if (a.index >= 0) want[i] = want_of(a.distance, a.index);
-        if (a.index < 0 || (want[i] > 0 && a.lower_bound < 0.5 * spacing.wall_spacing * h[a.index]))
+        if (a.index < 0 || a.lower_bound < 0.5 * spacing.wall_spacing * h[a.index])
             ask.push_back(static_cast<std::int64_t>(k));
     }
     parallel_for(static_cast<std::int64_t>(ask.size()), [&](std::int64_t a) {

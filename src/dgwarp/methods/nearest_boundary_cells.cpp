@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dgwarp/methods/coarse_points.hpp"
 
@@ -43,18 +44,23 @@ NearestBoundaryCells::NearestBoundaryCells(int dim, std::span<const double> poin
 void NearestBoundaryCells::add_cell(const double* corner, double size) {
     double centre[3] = {};
     for (int d = 0; d < dim_; ++d) centre[d] = corner[d] + 0.5 * size;
-    const NearestNode::Found f = tree_.nearest(centre, centre_error);
+    std::int64_t index[candidates];
+    double distance[candidates];
+    const std::size_t n = tree_.nearest_k(centre, candidates, index, distance, centre_error);
     const double half_diagonal = 0.5 * size * std::sqrt(static_cast<double>(dim_));
     Cell c{};
-    const std::size_t n = static_cast<std::size_t>(boundary_nodes_[f.index]);
-    for (int d = 0; d < dim_; ++d) c.node_xyz[d] = points_[n * dim_ + d];
-    // The centre's wall distance is at least f.distance / sqrt(1 + e); every
+    c.count = static_cast<std::int32_t>(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto node = static_cast<std::size_t>(boundary_nodes_[index[k]]);
+        for (int d = 0; d < dim_; ++d) c.node_xyz[k][d] = points_[node * dim_ + d];
+        c.index[k] = static_cast<std::int32_t>(index[k]);
+    }
+    // The centre's wall distance is at least distance[0] / sqrt(1 + e); every
     // point of the cell is within half_diagonal of the centre. The factor
     // covers the rounding of both.
-    c.lower_bound = f.distance / std::sqrt(1 + centre_error) * (1 - 1e-12) - half_diagonal;
-    c.index = static_cast<std::int32_t>(f.index);
+    c.lower_bound = distance[0] / std::sqrt(1 + centre_error) * (1 - 1e-12) - half_diagonal;
     c.children = -1;
-    c.leaf = half_diagonal <= 0.5 * std::max(wall_spacing_ * h_[f.index], growth_ * f.distance);
+    c.leaf = half_diagonal <= 0.5 * std::max(wall_spacing_ * h_[index[0]], growth_ * distance[0]);
     cells_.push_back(c);
 }
 
@@ -102,9 +108,14 @@ NearestBoundaryCells::Answer NearestBoundaryCells::find(const double* x) {
         }
     }
     const Cell& c = cells_[last_];
-    double d2 = 0;
-    for (int d = 0; d < dim_; ++d) d2 += (x[d] - c.node_xyz[d]) * (x[d] - c.node_xyz[d]);
-    return {c.index, std::sqrt(d2), c.lower_bound};
+    Answer a{-1, std::numeric_limits<double>::infinity(), c.lower_bound};
+    for (int k = 0; k < c.count; ++k) {
+        double d2 = 0;
+        for (int d = 0; d < dim_; ++d) d2 += (x[d] - c.node_xyz[k][d]) * (x[d] - c.node_xyz[k][d]);
+        const double dk = std::sqrt(d2);
+        if (dk < a.distance) a = {c.index[k], dk, c.lower_bound};
+    }
+    return a;
 }
 
 }  // namespace dgwarp
