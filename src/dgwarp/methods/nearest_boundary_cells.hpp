@@ -50,11 +50,11 @@ public:
 private:
     static constexpr int candidates = 4;
     struct Cell {
-        double node_xyz[candidates][3];     // its boundary nodes' coordinates
-        double lower_bound;                 // of the wall distance anywhere in the cell
-        std::int32_t index[candidates];     // its boundary nodes (positions in boundary_nodes), nearest first
-        std::int32_t count;                 // how many
-        std::int32_t children;   // first of its 2^dim children; -1: none yet
+        double node_xyz[candidates][3];  // its boundary nodes' coordinates
+        double lower_bound;              // of the wall distance anywhere in the cell
+        std::int32_t index[candidates];  // its boundary nodes (positions in boundary_nodes), nearest first
+        std::int32_t count;              // how many
+        std::int32_t children;           // first of its 2^dim children; -1: none yet
         bool leaf;
     };
     void add_cell(const double* corner, double size);
