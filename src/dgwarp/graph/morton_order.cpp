@@ -58,14 +58,9 @@ void radix_sort(std::vector<Keyed>& key, std::uint64_t all_bits) {
 }  // namespace
 
 std::vector<std::uint32_t> morton_order(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
-    double lo[3], hi[3];
-    std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
-    std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
-    for (NodeId n : nodes)
-        for (int d = 0; d < dim; ++d) {
-            lo[d] = std::min(lo[d], points[static_cast<std::size_t>(n) * dim + d]);
-            hi[d] = std::max(hi[d], points[static_cast<std::size_t>(n) * dim + d]);
-        }
+    const BoundingBox box = bounding_box(dim, points, nodes);
+    const double* lo = box.min.data();
+    const double* hi = box.max.data();
     const int bits = dim == 3 ? 21 : 32;
     const double cells = std::ldexp(1.0, bits) - 1;
     double scale[3] = {};

@@ -43,13 +43,9 @@ NearestNode::NearestNode(int dim, std::span<const double> points, std::span<cons
 NearestNode::~NearestNode() = default;
 
 NearestNode::Found NearestNode::nearest(const double* x, double relative_error) const {
-    if (!tree_) return {-1, std::numeric_limits<double>::infinity()};
-    std::uint32_t j = 0;
-    double d2 = 0;
-    nanoflann::KNNResultSet<double, std::uint32_t> result(1);
-    result.init(&j, &d2);
-    tree_->tree.findNeighbors(result, x, nanoflann::SearchParams(32, static_cast<float>(relative_error)));
-    return {static_cast<std::int64_t>(j), std::sqrt(d2)};
+    Found f{-1, std::numeric_limits<double>::infinity()};
+    nearest_k(x, 1, &f.index, &f.distance, relative_error);
+    return f;
 }
 
 std::size_t NearestNode::nearest_k(const double* x, int k, std::int64_t* index, double* distance,

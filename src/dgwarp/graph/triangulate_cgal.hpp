@@ -88,13 +88,9 @@ std::unique_ptr<typename Dim::Delaunay> build_delaunay(std::span<const double> p
     constexpr int dim = Dim::dim;
     const std::size_t n = vertex_node.size();
     auto coords = [&](std::size_t v) { return points.data() + static_cast<std::size_t>(vertex_node[v]) * dim; };
-    double lo[3], hi[3];
-    for (int d = 0; d < dim; ++d) lo[d] = hi[d] = coords(0)[d];
-    for (std::size_t v = 1; v < n; ++v)
-        for (int d = 0; d < dim; ++d) {
-            lo[d] = std::min(lo[d], coords(v)[d]);
-            hi[d] = std::max(hi[d], coords(v)[d]);
-        }
+    const BoundingBox box = bounding_box(dim, points, vertex_node);
+    const double* lo = box.min.data();
+    const double* hi = box.max.data();
     double diagonal2 = 0;
     for (int d = 0; d < dim; ++d) diagonal2 += (hi[d] - lo[d]) * (hi[d] - lo[d]);
     const double amplitude = perturbation_fraction * std::sqrt(diagonal2);

@@ -67,6 +67,19 @@ BoundingBox bounding_box(const Mesh& mesh) {
     return box;
 }
 
+BoundingBox bounding_box(int dim, std::span<const double> points, std::span<const NodeId> nodes) {
+    BoundingBox box;
+    if (nodes.empty()) return box;
+    for (int d = 0; d < dim; ++d) box.min[d] = box.max[d] = points[static_cast<std::size_t>(nodes[0]) * dim + d];
+    for (NodeId n : nodes)
+        for (int d = 0; d < dim; ++d) {
+            const double x = points[static_cast<std::size_t>(n) * dim + d];
+            box.min[d] = std::min(box.min[d], x);
+            box.max[d] = std::max(box.max[d], x);
+        }
+    return box;
+}
+
 namespace {
 
 void check_elements(const ElementList& list, std::int64_t num_points, int expected_dim,

@@ -82,6 +82,8 @@ struct BoundingBox {
     std::array<double, 3> max{};
 };
 BoundingBox bounding_box(const Mesh& mesh);
+/// The bounding box of `nodes` (ids into `points`, num_points × dim); zeros when empty.
+BoundingBox bounding_box(int dim, std::span<const double> points, std::span<const NodeId> nodes);
 
 /// Checks the mesh is consistent: dim is 2 or 3, the point array is a whole
 /// number of points, every node id is in range, cells have the mesh's

@@ -77,6 +77,11 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
     // is a candidate, and the smallest want that sets the grids, hang on its
     // own nearest node), asks the k-d tree. Either way its want depends on its
     // coordinates only.
+    // The k-th node of the visit order: its position in volume_nodes, its point.
+    auto node_at = [&](std::size_t k) -> std::size_t { return given ? k : morton[k]; };
+    auto point_at = [&](std::size_t k) {
+        return given ? points.data() + static_cast<std::size_t>(volume_nodes[k]) * dim : sorted_points.data() + k * dim;
+    };
     auto want_of = [&](double d, std::int64_t j) {
         const double s = std::max(spacing.wall_spacing * h[j], spacing.growth * d);
         return d > 0 && d >= 0.5 * s ? s : 0.0;
@@ -84,28 +89,22 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
     NearestBoundaryCells cells(dim, points, boundary_nodes, tree, h, spacing);
     std::vector<std::int64_t> ask;  // positions in the visit order
     for (std::size_t k = 0; k < volume_nodes.size(); ++k) {
-        const std::size_t i = given ? k : morton[k];
-        const double* x = given ? points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim
-                                : sorted_points.data() + k * dim;
-        const NearestBoundaryCells::Answer a = cells.find(x);
+        const std::size_t i = node_at(k);
+        const NearestBoundaryCells::Answer a = cells.find(point_at(k));
         if (a.index >= 0) want[i] = want_of(a.distance, a.index);
         if (a.index < 0 || a.lower_bound < 0.5 * spacing.wall_spacing * h[a.index])
             ask.push_back(static_cast<std::int64_t>(k));
     }
     parallel_for(static_cast<std::int64_t>(ask.size()), [&](std::int64_t a) {
         const auto k = static_cast<std::size_t>(ask[a]);
-        const std::size_t i = given ? k : morton[k];
-        const double* x = given ? points.data() + static_cast<std::size_t>(volume_nodes[i]) * dim
-                                : sorted_points.data() + k * dim;
         // A spacing needs no exact distance: within 50% it is as good.
-        const NearestNode::Found f = tree.nearest(x, 0.5);
-        want[i] = want_of(f.distance, f.index);
+        const NearestNode::Found f = tree.nearest(point_at(k), 0.5);
+        want[node_at(k)] = want_of(f.distance, f.index);
     });
-    for (std::size_t i = 0; i < volume_nodes.size(); ++i) {
-        if (want[i] > 0) w.s_min = std::min(w.s_min, want[i]);
-        for (int d = 0; d < dim; ++d)
-            w.lo[d] = std::min(w.lo[d], points[static_cast<std::size_t>(volume_nodes[i]) * dim + d]);
-    }
+    for (double s : want)
+        if (s > 0) w.s_min = std::min(w.s_min, s);
+    const BoundingBox box = bounding_box(dim, points, volume_nodes);
+    for (int d = 0; d < dim; ++d) w.lo[d] = box.min[d];
     return w;
 }
 

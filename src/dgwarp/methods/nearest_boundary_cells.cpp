@@ -26,14 +26,11 @@ NearestBoundaryCells::NearestBoundaryCells(int dim, std::span<const double> poin
     : dim_(dim), points_(points), boundary_nodes_(boundary_nodes), tree_(tree), h_(h),
       wall_spacing_(spacing.wall_spacing), growth_(spacing.growth) {
     if (boundary_nodes.empty()) return;
-    double hi[3] = {};
-    for (int d = 0; d < dim; ++d) lo_[d] = hi[d] = points[static_cast<std::size_t>(boundary_nodes[0]) * dim + d];
-    for (NodeId n : boundary_nodes)
-        for (int d = 0; d < dim; ++d) {
-            lo_[d] = std::min(lo_[d], points[static_cast<std::size_t>(n) * dim + d]);
-            hi[d] = std::max(hi[d], points[static_cast<std::size_t>(n) * dim + d]);
-        }
-    for (int d = 0; d < dim; ++d) size_ = std::max(size_, hi[d] - lo_[d]);
+    const BoundingBox box = bounding_box(dim, points, boundary_nodes);
+    for (int d = 0; d < dim; ++d) {
+        lo_[d] = box.min[d];
+        size_ = std::max(size_, box.max[d] - box.min[d]);
+    }
     if (!(size_ > 0) || !std::isfinite(size_)) {
         size_ = 0;
         return;
