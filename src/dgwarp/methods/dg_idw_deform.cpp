@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <string>
 
@@ -41,129 +42,48 @@ RotationFactors factors(double angle2) {
     }
 }
 
-// One volume node x (dim coordinates) in a simplex whose first Moving corners
-// move: y = x0 + t + (R(w) - I)(x0 - c), with the coefficients v of dg_idw.hpp
-// (moving slots qhat, static slots -m u / P). No branch per corner.
-template <int Dim, int Terms, int Moving>
-inline void interpolate(const double* x, double* y, const double* v, const std::int32_t* corner,
-                        const NodeMotion* motion, double k_t, double k_r) {
-    constexpr int Corners = Dim + 1;
-    double q_sum = 0, rho = 0;
-    for (int k = 0; k < Moving; ++k) q_sum += v[k];
-    for (int k = Moving; k < Corners; ++k) rho -= v[k];
-    if (q_sum == 0) {  // on a static graph vertex
-        for (int d = 0; d < Dim; ++d) y[d] = x[d];
-        return;
-    }
-    const NodeMotion* mk[Moving];
-    for (int k = 0; k < Moving; ++k) mk[k] = motion + corner[k];
-    const double sigma_t = 1.0 / (1.0 + rho * k_t);
-    double t[Dim] = {};
-    for (int k = 0; k < Moving; ++k)
-        for (int d = 0; d < Dim; ++d) t[d] += v[k] * mk[k]->translation[d];
-    if constexpr (Terms == 0) {
-        for (int d = 0; d < Dim; ++d) y[d] = x[d] + sigma_t * t[d];
-    } else {
-        const double sigma_r = 1.0 / (1.0 + rho * k_r);
-        constexpr int W = Dim == 2 ? 1 : 3;  // rotation components: w_z in 2D
-        double w[W] = {}, c[Dim] = {};
-        for (int k = 0; k < Moving; ++k) {
-            for (int j = 0; j < W; ++j) w[j] += v[k] * mk[k]->rotation[3 - W + j];
-            for (int d = 0; d < Dim; ++d) c[d] += v[k] * mk[k]->center[d];
-        }
-        for (int j = 0; j < W; ++j) w[j] *= sigma_r;
-        double e[Dim];  // x0 - c
-        for (int d = 0; d < Dim; ++d) e[d] = x[d] - c[d];
-        if constexpr (Dim == 2) {
-            const RotationFactors r = factors<Terms>(w[0] * w[0]);
-            const double fw = r.f * w[0], gw2 = r.g * w[0] * w[0];
-            y[0] = x[0] + (sigma_t * t[0] + (-fw * e[1] - gw2 * e[0]));
-            y[1] = x[1] + (sigma_t * t[1] + (fw * e[0] - gw2 * e[1]));
-        } else {
-            const RotationFactors r = factors<Terms>(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-            const double we[3] = {w[1] * e[2] - w[2] * e[1], w[2] * e[0] - w[0] * e[2], w[0] * e[1] - w[1] * e[0]};
-            const double wwe[3] = {w[1] * we[2] - w[2] * we[1], w[2] * we[0] - w[0] * we[2], w[0] * we[1] - w[1] * we[0]};
-            for (int d = 0; d < 3; ++d) y[d] = x[d] + (sigma_t * t[d] + (r.f * we[d] + r.g * wwe[d]));
-        }
-    }
-}
+// The instruction set a copy of the kernel (dg_idw_step_kernel.inc) is
+// compiled for. The AVX2 copy is chosen at run time where the processor has
+// it; both do the same IEEE operations in the same order on every component
+// (no FMA: AVX2 alone, without the FMA extension), so they give the same bits
+// (DgIdwStep.Avx2KernelGivesTheSameBitsAsSse2).
+enum class Isa { sse2, avx2 };
 
-// Prefetching. In a spatially random node numbering (Gmsh's 3D Delaunay)
-// each node's simplex row and its corners' motions are far from the previous
-// node's, and the loads depend on each other (node -> row -> motions): without
-// help every node waits for two cache misses in turn (the step took 2-3x as
-// long as on the same mesh renumbered). The node -> simplex array is read in
-// order, so the loop asks for the row of the node row_prefetch_distance ahead,
-// and for the corner motions of the node motion_prefetch_distance ahead
-// (whose row has arrived by then). Measured on the 826k sphere (1 thread,
-// CPU time under load): Gmsh's numbering 37.5 -> 20.9 ms, renumbered 16.7 ->
-// 16.2 ms; distances 8/4, 16/8, 24/12, 32/16 were slower in one or the other.
-constexpr std::int64_t row_prefetch_distance = 16;
-constexpr std::int64_t motion_prefetch_distance = 4;
+using Pair = double __attribute__((vector_size(16)));
+using Quad = double __attribute__((vector_size(32)));
 
-inline void prefetch_row(const std::int32_t* node_simplex, const std::int32_t* simplex_motion, int corners,
-                         std::int64_t i) {
-    const std::int32_t s = node_simplex[i];
-    if (s >= 0) __builtin_prefetch(simplex_motion + static_cast<std::int64_t>(s) * corners);
-}
+namespace sse2 {
+#include "dgwarp/methods/dg_idw_step_kernel.inc"
+}  // namespace sse2
 
-inline void prefetch_corner_motions(const std::int32_t* node_simplex, const std::int32_t* simplex_motion, int corners,
-                                    const NodeMotion* motion, std::int64_t i) {
-    const std::int32_t s = node_simplex[i];
-    if (s < 0) return;
-    const std::int32_t* corner = simplex_motion + static_cast<std::int64_t>(s) * corners;
-    for (int k = 0; k < corners && corner[k] >= 0; ++k)  // the moving corners (first in the row)
-        prefetch_bytes(motion + corner[k], sizeof(NodeMotion));
-}
+#if defined(__x86_64__)
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#endif
+namespace avx2 {
+#include "dgwarp/methods/dg_idw_step_kernel.inc"
+}  // namespace avx2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
 
-// Moves nodes [begin, end): boundary nodes by their own motion, volume nodes
-// by the interpolated one. Terms: 0 when no moving boundary node rotates,
-// else the Taylor terms of the rotation factors (10: any angle).
-template <int Dim, int Terms>
-void deform_range(const DgIdwPlan& plan, const double* x0, const NodeMotion* motion, double* out,
-                  const StepConstants& sc, std::int64_t begin, std::int64_t end) {
-    constexpr int Corners = Dim + 1;
-    // Volume index of the first volume node at or after `begin`.
-    std::int64_t vol = begin - (std::lower_bound(plan.boundary_nodes.begin(), plan.boundary_nodes.end(), begin) -
-                                plan.boundary_nodes.begin());
-    const std::int32_t* node_simplex = plan.node_simplex.data();
-    const std::int32_t* simplex_motion = plan.simplex_motion.data();
-    const double* coefficients = plan.node_coefficients.data();
-    const std::uint8_t* boundary_moving = plan.boundary_moving.data();
-    const double k_t = sc.k_t, k_r = sc.k_r;  // locals: stores to out cannot change them
-    BoundaryMover<Dim> boundary_mover;
-    for (std::int64_t i = begin; i < end; ++i) {
-        if (i + row_prefetch_distance < end) prefetch_row(node_simplex, simplex_motion, Corners, i + row_prefetch_distance);
-        if (i + motion_prefetch_distance < end)
-            prefetch_corner_motions(node_simplex, simplex_motion, Corners, motion, i + motion_prefetch_distance);
-        const double* x = x0 + i * Dim;
-        double* y = out + i * Dim;
-        const std::int32_t s = node_simplex[i];
-        if (s < 0) {
-            const std::int32_t b = -1 - s;
-            if (boundary_moving[b]) {
-                boundary_mover.move(motion[b], x, y);
-            } else {
-                for (int d = 0; d < Dim; ++d) y[d] = x[d];
-            }
-            continue;
-        }
-        const double* v = coefficients + vol * Corners;
-        ++vol;
-        const std::int32_t* corner = simplex_motion + static_cast<std::int64_t>(s) * Corners;
-        int moving = 0;  // moving corners come first in the row
-        for (int k = 0; k < Corners; ++k) moving += corner[k] >= 0;
-        switch (moving) {
-            case 0: for (int d = 0; d < Dim; ++d) y[d] = x[d]; break;
-            case 1: interpolate<Dim, Terms, 1>(x, y, v, corner, motion, k_t, k_r); break;
-            case 2: interpolate<Dim, Terms, 2>(x, y, v, corner, motion, k_t, k_r); break;
-            case 3: interpolate<Dim, Terms, 3>(x, y, v, corner, motion, k_t, k_r); break;
-            default: interpolate<Dim, Terms, Dim + 1>(x, y, v, corner, motion, k_t, k_r); break;
-        }
-    }
-}
+#endif
 
 }  // namespace
+
+bool dg_idw_step_uses_avx2() {
+#if defined(__x86_64__)
+    static const bool has = __builtin_cpu_supports("avx2");
+    return has;
+#else
+    return false;
+#endif
+}
 
 void check_dg_idw_options(const DgIdwOptions& options) {
     auto positive = [](double a) { return std::isfinite(a) && a > 0; };
@@ -193,7 +113,8 @@ double max_rotation_angle2(const DgIdwPlan& plan, const BoundaryMotion& motion) 
 }
 
 DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const double> points,
-                                      const BoundaryMotion& motion, std::span<double> out, double angle2_max) {
+                                      const BoundaryMotion& motion, std::span<double> out, double angle2_max,
+                                      StepKernel kernel) {
     const DgIdwOptions& options = plan.options;
     check_dg_idw_options(options);
     check_step_arrays("DG-IDW", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
@@ -208,11 +129,21 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
                       : angle2_max <= taylor_angle2_limit(8) ? 8
                                                                : 10;
 
+    const bool avx2 = kernel == StepKernel::automatic && dg_idw_step_uses_avx2();
     auto run = [&]<int Dim, int Terms>() {
         // Blocks handed out as threads free up: the cost per node varies along
         // the node order (boundary nodes, simplices with 0 to 4 moving corners).
         parallel_for_blocks(plan.num_points(), deform_block, [&](std::int64_t begin, std::int64_t end) {
-            deform_range<Dim, Terms>(plan, points.data(), motion.data(), out.data(), sc, begin, end);
+#if defined(__x86_64__)
+            if constexpr (Dim == 3) {
+                if (avx2) {
+                    avx2::deform_range<3, Terms, Isa::avx2>(plan, points.data(), motion.data(), out.data(), sc, begin,
+                                                            end);
+                    return;
+                }
+            }
+#endif
+            sse2::deform_range<Dim, Terms, Isa::sse2>(plan, points.data(), motion.data(), out.data(), sc, begin, end);
         });
     };
     auto run_dim = [&]<int Dim>() {
