@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -113,4 +114,63 @@ TEST(ParallelFor, ThreadCountsAreClampedToWhatOpenMpCanStart) {
     EXPECT_EQ(num_threads(), 1);
     set_num_threads(-5);
     EXPECT_EQ(num_threads(), 1);
+}
+
+TEST(ParallelFor, RunConcurrentlyUsesTwoThreadsAndOneWhenThatIsAll) {
+    ThreadCount keep;
+    for (int threads : {1, 2}) {
+        set_num_threads(threads);
+        std::thread::id a_id, b_id;
+        std::vector<char> order;
+        std::mutex m;
+        std::atomic<bool> a_started{false};
+        run_concurrently(
+            [&] {
+                a_started = true;
+                a_id = std::this_thread::get_id();
+                std::lock_guard lock(m);
+                order.push_back('a');
+            },
+            [&] {
+                // With two threads b waits until a runs beside it (a timeout
+                // keeps a broken run_concurrently from hanging the test).
+                for (int k = 0; threads == 2 && !a_started && k < 2000; ++k)
+                    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                b_id = std::this_thread::get_id();
+                std::lock_guard lock(m);
+                order.push_back('b');
+            });
+        ASSERT_EQ(order.size(), 2u);
+        if (threads == 1) {
+            EXPECT_EQ(a_id, b_id);
+            EXPECT_EQ(order, (std::vector<char>{'a', 'b'}));  // a first
+        } else {
+            EXPECT_NE(a_id, b_id);
+        }
+        // A parallel_for inside either runs on its own thread alone, and still visits every index.
+        std::vector<int> hits(static_cast<std::size_t>(parallel_grain * 2), 0);
+        run_concurrently([&] { parallel_for(parallel_grain, [&](std::int64_t i) { ++hits[i]; }); },
+                         [&] { parallel_for(parallel_grain, [&](std::int64_t i) { ++hits[parallel_grain + i]; }); });
+        for (int h : hits) ASSERT_EQ(h, 1);
+    }
+}
+
+TEST(ParallelFor, RunConcurrentlyFinishesBothAndRethrowsTheFirstTasksError) {
+    ThreadCount keep;
+    for (int threads : {1, 2}) {
+        set_num_threads(threads);
+        bool b_done = false;
+        try {
+            run_concurrently([] { throw std::runtime_error("a"); },
+                             [&] {
+                                 b_done = true;
+                                 throw std::logic_error("b");
+                             });
+            ADD_FAILURE() << "no exception";
+        } catch (const std::runtime_error& e) {
+            EXPECT_STREQ(e.what(), "a");
+        }
+        EXPECT_TRUE(b_done) << threads << " thread(s)";
+        EXPECT_THROW(run_concurrently([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+    }
 }

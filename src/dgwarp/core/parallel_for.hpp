@@ -47,6 +47,13 @@ void parallel_for_chunks(std::int64_t n, Body&& body);
 /// not depend on the thread count. One thread, or one block: a single call.
 template <class Body>
 void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body);
+/// Calls a() and b() at the same time, on two threads, when parallel_for may
+/// use two or more; one after the other (a first) otherwise. For a serial
+/// stage (a) and independent work that can be done beside it (b); a
+/// parallel_for inside either runs on its own thread alone. Exceptions are
+/// rethrown after both have finished (a's first).
+template <class A, class B>
+void run_concurrently(A&& a, B&& b);
 
 }  // namespace dgwarp
 

@@ -78,4 +78,21 @@ void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body) {
     detail::parallel_region_for_dynamic(blocks, [&](std::int64_t b) { body(b * block, std::min(n, (b + 1) * block)); });
 }
 
+template <class A, class B>
+void run_concurrently(A&& a, B&& b) {
+    detail::FirstError error_a, error_b;
+    if (num_threads() < 2) {
+        error_a.run(a);
+        error_b.run(b);
+    } else {
+#pragma omp parallel for schedule(static, 1) num_threads(2)
+        for (int task = 0; task < 2; ++task) {
+            if (task == 0) error_a.run(a);
+            else error_b.run(b);
+        }
+    }
+    error_a.rethrow();
+    error_b.rethrow();
+}
+
 }  // namespace dgwarp

@@ -64,7 +64,6 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
         throw MeshError("the point array holds " + std::to_string(points.size()) +
                         " values, not a whole number of " + std::to_string(dim) + "D points");
     check_nodes(dim, points, boundary_nodes, "boundary");
-    check_nodes(dim, points, query_nodes, "query");
 
     const auto t0 = Clock::now();
     LocatedGraph out;
@@ -81,20 +80,19 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     out.graph.vertex_nodes = std::move(groups.members);
     const double group_seconds = seconds_since(t0);
 
-    const auto t1 = Clock::now();
-    const bool spatial = options.order == LocateOrder::morton ||
-                         (options.order == LocateOrder::automatic && !is_coherent_order(dim, points, query_nodes));
+    // The visiting order (and the caller's side work), beside the triangulation's build.
+    bool spatial = false;
     std::vector<std::uint32_t> morton;
-    std::span<const std::uint32_t> visit_order;  // empty: as given
-    if (spatial) {
-        if (options.morton.size() == query_nodes.size()) {
-            visit_order = options.morton;
-        } else {
-            morton = morton_order(dim, points, query_nodes);
-            visit_order = morton;
-        }
-    }
-    const double order_seconds = seconds_since(t1);
+    const detail::VisitOrderFn visit_order = [&]() -> std::span<const std::uint32_t> {
+        check_nodes(dim, points, query_nodes, "query");  // here: the build needs only the boundary nodes
+        if (options.beside_build) options.beside_build();
+        spatial = options.order == LocateOrder::morton ||
+                  (options.order == LocateOrder::automatic && !is_coherent_order(dim, points, query_nodes));
+        if (!spatial) return {};  // as given
+        if (options.morton.size() == query_nodes.size()) return options.morton;
+        morton = morton_order(dim, points, query_nodes);
+        return morton;
+    };
     if (progress) progress(0.0);
     const ProgressFn locate_progress = progress_part(progress, graph_progress_share, 1.0);
     detail::TriangulationResult tri =
@@ -104,7 +102,6 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     out.location = std::move(tri.location);
     out.timings = tri.timings;
     out.timings.triangulate_seconds += group_seconds;
-    out.timings.locate_seconds += order_seconds;
     out.timings.spatially_sorted = spatial;
     return out;
 }

@@ -22,6 +22,7 @@
 // given to build_located_graph (BoundarySet order); a graph vertex v stands
 // for one or more boundary indices with identical coordinates.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -85,6 +86,11 @@ struct GraphOptions {
     /// order too): used instead of sorting again when the order is Morton.
     /// Ignored unless it has one entry per query node.
     std::span<const std::uint32_t> morton = {};
+    /// Work of the caller's that does not need the graph (allocating its
+    /// per-node arrays, hashing the mesh): run beside the triangulation's
+    /// build, which is serial, on a second thread when there is one
+    /// (run_concurrently), after the visiting order. Must not call progress.
+    std::function<void()> beside_build = {};
 };
 
 /// Whether visiting `nodes` (ids into `points`, num_points × dim) in the

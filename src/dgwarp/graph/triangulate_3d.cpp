@@ -69,7 +69,7 @@ struct Space {
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              std::span<const std::uint32_t> visit_order, const ProgressFn& locate_progress) {
+                                              const VisitOrderFn& visit_order, const ProgressFn& locate_progress) {
     return triangulate_and_locate<Space>(points, vertex_node, query_nodes, visit_order, locate_progress);
 }
 

@@ -77,59 +77,117 @@ inline double perturbation_unit(const double* x, int dim, int axis) {
     return static_cast<double>(h >> 11) * 0x1p-52 - 1.0;
 }
 
-// The Delaunay triangulation of the points vertex_node[v] (info v), built as
-// described above. `builds`: how many builds it took (1 when the first passed;
-// always 1 in 2D).
+// A Delaunay triangulation and its finite simplices, numbered.
 template <class Dim>
-std::unique_ptr<typename Dim::Delaunay> build_delaunay(std::span<const double> points,
-                                                       std::span<const NodeId> vertex_node, int& builds) {
+struct NumberedDelaunay {
+    std::unique_ptr<typename Dim::Delaunay> dt;
+    std::vector<std::int32_t> simplices;  // finite simplex s (info s) × (dim + 1): its vertices' infos
+    int builds = 0;                       // how many builds it took (1 when the first passed; always 1 in 2D)
+};
+
+// Numbers dt's finite simplices (info) in CGAL's order and lists their vertices.
+template <class Dim>
+std::vector<std::int32_t> number_simplices(typename Dim::Delaunay& dt) {
+    constexpr int corners = Dim::dim + 1;
+    std::vector<std::int32_t> simplices;
+    simplices.reserve(corners * Dim::finite_simplex_count(dt));
+    std::int32_t next = 0;
+    for (const auto s : Dim::finite_simplices(dt)) {
+        s->info() = next++;
+        for (int k = 0; k < corners; ++k) simplices.push_back(s->vertex(k)->info());
+    }
+    return simplices;
+}
+
+// The Delaunay triangulation of the points vertex_node[v] (info v), built as
+// described above, with its simplices numbered: round after round, each
+// build() followed by check() until one passes (the last round, on the
+// original coordinates, needs no check). Split in two so that the serial
+// build can run beside other work and the check then in parallel.
+template <class Dim>
+class DelaunayBuild {
+public:
     using Delaunay = typename Dim::Delaunay;
     using Point = typename Dim::Point;
-    constexpr int dim = Dim::dim;
-    const std::size_t n = vertex_node.size();
-    auto coords = [&](std::size_t v) { return points.data() + static_cast<std::size_t>(vertex_node[v]) * dim; };
-    const BoundingBox box = bounding_box(dim, points, vertex_node);
-    const double* lo = box.min.data();
-    const double* hi = box.max.data();
-    double diagonal2 = 0;
-    for (int d = 0; d < dim; ++d) diagonal2 += (hi[d] - lo[d]) * (hi[d] - lo[d]);
-    const double amplitude = perturbation_fraction * std::sqrt(diagonal2);
-    std::vector<std::uint8_t> fixed(n, 0);
-    for (std::size_t v = 0; v < n; ++v)
-        for (int d = 0; d < dim; ++d) fixed[v] |= coords(v)[d] == lo[d] || coords(v)[d] == hi[d];
+    static constexpr int dim = Dim::dim;
+    static constexpr int corners = dim + 1;
 
-    std::vector<std::pair<Point, std::int32_t>> vertices(n);
-    builds = 0;
-    for (int round = dim == 3 ? 1 : perturbation_rounds;; ++round) {
-        const bool last = round == perturbation_rounds;
-        ++builds;
+    DelaunayBuild(std::span<const double> points, std::span<const NodeId> vertex_node)
+        : points_(points), vertex_node_(vertex_node), fixed_(vertex_node.size(), 0), vertices_(vertex_node.size()) {
+        const BoundingBox box = bounding_box(dim, points, vertex_node);
+        double diagonal2 = 0;
+        for (int d = 0; d < dim; ++d) diagonal2 += (box.max[d] - box.min[d]) * (box.max[d] - box.min[d]);
+        amplitude_ = perturbation_fraction * std::sqrt(diagonal2);
+        for (std::size_t v = 0; v < fixed_.size(); ++v)
+            for (int d = 0; d < dim; ++d) fixed_[v] |= coords(v)[d] == box.min[d] || coords(v)[d] == box.max[d];
+    }
+
+    /// The next round's triangulation, numbered, into `out`. False when it must
+    /// be built again at once (points moved onto each other or off their
+    /// common plane / line: every point then stays put).
+    bool build(NumberedDelaunay<Dim>& out) {
+        ++round_;
+        ++out.builds;
+        const std::size_t n = vertex_node_.size();
         for (std::size_t v = 0; v < n; ++v) {
             const double* x = coords(v);
             double y[3];
             for (int d = 0; d < dim; ++d)
-                y[d] = last || fixed[v] ? x[d] : x[d] + amplitude * perturbation_unit(x, dim, d);
-            vertices[v] = {Dim::point_at(y), static_cast<std::int32_t>(v)};
+                y[d] = last() || fixed_[v] ? x[d] : x[d] + amplitude_ * perturbation_unit(x, dim, d);
+            vertices_[v] = {Dim::point_at(y), static_cast<std::int32_t>(v)};
         }
         // Range insertion with info: CGAL sorts spatially before inserting.
-        auto dt = std::make_unique<Delaunay>(vertices.begin(), vertices.end());
-        if (last) return dt;
-        if (dt->number_of_vertices() != n) {  // two points moved onto each other
-            std::fill(fixed.begin(), fixed.end(), std::uint8_t{1});
-            continue;
+        out.dt = std::make_unique<Delaunay>(vertices_.begin(), vertices_.end());
+        out.simplices.clear();
+        if (!last() && (out.dt->number_of_vertices() != n || out.dt->dimension() != dim)) {
+            std::fill(fixed_.begin(), fixed_.end(), std::uint8_t{1});
+            return false;
         }
-        bool valid = dt->dimension() == dim;  // else coplanar / collinear points were moved apart
-        if (valid)
-            for (const auto s : Dim::finite_simplices(*dt)) {
-                Point p[dim + 1];
-                for (int k = 0; k <= dim; ++k) p[k] = Dim::point_at(coords(static_cast<std::size_t>(s->vertex(k)->info())));
-                if (Dim::positive(p)) continue;
-                valid = false;
-                for (int k = 0; k <= dim; ++k) fixed[static_cast<std::size_t>(s->vertex(k)->info())] = 1;
-            }
-        if (valid) return dt;
-        if (dt->dimension() != dim) std::fill(fixed.begin(), fixed.end(), std::uint8_t{1});
+        if (out.dt->dimension() == dim) out.simplices = number_simplices<Dim>(*out.dt);
+        return true;
     }
-}
+
+    /// Whether `out` (from build) is the answer: the last round's always is;
+    /// others when every simplex is positively oriented on the original
+    /// coordinates (exact test, in parallel). Otherwise the corners of the
+    /// inverted ones stay put in the next round.
+    bool check(const NumberedDelaunay<Dim>& out) {
+        if (last()) return true;
+        const auto count = static_cast<std::int64_t>(out.simplices.size() / corners);
+        std::vector<std::uint8_t> inverted(static_cast<std::size_t>(count), 0);
+        parallel_for(count, [&](std::int64_t s) {
+            Point p[corners];
+            for (int k = 0; k < corners; ++k)
+                p[k] = Dim::point_at(coords(static_cast<std::size_t>(out.simplices[s * corners + k])));
+            inverted[s] = !Dim::positive(p);
+        });
+        bool valid = true;
+        for (std::int64_t s = 0; s < count; ++s) {
+            if (!inverted[s]) continue;
+            valid = false;
+            for (int k = 0; k < corners; ++k) fixed_[static_cast<std::size_t>(out.simplices[s * corners + k])] = 1;
+        }
+        return valid;
+    }
+
+    /// Builds and checks until a round passes.
+    void finish(NumberedDelaunay<Dim>& out, bool built) {
+        while (!(built && check(out))) built = build(out);
+    }
+
+private:
+    const double* coords(std::size_t v) const {
+        return points_.data() + static_cast<std::size_t>(vertex_node_[v]) * dim;
+    }
+    bool last() const { return round_ >= perturbation_rounds; }
+
+    std::span<const double> points_;
+    std::span<const NodeId> vertex_node_;
+    std::vector<std::uint8_t> fixed_;
+    std::vector<std::pair<Point, std::int32_t>> vertices_;
+    double amplitude_ = 0;
+    int round_ = dim == 3 ? 0 : perturbation_rounds - 1;  // 2D: only the last round
+};
 
 // The order-independent simplex of a query (see the file comment): `s`, lt,
 // li, lj as the walk found them. `scratch` and `seen` are reused buffers.
@@ -174,40 +232,52 @@ typename Dim::Handle canonical_simplex(const typename Dim::Delaunay& dt, const t
 template <class Dim>
 TriangulationResult triangulate_and_locate(std::span<const double> points, std::span<const NodeId> vertex_node,
                                            std::span<const NodeId> query_nodes,
-                                           std::span<const std::uint32_t> visit_order,
+                                           const VisitOrderFn& visit_order,
                                            const ProgressFn& locate_progress) {
     using Delaunay = typename Dim::Delaunay;
     using Point = typename Dim::Point;
     using Handle = typename Dim::Handle;
-    constexpr int corners = Dim::dim + 1;
     TriangulationResult result;
-    auto t0 = Clock::now();
-
-    int builds = 0;
-    const std::unique_ptr<Delaunay> triangulation = build_delaunay<Dim>(points, vertex_node, builds);
-    const Delaunay& dt = *triangulation;
-    Dim::check_spans(dt, vertex_node.size());
-    result.timings.triangulation_builds = builds;
-
-    result.simplices.reserve(corners * Dim::finite_simplex_count(dt));
-    std::int32_t next = 0;
-    for (const Handle s : Dim::finite_simplices(dt)) {
-        s->info() = next++;
-        for (int k = 0; k < corners; ++k) result.simplices.push_back(s->vertex(k)->info());
-    }
-    result.timings.triangulate_seconds = seconds_since(t0);
-
-    t0 = Clock::now();
+    // The triangulation is built on one thread (CGAL's sequential insertion);
+    // beside it, the visiting order is computed and the query points gathered
+    // in that order (the walks then read them in sequence).
+    const auto t0 = Clock::now();
+    DelaunayBuild<Dim> builder(points, vertex_node);
+    NumberedDelaunay<Dim> built;
+    bool first_built = false;
+    double build_seconds = 0;
     std::vector<std::uint32_t> given;
-    if (visit_order.empty()) {
-        given.resize(query_nodes.size());
-        std::iota(given.begin(), given.end(), std::uint32_t{0});
-    }
-    const std::span<const std::uint32_t> order = visit_order.empty() ? std::span<const std::uint32_t>(given) : visit_order;
-    // The query points in visiting order: the walks then read them in sequence.
-    std::vector<Point> query(order.size());
-    parallel_for(static_cast<std::int64_t>(order.size()),
-                 [&](std::int64_t j) { query[j] = Dim::point_of(points, query_nodes[order[j]]); });
+    std::span<const std::uint32_t> order;
+    std::vector<Point> query;
+    run_concurrently(
+        [&] {
+            const auto t = Clock::now();
+            first_built = builder.build(built);
+            build_seconds = seconds_since(t);
+        },
+        [&] {
+            order = visit_order();
+            if (order.empty()) {
+                given.resize(query_nodes.size());
+                std::iota(given.begin(), given.end(), std::uint32_t{0});
+                order = given;
+            }
+            query.resize(order.size());
+            parallel_for(static_cast<std::int64_t>(order.size()),
+                         [&](std::int64_t j) { query[j] = Dim::point_of(points, query_nodes[order[j]]); });
+        });
+    // The part of the concurrent stage the build did not cover counts as location.
+    const double beside_seconds = std::max(0.0, seconds_since(t0) - build_seconds);
+    const auto t_check = Clock::now();
+    builder.finish(built, first_built);  // the check (in parallel), and further rounds if it fails
+    build_seconds += seconds_since(t_check);
+    const Delaunay& dt = *built.dt;
+    Dim::check_spans(dt, vertex_node.size());
+    result.timings.triangulation_builds = built.builds;
+    result.simplices = std::move(built.simplices);
+    result.timings.triangulate_seconds = build_seconds;
+
+    const auto t1 = Clock::now();
     result.location.simplex.assign(query.size(), -1);
     const auto n = static_cast<std::int64_t>(order.size());
     const std::int64_t blocks = (n + locate_block_size - 1) / locate_block_size;
@@ -230,7 +300,7 @@ TriangulationResult triangulate_and_locate(std::span<const double> points, std::
     }, 1);  // each index is a block of thousands of walks: always worth a thread
     located.finish();
     result.location.outside_count = std::accumulate(outside.begin(), outside.end(), std::int64_t{0});
-    result.timings.locate_seconds = seconds_since(t0);
+    result.timings.locate_seconds = beside_seconds + seconds_since(t1);
     return result;
 }
 

@@ -3,6 +3,7 @@
 // dimension (triangulate_2d.cpp, triangulate_3d.cpp), both the one template
 // of triangulate_cgal.hpp. Not part of the API.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -10,6 +11,8 @@
 #include "dgwarp/graph/delaunay_graph.hpp"
 
 namespace dgwarp::detail {
+
+using VisitOrderFn = std::function<std::span<const std::uint32_t>()>;
 
 struct TriangulationResult {
     std::vector<std::int32_t> simplices;  // num_simplices × (dim+1) graph vertex ids
@@ -19,19 +22,21 @@ struct TriangulationResult {
 
 /// Delaunay triangulation of the points `vertex_node[v]` (graph vertex v; all
 /// distinct), then location of `query_nodes`. `points` is num_points × dim.
-/// `visit_order`: the order in which to locate query_nodes (indices into
-/// it, a permutation; empty: as given). `locate_progress` gets the fraction
-/// of the queries located, per block.
+/// `visit_order` gives the order in which to locate query_nodes (indices into
+/// it, a permutation; empty: as given); it is called beside the
+/// triangulation's build (run_concurrently), and the span it returns must
+/// stay valid until this returns. `locate_progress` gets the fraction of the
+/// queries located, per block.
 /// Throws MeshError when the vertices do not span the plane / space.
 TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              std::span<const std::uint32_t> visit_order,
+                                              const VisitOrderFn& visit_order,
                                               const ProgressFn& locate_progress);
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              std::span<const std::uint32_t> visit_order,
+                                              const VisitOrderFn& visit_order,
                                               const ProgressFn& locate_progress);
 
 /// Queries are located in blocks of this many visits, each block walking from

@@ -3,6 +3,7 @@
 // steps 1 and 2): the Delaunay graph of the boundary nodes, every volume node
 // located in it, and how each graph vertex moves. Internal to the methods.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -24,9 +25,10 @@ struct BoundaryGraph {
 /// with -1 - b for the boundary node of boundary index b (split_volume_nodes;
 /// the volume nodes' entries are left for the caller). `progress` goes to 1
 /// while the volume nodes are located.
+/// `beside_build` goes to GraphOptions::beside_build.
 BoundaryGraph build_boundary_graph(int dim, std::span<const double> points, const BoundarySet& boundary,
                                    std::size_t num_points, std::vector<std::int32_t>& node_simplex,
-                                   const ProgressFn& progress);
+                                   const ProgressFn& progress, const std::function<void()>& beside_build = {});
 
 /// The graph stage for `plan` (a DgIdwPlan or DgmPlan): fills its
 /// node_simplex (boundary entries), shared_offsets, shared_members and the
@@ -34,8 +36,9 @@ BoundaryGraph build_boundary_graph(int dim, std::span<const double> points, cons
 /// shared_vertex_count), and returns the rest (the shared groups moved out).
 template <class Plan>
 BoundaryGraph prepare_boundary_graph(Plan& plan, int dim, std::span<const double> points, const BoundarySet& boundary,
-                                     std::size_t num_points, const ProgressFn& progress) {
-    BoundaryGraph g = build_boundary_graph(dim, points, boundary, num_points, plan.node_simplex, progress);
+                                     std::size_t num_points, const ProgressFn& progress,
+                                     const std::function<void()>& beside_build = {}) {
+    BoundaryGraph g = build_boundary_graph(dim, points, boundary, num_points, plan.node_simplex, progress, beside_build);
     plan.stats.graph_seconds = g.located.timings.triangulate_seconds;
     plan.stats.locate_seconds = g.located.timings.locate_seconds;
     plan.stats.outside_count = g.located.location.outside_count;

@@ -113,8 +113,21 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     const double moving_diagonal = boundary_diagonal(dim, points, boundary, true);
     const double all_diagonal = boundary_diagonal(dim, points, boundary, false);
 
-    BoundaryGraph bg =
-        prepare_boundary_graph(plan, dim, points, boundary, num_points, progress_part(progress, 0, 0.9));
+    // Beside the graph's (serial) build: the per-node arrays, allocated and
+    // zeroed, the boundary points and the mesh's fingerprint.
+    const int corners = dim + 1;
+    const std::size_t num_volume_nodes = num_points - boundary.nodes.size();
+    std::vector<std::uint8_t> snapped;
+    std::vector<double> boundary_points;
+    const auto beside_build = [&] {
+        plan.node_coefficients.resize(num_volume_nodes * static_cast<std::size_t>(corners));
+        snapped.assign(num_volume_nodes, 0);
+        // The boundary points by boundary index, in one small array (it stays in cache).
+        boundary_points = gather_points(dim, points, boundary.nodes);
+        plan.mesh = mesh_fingerprint(dim, points, boundary);
+    };
+    BoundaryGraph bg = prepare_boundary_graph(plan, dim, points, boundary, num_points,
+                                              progress_part(progress, 0, 0.9), beside_build);
     const std::vector<NodeId>& volume = bg.volume;
     LocatedGraph& lg = bg.located;
     const std::vector<std::int32_t>& vertex_motion = bg.vertex_motion.vertex_motion;
@@ -127,35 +140,34 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
     // Auto length scale (dg_idw.hpp): the moving boundary's size, but small
     // enough that the zone following the moving boundary, a L, fits in the gap.
     const double size = moving_diagonal > 0 ? moving_diagonal : all_diagonal > 0 ? all_diagonal : 1.0;
-    const double gap = moving_static_gap(dim, points, plan.boundary_nodes, g.simplices, vertex_motion);
+    double gap = 0;
+    run_concurrently(
+        [&] {
+            // Keep only the simplices that hold a volume node, numbered in order of
+            // first use by the nodes: deform then reads the simplex table almost
+            // sequentially instead of at random (and the plan is smaller). Each row
+            // lists its moving corners first, so deform needs no per-corner branch.
+            std::vector<std::int32_t> renumbered(g.num_simplices(), -1);
+            std::int32_t used = 0;
+            for (std::int32_t& s : lg.location.simplex) {
+                if (renumbered[s] < 0) {
+                    renumbered[s] = used++;
+                    const std::size_t row = plan.simplex_motion.size();
+                    for (int k = 0; k < corners; ++k)
+                        plan.simplex_motion.push_back(
+                            vertex_motion[g.simplices[static_cast<std::size_t>(s) * corners + k]]);
+                    std::stable_partition(plan.simplex_motion.begin() + row, plan.simplex_motion.end(),
+                                          [](std::int32_t b) { return b >= 0; });
+                }
+                s = renumbered[s];
+            }
+        },
+        [&] { gap = moving_static_gap(dim, points, plan.boundary_nodes, g.simplices, vertex_motion); });
     plan.auto_length_scale = std::min(size, gap / std::max(options.a_translation, options.a_rotation));
 
-    const int corners = dim + 1;
-    // Keep only the simplices that hold a volume node, numbered in order of
-    // first use by the nodes: deform then reads the simplex table almost
-    // sequentially instead of at random (and the plan is smaller). Each row
-    // lists its moving corners first, so deform needs no per-corner branch.
-    std::vector<std::int32_t> renumbered(g.num_simplices(), -1);
-    std::int32_t used = 0;
-    for (std::int32_t& s : lg.location.simplex) {
-        if (renumbered[s] < 0) {
-            renumbered[s] = used++;
-            const std::size_t row = plan.simplex_motion.size();
-            for (int k = 0; k < corners; ++k)
-                plan.simplex_motion.push_back(vertex_motion[g.simplices[static_cast<std::size_t>(s) * corners + k]]);
-            std::stable_partition(plan.simplex_motion.begin() + row, plan.simplex_motion.end(),
-                                  [](std::int32_t b) { return b >= 0; });
-        }
-        s = renumbered[s];
-    }
-
     const double snap_distance = snap_fraction * all_diagonal;
-    plan.node_coefficients.resize(volume.size() * static_cast<std::size_t>(corners));
-    std::vector<std::uint8_t> snapped(volume.size(), 0);
-    // The boundary points by boundary index, in one small array (it stays in
-    // cache), and each node's simplex row asked for ahead: in a spatially
-    // random numbering the rows are far apart (as in deform, dg_idw_deform.cpp).
-    const std::vector<double> boundary_points = gather_points(dim, points, boundary.nodes);
+    // Each node's simplex row is asked for ahead: in a spatially random
+    // numbering the rows are far apart (as in deform, dg_idw_deform.cpp).
     constexpr std::int64_t row_ahead = 16;
     const auto num_volume = static_cast<std::int64_t>(volume.size());
     parallel_for(num_volume, [&](std::int64_t i) {
@@ -176,7 +188,6 @@ DgIdwPlan prepare_dg_idw(int dim, std::span<const double> points, const Boundary
                                          options.weighting, snap_distance, plan.node_coefficients.data() + i * corners);
     });
     plan.stats.snapped_count = std::count(snapped.begin(), snapped.end(), std::uint8_t{1});
-    plan.mesh = mesh_fingerprint(dim, points, boundary);
     plan.stats.weights_seconds = seconds_since(t0);
     if (progress) progress(1.0);
     return plan;
