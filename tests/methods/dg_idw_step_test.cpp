@@ -44,7 +44,7 @@ std::array<int, 5> moving_corner_histogram(const DgIdwPlan& plan) {
 // weightings and simplices with 0 to 4 moving corners. A reordered sum or a
 // fused multiply-add in either copy changes last bits and fails this test.
 TEST(DgIdwStep, Avx2KernelGivesTheSameBitsAsSse2) {
-    if (!dg_idw_step_uses_avx2()) GTEST_SKIP() << "no AVX2 on this processor: both kernels are the SSE2 one";
+    if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor: both kernels are the SSE2 one";
     const BoxInBox m = mixed_box();
     for (DgIdwWeighting weighting : {DgIdwWeighting::paper, DgIdwWeighting::continuous}) {
         DgIdwOptions options;

@@ -1,12 +1,16 @@
 // deform_dg_harmonic: one harmonic solve on the coarse graph, then one pass over the nodes.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/prefetch.hpp"
+#include "dgwarp/core/step_kernel.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/dg_harmonic_step.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
@@ -105,84 +109,31 @@ void solve_interior(const HarmonicFactors& f, const HarmonicFactors::System& sys
                     values + static_cast<std::size_t>(first_unknown + i) * K + Offset);
 }
 
-// Prefetching, as in DG-IDW's step (dg_idw_deform.cpp): node -> coarse simplex
-// row -> corner values are dependent loads, far apart in a spatially random
-// node numbering; the loop asks for the row of the node row_prefetch_distance
-// ahead and for the corner values of the node values_prefetch_distance ahead.
-constexpr std::int64_t row_prefetch_distance = 16;
-constexpr std::int64_t values_prefetch_distance = 4;
+// The per-node pass, compiled twice (core/step_kernel.hpp).
+namespace sse2 {
+#include "dgwarp/methods/dg_harmonic_step_kernel.inc"
+}  // namespace sse2
 
-// Moves nodes [begin, end): boundary nodes by their own motion, volume nodes
-// by the values interpolated in their coarse simplex. Rotates: whether any
-// boundary node rotates (else only the translation is interpolated).
-template <int Dim, bool Rotates>
-void deform_range(const DgHarmonicPlan& plan, const double* x0, const NodeMotion* motion, const double* values,
-                  double* out, std::int64_t begin, std::int64_t end) {
-    using L = Layout<Dim>;
-    constexpr int K = L::size, Corners = Dim + 1;
-    std::int64_t vol = begin - (std::lower_bound(plan.boundary_nodes.begin(), plan.boundary_nodes.end(), begin) -
-                                plan.boundary_nodes.begin());
-    BoundaryMover<Dim> mover;
-    const std::int32_t* node_simplex = plan.node_simplex.data();
-    const std::int32_t* simplices = plan.simplices.data();
-    constexpr std::size_t used_bytes = (Rotates ? K : Dim) * sizeof(double);  // t first in each row
-    for (std::int64_t i = begin; i < end; ++i) {
-        if (i + row_prefetch_distance < end && node_simplex[i + row_prefetch_distance] >= 0)
-            prefetch_bytes(simplices + static_cast<std::int64_t>(node_simplex[i + row_prefetch_distance]) * Corners,
-                           Corners * sizeof(std::int32_t));
-        if (i + values_prefetch_distance < end && node_simplex[i + values_prefetch_distance] >= 0) {
-            const std::int32_t* c =
-                simplices + static_cast<std::int64_t>(node_simplex[i + values_prefetch_distance]) * Corners;
-            for (int k = 0; k < Corners; ++k) prefetch_bytes(values + static_cast<std::size_t>(c[k]) * K, used_bytes);
-        }
-        const double* x = x0 + i * Dim;
-        double* y = out + i * Dim;
-        const std::int32_t s = plan.node_simplex[i];
-        if (s < 0) {
-            const std::int32_t b = -1 - s;
-            if (plan.boundary_moving[b]) mover.move(motion[b], x, y);
-            else std::copy(x, x + Dim, y);
-            continue;
-        }
-        const double* e = plan.node_barycentric.data() + vol * Corners;
-        ++vol;
-        const std::int32_t* c = plan.simplices.data() + static_cast<std::int64_t>(s) * Corners;
-        if constexpr (!Rotates) {
-            double t[Dim] = {};
-            for (int k = 0; k < Corners; ++k) {
-                const double* vk = values + static_cast<std::size_t>(c[k]) * K + L::t;
-                for (int d = 0; d < Dim; ++d) t[d] += e[k] * vk[d];
-            }
-            for (int d = 0; d < Dim; ++d) y[d] = x[d] + t[d];
-            continue;
-        }
-        double v[K] = {};
-        for (int k = 0; k < Corners; ++k) {
-            const double* vk = values + static_cast<std::size_t>(c[k]) * K;
-            for (int j = 0; j < K; ++j) v[j] += e[k] * vk[j];
-        }
-        const double* t = v + L::t;
-        const double* w = v + L::w;
-        double r[Dim];  // x0 - c
-        const double inv_angle = v[L::angle] > 0 ? 1.0 / v[L::angle] : 0.0;
-        for (int d = 0; d < Dim; ++d) r[d] = x[d] - v[L::wc + d] * inv_angle;
-        if constexpr (Dim == 2) {
-            const RotationFactors f = rotation_factors(w[0] * w[0]);
-            const double fw = f.f * w[0], gw2 = f.g * w[0] * w[0];
-            y[0] = x[0] + (t[0] + (-fw * r[1] - gw2 * r[0]));
-            y[1] = x[1] + (t[1] + (fw * r[0] - gw2 * r[1]));
-        } else {
-            const RotationFactors f = rotation_factors(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-            const double we[3] = {w[1] * r[2] - w[2] * r[1], w[2] * r[0] - w[0] * r[2], w[0] * r[1] - w[1] * r[0]};
-            const double wwe[3] = {w[1] * we[2] - w[2] * we[1], w[2] * we[0] - w[0] * we[2], w[0] * we[1] - w[1] * we[0]};
-            for (int d = 0; d < 3; ++d) y[d] = x[d] + (t[d] + (f.f * we[d] + f.g * wwe[d]));
-        }
-    }
-}
+#if defined(__x86_64__)
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#endif
+namespace avx2 {
+#include "dgwarp/methods/dg_harmonic_step_kernel.inc"
+}  // namespace avx2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+#endif
 
 template <int Dim>
 void run(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-         std::span<double> out) {
+         std::span<double> out, StepKernel kernel) {
     constexpr int K = Layout<Dim>::size;
     std::vector<double> values(static_cast<std::size_t>(plan.num_vertices()) * K);
     using L = Layout<Dim>;
@@ -197,9 +148,20 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
             solve_interior<K, L::w, K - Dim>(f, f.shared ? f.translation : f.rotation, plan.num_boundary_vertices,
                                              values.data());
     }
+    const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
     parallel_for_blocks(plan.num_points(), deform_block, [&](std::int64_t begin, std::int64_t end) {
-        if (active.rotation) deform_range<Dim, true>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);
-        else deform_range<Dim, false>(plan, points.data(), motion.data(), values.data(), out.data(), begin, end);
+        auto pass = [&]<bool Rotates>() {
+#if defined(__x86_64__)
+            if (avx2) {
+                return avx2::deform_range<Dim, Rotates, Isa::avx2>(plan, points.data(), motion.data(), values.data(),
+                                                                   out.data(), begin, end);
+            }
+#endif
+            sse2::deform_range<Dim, Rotates, Isa::sse2>(plan, points.data(), motion.data(), values.data(),
+                                                       out.data(), begin, end);
+        };
+        if (active.rotation) pass.template operator()<true>();
+        else pass.template operator()<false>();
     });
 }
 
@@ -207,9 +169,14 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
 
 DgHarmonicStepReport deform_dg_harmonic(const DgHarmonicPlan& plan, std::span<const double> points,
                                         const BoundaryMotion& motion, std::span<double> out) {
+    return deform_dg_harmonic_with(plan, points, motion, out, StepKernel::automatic);
+}
+
+DgHarmonicStepReport deform_dg_harmonic_with(const DgHarmonicPlan& plan, std::span<const double> points,
+                                             const BoundaryMotion& motion, std::span<double> out, StepKernel kernel) {
     check_step_arrays("DG-harmonic", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
-    if (plan.dim == 2) run<2>(plan, points, motion, out);
-    else run<3>(plan, points, motion, out);
+    if (plan.dim == 2) run<2>(plan, points, motion, out, kernel);
+    else run<3>(plan, points, motion, out, kernel);
     return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
 }
 

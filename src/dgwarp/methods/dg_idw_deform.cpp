@@ -9,6 +9,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/prefetch.hpp"
+#include "dgwarp/core/step_kernel.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
@@ -42,16 +43,6 @@ RotationFactors factors(double angle2) {
     }
 }
 
-// The instruction set a copy of the kernel (dg_idw_step_kernel.inc) is
-// compiled for. The AVX2 copy is chosen at run time where the processor has
-// it; both do the same IEEE operations in the same order on every component
-// (no FMA: AVX2 alone, without the FMA extension), so they give the same bits
-// (DgIdwStep.Avx2KernelGivesTheSameBitsAsSse2).
-enum class Isa { sse2, avx2 };
-
-using Pair = double __attribute__((vector_size(16)));
-using Quad = double __attribute__((vector_size(32)));
-
 namespace sse2 {
 #include "dgwarp/methods/dg_idw_step_kernel.inc"
 }  // namespace sse2
@@ -75,15 +66,6 @@ namespace avx2 {
 #endif
 
 }  // namespace
-
-bool dg_idw_step_uses_avx2() {
-#if defined(__x86_64__)
-    static const bool has = __builtin_cpu_supports("avx2");
-    return has;
-#else
-    return false;
-#endif
-}
 
 void check_dg_idw_options(const DgIdwOptions& options) {
     auto positive = [](double a) { return std::isfinite(a) && a > 0; };
@@ -129,7 +111,7 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
                       : angle2_max <= taylor_angle2_limit(8) ? 8
                                                                : 10;
 
-    const bool avx2 = kernel == StepKernel::automatic && dg_idw_step_uses_avx2();
+    const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
     auto run = [&]<int Dim, int Terms>() {
         // Blocks handed out as threads free up: the cost per node varies along
         // the node order (boundary nodes, simplices with 0 to 4 moving corners).

@@ -7,6 +7,7 @@
 // so that its bits are the single-process run's.
 #include <span>
 
+#include "dgwarp/core/step_kernel.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 
 namespace dgwarp {
@@ -15,18 +16,10 @@ namespace dgwarp {
 /// motions (in 2D, w_z^2).
 double max_rotation_angle2(const DgIdwPlan& plan, const BoundaryMotion& motion);
 
-/// Which compiled copy of the 3D step runs: `automatic` takes the AVX2 copy
-/// where the processor has AVX2; `baseline` always takes the SSE2 one (for
-/// the test that both give the same bits).
-enum class StepKernel { automatic, baseline };
-
-/// Whether `automatic` takes the AVX2 copy on this processor.
-bool dg_idw_step_uses_avx2();
-
 /// deform_dg_idw, with angle2_max (>= max_rotation_angle2 of the motions the
 /// nodes read) in place of the one computed from `motion`.
 DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const double> points,
                                       const BoundaryMotion& motion, std::span<double> out, double angle2_max,
-                                      StepKernel kernel = StepKernel::automatic);
+                                      StepKernel kernel = StepKernel::automatic);  // core/step_kernel.hpp
 
 }  // namespace dgwarp
