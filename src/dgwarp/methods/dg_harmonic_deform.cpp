@@ -148,7 +148,7 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
             solve_interior<K, L::w, K - Dim>(f, f.shared ? f.translation : f.rotation, plan.num_boundary_vertices,
                                              values.data());
     }
-    const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
+    [[maybe_unused]] const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
     parallel_for_blocks(plan.num_points(), deform_block, [&](std::int64_t begin, std::int64_t end) {
         auto pass = [&]<bool Rotates>() {
 #if defined(__x86_64__)

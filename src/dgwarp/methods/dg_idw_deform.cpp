@@ -111,7 +111,7 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
                       : angle2_max <= taylor_angle2_limit(8) ? 8
                                                                : 10;
 
-    const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
+    [[maybe_unused]] const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
     auto run = [&]<int Dim, int Terms>() {
         // Blocks handed out as threads free up: the cost per node varies along
         // the node order (boundary nodes, simplices with 0 to 4 moving corners).
