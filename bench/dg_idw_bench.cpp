@@ -140,7 +140,7 @@ void run_case(const bench::SphereBoxCase& c, const bench::SphereBoxMesh& m, int 
         double total = 0;
         DgIdwPlan plan;
         total = median_seconds(3, [&] { plan = prepare_dg_idw(3, m.points, boundary); });
-        std::printf("prepare %d thread(s): %.3f s  (graph %.3f, locate %.3f, coefficients+fingerprint %.3f)\n",
+        std::printf("prepare %d thread(s): %.3f s  (graph %.3f, locate %.3f, coefficients %.3f)\n",
                     threads, total, plan.stats.graph_seconds, plan.stats.locate_seconds, plan.stats.weights_seconds);
         if (threads == 1) prepare_one_thread = total;
         else std::printf("prepare speed-up on 2 threads: %.2f\n", prepare_one_thread / total);

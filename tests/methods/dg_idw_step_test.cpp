@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cstring>
+#include <set>
 #include <vector>
 
+#include "dgwarp/methods/rotation_series.hpp"
 #include "support/box_in_box.hpp"
 
 using namespace dgwarp;
@@ -46,6 +48,7 @@ std::array<int, 5> moving_corner_histogram(const DgIdwPlan& plan) {
 TEST(DgIdwStep, Avx2KernelGivesTheSameBitsAsSse2) {
     if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this processor: both kernels are the SSE2 one";
     const BoxInBox m = mixed_box();
+    std::set<int> lengths;  // the Taylor lengths the motions below reach (11: beyond 1 rad, std::sin/cos)
     for (DgIdwWeighting weighting : {DgIdwWeighting::paper, DgIdwWeighting::continuous}) {
         DgIdwOptions options;
         options.weighting = weighting;
@@ -57,6 +60,12 @@ TEST(DgIdwStep, Avx2KernelGivesTheSameBitsAsSse2) {
             if (amount == 0)
                 for (NodeMotion& nm : motion) nm.rotation = {};
             const double angle2 = max_rotation_angle2(plan, motion);
+            lengths.insert(angle2 == 0 ? 0
+                           : angle2 <= taylor_angle2_limit(4) ? 4
+                           : angle2 <= taylor_angle2_limit(6) ? 6
+                           : angle2 <= taylor_angle2_limit(8) ? 8
+                           : angle2 <= taylor_angle2_limit(10) ? 10
+                                                              : 11);
             std::vector<double> avx(m.points.size()), sse(m.points.size());
             deform_dg_idw_bounded(plan, m.points, motion, avx, angle2, StepKernel::automatic);
             deform_dg_idw_bounded(plan, m.points, motion, sse, angle2, StepKernel::baseline);
@@ -65,4 +74,5 @@ TEST(DgIdwStep, Avx2KernelGivesTheSameBitsAsSse2) {
             EXPECT_NE(0, std::memcmp(sse.data(), m.points.data(), sse.size() * sizeof(double)));  // it moved
         }
     }
+    EXPECT_EQ(lengths, (std::set<int>{0, 4, 6, 8, 10, 11}));
 }

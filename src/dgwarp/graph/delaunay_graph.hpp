@@ -89,7 +89,9 @@ struct GraphOptions {
     /// Work of the caller's that does not need the graph (allocating its
     /// per-node arrays, hashing the mesh): run beside the triangulation's
     /// build, which is serial, on a second thread when there is one
-    /// (run_concurrently), after the visiting order. Must not call progress.
+    /// (run_concurrently), on the thread that then computes the visiting
+    /// order; its time counts in GraphTimings::locate_seconds when it
+    /// outlasts the build. Must not call progress.
     std::function<void()> beside_build = {};
 };
 

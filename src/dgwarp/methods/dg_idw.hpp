@@ -89,7 +89,8 @@ struct DgIdwPrepareStats {
                                            //   only those holding a volume node: see simplex_motion)
     double graph_seconds = 0;    // Delaunay graph (0 in a loaded plan)
     double locate_seconds = 0;   // point location (0 in a loaded plan)
-    double weights_seconds = 0;  // coefficients and fingerprint (0 in a loaded plan)
+    double weights_seconds = 0;  // coefficients and the auto length scale (0 in a loaded plan); the mesh
+                                 //   fingerprint is made beside the graph build and counted in locate_seconds
 };
 
 /// Everything deform_dg_idw needs, as plain arrays (see plan_file.hpp to save it).
