@@ -110,26 +110,8 @@ void solve_interior(const HarmonicFactors& f, const HarmonicFactors::System& sys
 }
 
 // The per-node pass, compiled twice (core/step_kernel.hpp).
-namespace sse2 {
-#include "dgwarp/methods/dg_harmonic_step_kernel.inc"
-}  // namespace sse2
-
-#if defined(__x86_64__)
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-namespace avx2 {
-#include "dgwarp/methods/dg_harmonic_step_kernel.inc"
-}  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-#endif
+#define DGWARP_STEP_KERNEL "dgwarp/methods/dg_harmonic_step_kernel.inc"
+#include "dgwarp/core/step_kernel_copies.inc"
 
 template <int Dim>
 void run(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
@@ -43,27 +44,9 @@ RotationFactors factors(double angle2) {
     }
 }
 
-namespace sse2 {
-#include "dgwarp/methods/dg_idw_step_kernel.inc"
-}  // namespace sse2
-
-#if defined(__x86_64__)
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-namespace avx2 {
-#include "dgwarp/methods/dg_idw_step_kernel.inc"
-}  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-
-#endif
+// The per-node kernel, compiled twice (core/step_kernel.hpp).
+#define DGWARP_STEP_KERNEL "dgwarp/methods/dg_idw_step_kernel.inc"
+#include "dgwarp/core/step_kernel_copies.inc"
 
 }  // namespace
 
