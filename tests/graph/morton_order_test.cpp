@@ -63,6 +63,35 @@ TEST(GraphMortonOrder, SortsByCodeWithTiesInGivenOrder) {
     }
 }
 
+TEST(GraphMortonOrder, ClusteredNodesSortedByEveryBit) {
+    // Most nodes packed into a corner a millionth of the box wide (a boundary
+    // layer's): their codes agree in the high bits, so the order among them
+    // comes from the low bits alone.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int dim : {2, 3}) {
+        std::vector<double> points;
+        for (int i = 0; i < 6000; ++i)
+            for (int d = 0; d < dim; ++d) points.push_back(i < 200 ? u(rng) : 0.25 + 1e-6 * u(rng));
+        for (int i = 0; i < 300; ++i)  // repeated points: ties
+            for (int d = 0; d < dim; ++d) points.push_back(points[(i * 13 + 250) * dim + d]);
+        std::vector<NodeId> nodes(points.size() / dim);
+        std::iota(nodes.begin(), nodes.end(), 0);
+        std::shuffle(nodes.begin(), nodes.end(), rng);
+
+        const std::vector<std::uint64_t> codes = morton_codes_bit_by_bit(dim, points, nodes);
+        std::vector<std::uint32_t> expected(nodes.size());
+        std::iota(expected.begin(), expected.end(), 0u);
+        std::stable_sort(expected.begin(), expected.end(),
+                         [&](std::uint32_t a, std::uint32_t b) { return codes[a] < codes[b]; });
+        EXPECT_EQ(morton_order(dim, points, nodes), expected) << dim << "D";
+        std::size_t sharing_high_bits = 0;  // the test's premise
+        for (std::size_t k = 1; k < expected.size(); ++k)
+            sharing_high_bits += codes[expected[k]] >> 33 == codes[expected[k - 1]] >> 33;
+        EXPECT_GT(sharing_high_bits, 5000u) << dim << "D";
+    }
+}
+
 TEST(GraphMortonOrder, FlatAxisEmptyAndSingleNode) {
     // All points on the plane z = 1: that axis contributes nothing.
     const std::vector<double> points = {0, 0, 1, 1, 1, 1, 1, 0, 1, 0, 1, 1};

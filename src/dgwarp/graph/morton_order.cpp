@@ -38,20 +38,36 @@ struct Keyed {
     std::uint32_t position;
 };
 
-// Sorts by code, ties in the given order (a stable LSD radix sort, 11-bit
-// digits; digits above the highest set bit of any code are skipped): the
-// order std::sort of (code, position) pairs gives, in a fraction of its time
-// (826k nodes: 0.07 s with std::sort).
+// Sorts by code, ties in the given order: the order std::sort of (code,
+// position) pairs gives, in a fraction of its time (826k nodes: 0.07 s with
+// std::sort). A stable LSD radix sort (11-bit digits) of the codes' bits from
+// high_shift up (digits above the highest set bit of any code are skipped),
+// then std::sort of each run of codes equal in those bits. In a mesh most runs
+// have one node (2^30 cells in 3D for about a million nodes), so the sort is
+// three passes instead of six (865k sphere, one thread, medians of 9 in one
+// process: 0.070-0.076 -> 0.041 s, the same order); a boundary layer's
+// clustered nodes make longer runs, each sorted in cache.
 void radix_sort(std::vector<Keyed>& key, std::uint64_t all_bits) {
     constexpr int digit_bits = 11;
+    constexpr int high_shift = 33;  // three digits: bits 33-63
     constexpr std::size_t buckets = std::size_t{1} << digit_bits;
     std::vector<Keyed> other(key.size());
-    for (int shift = 0; shift < 64 && (all_bits >> shift) != 0; shift += digit_bits) {
+    for (int shift = high_shift; shift < 64 && (all_bits >> shift) != 0; shift += digit_bits) {
         std::vector<std::size_t> count(buckets + 1, 0);
         for (const Keyed& k : key) ++count[((k.code >> shift) & (buckets - 1)) + 1];
         for (std::size_t b = 0; b < buckets; ++b) count[b + 1] += count[b];
         for (const Keyed& k : key) other[count[(k.code >> shift) & (buckets - 1)]++] = k;
         key.swap(other);
+    }
+    auto by_code_then_position = [](const Keyed& a, const Keyed& b) {
+        return a.code != b.code ? a.code < b.code : a.position < b.position;
+    };
+    for (std::size_t i = 0; i < key.size();) {
+        std::size_t j = i + 1;
+        while (j < key.size() && (key[j].code >> high_shift) == (key[i].code >> high_shift)) ++j;
+        if (j - i > 1) std::sort(key.begin() + static_cast<std::ptrdiff_t>(i), key.begin() + static_cast<std::ptrdiff_t>(j),
+                                 by_code_then_position);
+        i = j;
     }
 }
 
