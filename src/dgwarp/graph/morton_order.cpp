@@ -66,8 +66,9 @@ void radix_sort(std::vector<Keyed>& key, std::uint64_t all_bits) {
     for (std::size_t i = 0; i < key.size();) {
         std::size_t j = i + 1;
         while (j < key.size() && (key[j].code >> high_shift) == (key[i].code >> high_shift)) ++j;
-        if (j - i > 1) std::sort(key.begin() + static_cast<std::ptrdiff_t>(i), key.begin() + static_cast<std::ptrdiff_t>(j),
-                                 by_code_then_position);
+        if (j - i > 1)
+            std::sort(key.begin() + static_cast<std::ptrdiff_t>(i), key.begin() + static_cast<std::ptrdiff_t>(j),
+                      by_code_then_position);
         i = j;
     }
 }
