@@ -170,6 +170,30 @@ TEST(GmshReadErrors, BadPhysicalName) {
     expect_parse_error(first_lines(test::tet_22, 3) + dims, 6, "0, 1, 2 or 3", "4");
 }
 
+TEST(GmshReadErrors, TwoPhysicalGroupsOfOneNameAreAMeshErrorNamingBoth) {
+    // Issue #27: "farfield" renamed "airfoil" made one marker of both, and a
+    // motion of "airfoil" moved the far field too. The SU2 reader refuses it.
+    const std::string text = first_lines(test::tet_22, 3) +
+                             "$PhysicalNames\n2\n2 5 \"wall\"\n2 6 \"wall\"\n$EndPhysicalNames\n" +
+                             edit_lines(test::tet_22, {{1, std::nullopt}, {2, std::nullopt}, {3, std::nullopt},
+                                                       {12, "3"}, {15, "3 2 2 6 3 1 2 4\n$EndElements"}});
+    try {
+        read_gmsh_text("twice.msh", text);
+        FAIL() << "accepted:\n" << text;
+    } catch (const MeshError& e) {
+        EXPECT_EQ(e.marker(), "wall");
+        const std::string what = e.what();
+        EXPECT_NE(what.find("twice.msh"), std::string::npos) << what;
+        EXPECT_NE(what.find("physical groups 5 and 6"), std::string::npos) << what;
+    }
+    // Distinct names read as two markers.
+    std::string distinct = text;
+    distinct.replace(distinct.find("6 \"wall\""), 8, "6 \"side\"");
+    const Mesh mesh = read_gmsh_text("distinct.msh", distinct);
+    ASSERT_EQ(mesh.markers.size(), 2u);
+    EXPECT_EQ(mesh.markers[1].name, "side");
+}
+
 TEST(GmshReadErrors, PartitionedMeshIsAFormatError) {
     EXPECT_THROW(read_gmsh_text("part.msh", edit_lines(test::tet_41, {{4, "$PartitionedEntities"}, {8, "$EndPartitionedEntities"}})),
                  FormatError);

@@ -136,8 +136,8 @@ TEST(Su2ReadDamage, BadNumbers) {
     expect_parse_error(with_line(3, "five 0 1 2 0"), 3, "an integer element type id in element 1", "five");
     expect_parse_error(with_line(16, "3 1"), 16, "node 2 of the line (an integer node id) in boundary element 1",
                        "end of line");
-    expect_parse_error(with_line(2, "NELEM= many"), 2, "a non-negative element count after NELEM=", "many");
-    expect_parse_error(with_line(2, "NELEM="), 2, "a non-negative element count after NELEM=", "nothing");
+    expect_parse_error(with_line(2, "NELEM= many"), 2, "a positive element count after NELEM=", "many");
+    expect_parse_error(with_line(2, "NELEM="), 2, "a positive element count after NELEM=", "nothing");
     expect_parse_error(with_line(1, "NDIME= two"), 1, "dimension 2 or 3 after NDIME=", "two");
 }
 
@@ -195,7 +195,7 @@ TEST(Su2ReadDamage, MissingMarkerElems) {
 }
 
 TEST(Su2ReadDamage, NegativeCounts) {
-    expect_parse_error(with_line(2, "NELEM= -1"), 2, "a non-negative element count after NELEM=", "-1");
+    expect_parse_error(with_line(2, "NELEM= -1"), 2, "a positive element count after NELEM=", "-1");
     expect_parse_error(with_line(5, "NPOIN= -4"), 5, "a non-negative point count after NPOIN=", "-4");
     expect_parse_error(with_line(10, "NMARK= -2"), 10, "a non-negative marker count after NMARK=", "-2");
     expect_parse_error(with_line(12, "MARKER_ELEMS= -1"), 12, "a non-negative boundary element count", "-1");
@@ -215,7 +215,7 @@ TEST(Su2ReadDamage, AbsurdCountsFailAtTheHeaderBeforeAnyAllocation) {
     expect_parse_error("NDIME= 3\nNZONE= " + huge + "\n", 2, "zone count that the rest of the file can hold",
                        huge.c_str());
     expect_parse_error(with_line(2, "NELEM= 9223372036854775807"), 2, "element count that the rest of the file");
-    expect_parse_error(with_line(2, "NELEM= 99999999999999999999"), 2, "a non-negative element count");
+    expect_parse_error(with_line(2, "NELEM= 99999999999999999999"), 2, "a positive element count");
     // Just above the bound: 3 triangle lines need at least 3 × 8 - 1 bytes, not 8.
     expect_parse_error("NDIME= 2\nNELEM= 3\n5 0 1 2\n", 2, "element count that the rest of the file can hold", "3");
 }
@@ -228,7 +228,8 @@ TEST(Su2ReadDamage, DuplicateSections) {
 
 TEST(Su2ReadDamage, ZoneKeywordsInTheWrongPlace) {
     expect_parse_error("IZONE= 1\n", 1, "NZONE= before IZONE=", "IZONE= 1");
-    expect_parse_error("NZONE= 2\nIZONE= 1\nNDIME= 2\nNELEM= 0\nIZONE= 2\n", 5, "the NPOIN=, NMARK= sections of zone 1",
+    expect_parse_error("NZONE= 2\nIZONE= 1\nNDIME= 2\nNELEM= 1\n5 0 1 2\nIZONE= 2\n", 6,
+                       "the NPOIN=, NMARK= sections of zone 1",
                        "IZONE= 2");
     expect_parse_error("NZONE= 2\nIZONE= one\n", 2, "a zone number after IZONE=", "one");
 }

@@ -175,7 +175,7 @@ TEST(Su2ReadZones, AnAbsentZoneNamesTheFileTheZoneAndTheZoneCount) {
 }
 
 TEST(Su2ReadZones, ASingleZoneFileHasOnlyZoneOne) {
-    const std::string text = "NDIME= 2\nNELEM= 0\nNPOIN= 0\nNMARK= 0\n";
+    const std::string text = "NDIME= 2\nNELEM= 1\n5 0 1 2\nNPOIN= 3\n0 0\n1 0\n0 1\nNMARK= 0\n";
     EXPECT_NO_THROW(read_su2_text("one.su2", text, 1));
     try {
         read_su2_text("one.su2", text, 2);
@@ -188,15 +188,28 @@ TEST(Su2ReadZones, ASingleZoneFileHasOnlyZoneOne) {
 
 TEST(Su2ReadZones, AZoneMissingFromAFileThatAnnouncesItIsAParseError) {
     const std::string text = "NZONE= 3\nIZONE= 1\nNDIME= 2\nNELEM= 0\nNPOIN= 0\nNMARK= 0\n"
-                             "IZONE= 2\nNDIME= 2\nNELEM= 0\nNPOIN= 1\n1 2\nNMARK= 0\n";
-    EXPECT_EQ(read_su2_text("z.su2", text, 2).num_points(), 1u);
+                             "IZONE= 2\nNDIME= 2\nNELEM= 1\n5 0 1 2\nNPOIN= 3\n1 2\n3 4\n5 7\nNMARK= 0\n";
+    EXPECT_EQ(read_su2_text("z.su2", text, 2).num_points(), 3u);
     try {
         read_su2_text("z.su2", text, 3);
         FAIL();
     } catch (const ParseError& e) {
-        EXPECT_EQ(e.line(), 12u);
+        EXPECT_EQ(e.line(), 15u);
         EXPECT_EQ(e.found(), "end of file");
         EXPECT_NE(e.expected().find("IZONE= 3"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Su2ReadZones, AZoneWithoutCellsIsAParseErrorAtItsNelem) {
+    // Issue #27: a 0-cell mesh was read, measured (min quality 0 of cell -1)
+    // and written to .vtu/.msh files that dgwarp then refused.
+    try {
+        read_su2_text("empty.su2", "NDIME= 2\nNELEM= 0\nNPOIN= 1\n0 0\nNMARK= 0\n");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 2u);
+        EXPECT_EQ(e.found(), "0");
+        EXPECT_NE(e.expected().find("a positive element count"), std::string::npos) << e.what();
     }
 }
 

@@ -79,12 +79,14 @@ TEST(Su2Write, RoundTripIsBitExact) {
     EXPECT_EQ(std::memcmp(back.points.data(), m.points.data(), m.points.size() * sizeof(double)), 0);
 }
 
-TEST(Su2Write, EmptyMeshRoundTrips) {
+TEST(Su2Write, AMeshWithoutCellsIsRefusedBeforeWriting) {
+    // It used to round-trip; no reader but SU2's took it back, and nothing
+    // can be measured or deformed on it (issue #27): validate() refuses it.
     Mesh m;
     m.dim = 3;
     std::ostringstream out;
-    write_su2(out, m);
-    EXPECT_EQ(read_su2_text("empty.su2", out.str()), m);
+    EXPECT_THROW(write_su2(out, m), MeshError);
+    EXPECT_EQ(out.str(), "");
 }
 
 class Su2WriteRealMesh : public testing::TestWithParam<std::filesystem::path> {};

@@ -67,6 +67,34 @@ TEST(Mesh, ValidateRejectsCellOfWrongDimension) {
     EXPECT_THROW(validate(m), MeshError);
 }
 
+TEST(Mesh, ValidateRejectsTwoMarkersOfOneName) {
+    // A motion names markers: both would move (issue #27, Gmsh physical groups).
+    Mesh m = unit_square_two_triangles();
+    m.markers.push_back(m.markers[0]);
+    try {
+        validate(m);
+        FAIL();
+    } catch (const MeshError& e) {
+        EXPECT_EQ(e.marker(), "wall");
+        EXPECT_NE(std::string(e.what()).find("markers 1 and 2"), std::string::npos) << e.what();
+    }
+    m.markers[1].name = "wall2";
+    EXPECT_NO_THROW(validate(m));
+}
+
+TEST(Mesh, ValidateRejectsAMeshWithoutCells) {
+    // Issue #27: a 0-cell SU2 mesh was read, "measured" (min quality 0 of
+    // cell -1), deformed and written to files the readers then refused.
+    Mesh m = unit_square_two_triangles();
+    m.cells = {};
+    try {
+        validate(m);
+        FAIL();
+    } catch (const MeshError& e) {
+        EXPECT_NE(std::string(e.what()).find("no cells"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Mesh, BoundingBoxAndTypeCounts) {
     Mesh m = unit_square_two_triangles();
     m.points[2] = 3.5;   // node 1 x

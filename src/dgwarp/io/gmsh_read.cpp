@@ -94,10 +94,19 @@ Mesh assemble_mesh(const std::string& file, msh::GmshContent& c) {
     // One marker per physical group of dimension dim - 1, in tag order.
     const int bdim = mesh.dim - 1;
     std::map<int, std::size_t> marker_of_tag;
+    std::map<std::string, int> tag_of_name;
     for (int tag : physical_tags_of_dimension(c, bdim)) {
         const auto name = c.physical_names.find({bdim, tag});
+        std::string marker = name != c.physical_names.end() ? name->second : "physical_" + std::to_string(tag);
+        // As the SU2 reader: a motion names markers, so two groups of one
+        // name would both move (the far field with the airfoil).
+        if (const auto [other, added] = tag_of_name.emplace(marker, tag); !added)
+            throw MeshError(file + ": the physical groups " + std::to_string(other->second) + " and " +
+                                std::to_string(tag) + " of dimension " + std::to_string(bdim) + " are both named '" +
+                                marker + "'; marker names must be unique (rename one in $PhysicalNames)",
+                            marker);
         marker_of_tag[tag] = mesh.markers.size();
-        mesh.markers.push_back({name != c.physical_names.end() ? name->second : "physical_" + std::to_string(tag), {}});
+        mesh.markers.push_back({std::move(marker), {}});
     }
     const msh::ElementsOfDimension& boundary = c.by_dim[bdim];
     for (std::size_t i = 0; i < boundary.elements.size(); ++i)

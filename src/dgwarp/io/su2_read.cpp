@@ -198,7 +198,7 @@ void read_element(TextReader& r, const Block& b, std::int64_t i, int dim, bool b
 /// Returns a description of the block for errors about what follows it.
 std::string read_cells(TextReader& r, const Keyword& kw, int dim, ElementList& cells, NodeIdRange& range) {
     const int min_nodes = dim == 2 ? 3 : 4;
-    const Block block = {"element", "NELEM", r.line_number(), parse_count(r, kw, "element count", 1 + min_nodes), {}};
+    const Block block = {"element", "NELEM", r.line_number(), parse_count(r, kw, "element count", 1 + min_nodes, 1), {}};
     cells.reserve(static_cast<std::size_t>(block.count), min_nodes);
     for (std::int64_t i = 0; i < block.count; ++i) read_element(r, block, i, dim, false, cells, range);
     return block_summary(block);

@@ -112,10 +112,22 @@ void validate(const Mesh& mesh) {
         throw MeshError("mesh dimension is " + std::to_string(mesh.dim) + ", expected 2 or 3");
     if (mesh.points.size() % static_cast<std::size_t>(mesh.dim) != 0)
         throw MeshError("point array length is not a multiple of the dimension");
+    // Without cells nothing can be measured, deformed or written so that a reader takes it back.
+    if (mesh.cells.empty())
+        throw MeshError("the mesh has no cells (no " + std::to_string(mesh.dim) +
+                        "D elements); dgwarp needs a surface or volume mesh");
     const auto n = static_cast<std::int64_t>(mesh.num_points());
     check_elements(mesh.cells, n, mesh.dim, "cell", "");
     for (const Marker& m : mesh.markers)
         check_elements(m.elements, n, mesh.dim - 1, "marker '" + m.name + "'", m.name);
+    // A motion names markers: two of one name would move (or fix) both.
+    for (std::size_t i = 0; i < mesh.markers.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (mesh.markers[i].name == mesh.markers[j].name)
+                throw MeshError("markers " + std::to_string(j + 1) + " and " + std::to_string(i + 1) +
+                                    " are both named '" + mesh.markers[i].name +
+                                    "'; marker names must be unique (a motion names markers)",
+                                mesh.markers[i].name);
 }
 
 }  // namespace dgwarp

@@ -86,9 +86,9 @@ BoundingBox bounding_box(const Mesh& mesh);
 BoundingBox bounding_box(int dim, std::span<const double> points, std::span<const NodeId> nodes);
 
 /// Checks the mesh is consistent: dim is 2 or 3, the point array is a whole
-/// number of points, every node id is in range, cells have the mesh's
-/// dimension and boundary elements one less. Throws MeshError naming the
-/// first bad cell or marker element.
+/// number of points, there is at least one cell, every node id is in range, cells have the mesh's
+/// dimension and boundary elements one less, and no two markers share a name.
+/// Throws MeshError naming the first bad cell, marker element or marker.
 void validate(const Mesh& mesh);
 
 }  // namespace dgwarp
