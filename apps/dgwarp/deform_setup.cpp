@@ -89,14 +89,16 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
     // The defaults are the library's (the paper's values for DG-IDW).
     const DgIdwOptions dg_idw;
     cmd->add_option("--a-translation", a.a_translation,
-                    "DG-IDW weight a of the translation (paper: " + number_text(dg_idw.a_translation) + ")")
+                    "DG-IDW weight a of the translation (paper: " + number_text(dg_idw.a_translation) + "; " +
+                        number_text(dg_idw_a_min) + " to " + number_text(dg_idw_a_max) + ")")
         ->capture_default_str()
-        ->check(positive_number())
+        ->check(number_between(dg_idw_a_min, dg_idw_a_max))
         ->each(given("--a-translation"));
     cmd->add_option("--a-rotation", a.a_rotation,
-                    "DG-IDW weight a of the rotation (paper: " + number_text(dg_idw.a_rotation) + ")")
+                    "DG-IDW weight a of the rotation (paper: " + number_text(dg_idw.a_rotation) + "; " +
+                        number_text(dg_idw_a_min) + " to " + number_text(dg_idw_a_max) + ")")
         ->capture_default_str()
-        ->check(positive_number())
+        ->check(number_between(dg_idw_a_min, dg_idw_a_max))
         ->each(given("--a-rotation"));
     cmd->add_option("--length-scale", a.length_scale,
                     "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or "

@@ -113,3 +113,41 @@ TEST(CheckCli, WarningsGoToStandardErrorAndKeepExitCode0) {
     EXPECT_EQ(q.exit_code, 0);
     EXPECT_TRUE(q.out.empty()) << q.out;
 }
+
+TEST(CheckCli, CheckAcceptsExactlyWhatDeformAccepts) {
+    // Issue #27: an axis [0, 0, 1e-300] (any non-zero length, MOTION.md)
+    // passed check and failed deform ("the motion ... is not finite"); a
+    // translation of 1.7e308 too. Both now run one resolution: the same exit
+    // code, and the tiny axis turns as the unit one does.
+    const RectBoxFiles c = rect_box_files();
+    struct Case {
+        const char* json;
+        int code;
+    };
+    const Case cases[] = {
+        {R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "axis": [0, 0, 1e-300], "center": [0, 0]}}}})", 0},
+        {R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "axis": [0, 0, 1e300], "center": [0, 0]}}}})", 0},
+        {R"({"markers": {"rectangle": {"translate": [1.7e308, 0]}}})", 2},
+        {R"({"markers": {"rectangle": {"translate": [1e308, 1e308]}}})", 2},
+        {R"({"markers": {"rectangle": {"rotate": {"angle_deg": 1e300, "center": [0, 0]}}}})", 2},
+    };
+    for (std::size_t k = 0; k < std::size(cases); ++k) {
+        const auto motion = write_text(c.dir / ("m" + std::to_string(k) + ".json"), cases[k].json);
+        const CommandResult check = run_cli("check " + quoted(c.mesh) + " -m " + quoted(motion) + " -q");
+        const CommandResult deform = run_cli("deform " + quoted(c.mesh) + " -m " + quoted(motion) + " -o " +
+                                             quoted(c.dir / ("out" + std::to_string(k) + ".su2")) + " -q");
+        EXPECT_EQ(check.exit_code, cases[k].code) << cases[k].json << "\n" << check.err;
+        EXPECT_EQ(deform.exit_code, cases[k].code) << cases[k].json << "\n" << deform.err;
+        if (cases[k].code != 0) {
+            EXPECT_TRUE(check_cli_has(check.err, "marker 'rectangle' cannot move node")) << check.err;
+            EXPECT_EQ(check.err, deform.err);
+        }
+    }
+    // The tiny axis gives the unit axis' result, bit for bit.
+    const auto unit = write_text(c.dir / "unit.json",
+                                 R"({"markers": {"rectangle": {"rotate": {"angle_deg": 10, "axis": [0, 0, 1], "center": [0, 0]}}}})");
+    ASSERT_EQ(run_cli("deform " + quoted(c.mesh) + " -m " + quoted(unit) + " -o " + quoted(c.dir / "unit.su2") + " -q")
+                  .exit_code,
+              0);
+    EXPECT_EQ(slurp(c.dir / "out0.su2"), slurp(c.dir / "unit.su2"));
+}

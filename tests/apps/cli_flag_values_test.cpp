@@ -40,6 +40,8 @@ TEST(CliFlagValues, EveryBadValueIsAUsageErrorWithAReadableMessage) {
         {deform + " --a-translation inf", "--a-translation"},
         {deform + " --a-translation -1", "--a-translation"},  // was a 309-digit range
         {deform + " --a-rotation 1e400", "--a-rotation"},
+        {deform + " --method dg-idw --a-translation 1e-310", "--a-translation"},  // made NaN coordinates (#27)
+        {deform + " --method dg-idw --a-rotation 1e7", "--a-rotation"},
         {prepare + " --a-rotation nan", "--a-rotation"},
         {deform + " --rbf-radius -1", "--rbf-radius"},
         {deform + " --rbf-greedy inf", "--rbf-greedy"},

@@ -19,6 +19,19 @@ TEST(MotionSpec, RotationVectorIsAngleTimesUnitAxis) {
     EXPECT_DOUBLE_EQ(v[2], 0.8);
 }
 
+TEST(MotionSpec, RotationVectorOfATinyOrHugeAxisIsStillAngleTimesUnitAxis) {
+    // "any non-zero length" (MOTION.md): [0, 0, 1e-300] squared underflowed
+    // to 0 and gave (nan, nan, inf), which deform refused and check passed.
+    for (const double length : {1e-300, 4.9e-324, 1e300, 1.7e308}) {
+        const Vec3 w = rotation_vector(0.3, {0, 0, length});
+        EXPECT_EQ(w, (Vec3{0, 0, 0.3})) << length;
+        if (!std::isfinite(4 * length)) continue;
+        const Vec3 v = rotation_vector(1.0, {3 * length, 0, 4 * length});
+        EXPECT_NEAR(v[0], 0.6, 1e-15) << length;
+        EXPECT_NEAR(v[2], 0.8, 1e-15) << length;
+    }
+}
+
 TEST(MotionSpec, PitchAndPlungeAtHandComputedTimes) {
     PeriodicMotion p;
     p.pitch = Pitch{10 * deg, 2 * deg, 2.0, 30 * deg, {0, 0, 1}, {0.25, 0, 0}};

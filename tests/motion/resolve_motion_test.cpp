@@ -368,6 +368,24 @@ TEST(MotionResolve, PlanarMotionIn2D) {
     EXPECT_THROW(resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0, 0, 1]}}})")), MeshError);
 }
 
+TEST(MotionResolve, MotionsNoMethodCanComputeWithAreErrorsNamingMarkerAndNode) {
+    // Issue #27: check passed what deform refused (a translation of 1.7e308
+    // moves a node to inf; 1e308 to a coordinate whose squares overflow).
+    const Mesh mesh = two_squares();
+    for (const char* json : {R"({"markers": {"airfoil": {"translate": [1.7e308, 0]}}})",
+                             R"({"markers": {"airfoil": {"translate": [1e308, 1e308]}}})",
+                             R"({"markers": {"airfoil": {"rotate": {"angle_deg": 1e300, "center": [0, 0]}}}})",
+                             R"({"markers": {"airfoil": {"rotate": {"angle_deg": 5, "center": [1e200, 0]}}}})"}) {
+        const MeshError e = mesh_error_of([&] { resolve_boundary(mesh, spec_of(json)); });
+        EXPECT_EQ(e.marker(), "airfoil") << json;
+        EXPECT_GE(e.index(), 4) << json;  // an airfoil node
+        EXPECT_TRUE(contains(e.what(), "cannot move node " + std::to_string(e.index()))) << e.what();
+        EXPECT_TRUE(contains(e.what(), "1e+150")) << e.what();
+    }
+    // The largest usable values pass.
+    EXPECT_NO_THROW(resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [1e149, 0]}}})")));
+}
+
 TEST(MotionResolve, MotionLargerThanTheMeshIsAWarning) {
     const Mesh mesh = two_squares();  // diagonal 4√2 = 5.66
     const MotionSpec spec = spec_of(R"({"markers": {"airfoil": {"translate": [6, 0]}}})");

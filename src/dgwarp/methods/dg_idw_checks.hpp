@@ -4,7 +4,7 @@
 
 namespace dgwarp {
 
-/// Throws Error when an a is not finite and positive or L is not finite and >= 0.
+/// Throws Error when an a is not in [dg_idw_a_min, dg_idw_a_max] or L is not finite and >= 0.
 void check_dg_idw_options(const DgIdwOptions& options);
 
 }  // namespace dgwarp

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <type_traits>
 
@@ -51,10 +52,13 @@ RotationFactors factors(double angle2) {
 }  // namespace
 
 void check_dg_idw_options(const DgIdwOptions& options) {
-    auto positive = [](double a) { return std::isfinite(a) && a > 0; };
-    if (!positive(options.a_translation) || !positive(options.a_rotation))
-        throw Error("DG-IDW: a_translation and a_rotation must be finite and positive, got " +
-                    std::to_string(options.a_translation) + " and " + std::to_string(options.a_rotation));
+    auto in_range = [](double a) { return a >= dg_idw_a_min && a <= dg_idw_a_max; };  // false for NaN
+    if (!in_range(options.a_translation) || !in_range(options.a_rotation)) {
+        std::ostringstream e;
+        e << "DG-IDW: a_translation and a_rotation must be in [" << dg_idw_a_min << ", " << dg_idw_a_max << "], got "
+          << options.a_translation << " and " << options.a_rotation;
+        throw Error(e.str());
+    }
     if (!std::isfinite(options.length_scale) || options.length_scale < 0)
         throw Error("DG-IDW: length_scale must be finite and >= 0 (0 = auto), got " +
                     std::to_string(options.length_scale));

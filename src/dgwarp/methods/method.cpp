@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "dgwarp/methods/method_inputs.hpp"
+
 namespace dgwarp {
 
 namespace {
@@ -56,8 +58,9 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
     return {};
 }
 
-StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                  std::span<double> out, const MethodOptions& options, const ProgressFn& progress) {
+namespace {
+StepReport deform_unchecked(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                            std::span<double> out, const MethodOptions& options, const ProgressFn& progress) {
     // DG-IDW and DGM: one pass over the nodes, milliseconds; only the end is reported.
     const auto done = [&](StepReport r) {
         if (progress) progress(1.0);
@@ -97,6 +100,17 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                                      return done(r);
                                  }},
                       plan);
+}
+}  // namespace
+
+StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                  std::span<double> out, const MethodOptions& options, const ProgressFn& progress) {
+    const StepReport report = deform_unchecked(plan, points, motion, out, options, progress);
+    // Where the coordinates leave the library: every caller (the CLI, Python,
+    // a solver) gets an error instead of a NaN, even at a node in no cell.
+    const int dim = std::visit([](const auto& p) { return p.dim; }, plan);
+    check_step_result(method_name(plan_method(plan)), dim, out, motion);
+    return report;
 }
 
 Method plan_method(const Plan& plan) {

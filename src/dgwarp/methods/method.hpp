@@ -76,7 +76,10 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
 /// One step: writes the new coordinates of every node to `out`
 /// (num_points × dim; may alias `points`). Throws as the method's deform does
 /// (MeshError on size mismatch, InvalidResultError when the method cannot
-/// produce a valid result and was told to fail).
+/// produce a valid result and was told to fail). Never returns a non-finite
+/// coordinate: InvalidResultError naming the first such node and the cause
+/// (a motion too large for double arithmetic, or options that make the
+/// weights overflow), `out` then unspecified.
 /// `progress` gets the fraction done, ending at 1: per block of volume nodes
 /// (IDW, RBF's evaluation, after its solve); DG-IDW and DGM, one fast pass,
 /// report only the end.

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -34,10 +35,24 @@ std::size_t bytes_of(const std::vector<T>& v) {
 
 /// Checks one step's arrays against a plan of `num_points` points of `dim`
 /// coordinates and `boundary_nodes`: points and out hold num_points × dim
-/// values, motion one entry per boundary node, every motion finite. Throws
-/// MeshError naming `method` (and the boundary node of a non-finite motion).
+/// values, motion one entry per boundary node, every motion usable
+/// (motion_value_problem: finite, at most max_motion_value). Throws MeshError
+/// naming `method` (and the boundary node of an unusable motion).
 void check_step_arrays(std::string_view method, std::int64_t num_points, int dim,
                        std::span<const NodeId> boundary_nodes, std::span<const double> points,
                        const BoundaryMotion& motion, std::span<const double> out);
+
+/// What is wrong with one step's result `out` (num_points × dim, row-major):
+/// empty when every coordinate is finite; otherwise a message naming the
+/// first node with a non-finite coordinate, its coordinates, how many nodes
+/// have one (`count`), and the cause: the motion's largest translation,
+/// rotation and centre, beyond what double arithmetic holds, or else the
+/// method's weights overflowing. `method` names the method ("dg-idw").
+std::string non_finite_result(std::string_view method, int dim, std::span<const double> out,
+                              const BoundaryMotion& motion, std::int64_t& count);
+
+/// Throws InvalidResultError (count: the nodes) with non_finite_result's
+/// message when a coordinate of `out` is not finite: no method returns one.
+void check_step_result(std::string_view method, int dim, std::span<const double> out, const BoundaryMotion& motion);
 
 }  // namespace dgwarp

@@ -1,5 +1,6 @@
 #include "dgwarp/motion/motion_spec.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <numbers>
@@ -7,9 +8,14 @@
 namespace dgwarp {
 
 Vec3 rotation_vector(double angle, const Vec3& axis) {
-    const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-    assert(norm > 0);
-    return {angle * axis[0] / norm, angle * axis[1] / norm, angle * axis[2] / norm};
+    // Scaled by a power of two first (exact: the same bits as unscaled), so
+    // that the squares neither underflow (an axis [0, 0, 1e-300]) nor overflow.
+    const double largest = std::max({std::abs(axis[0]), std::abs(axis[1]), std::abs(axis[2])});
+    assert(largest > 0 && std::isfinite(largest));
+    const int e = std::ilogb(largest);
+    const Vec3 a{std::ldexp(axis[0], -e), std::ldexp(axis[1], -e), std::ldexp(axis[2], -e)};
+    const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    return {angle * a[0] / norm, angle * a[1] / norm, angle * a[2] / norm};
 }
 
 NodeMotion periodic_motion_at(const PeriodicMotion& motion, double t) {

@@ -2,8 +2,31 @@
 
 #include <cassert>
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 namespace dgwarp {
+
+std::string motion_value_problem(const NodeMotion& motion) {
+    const auto usable = [](const Vec3& v) {
+        for (double x : v)
+            if (!(std::fabs(x) <= max_motion_value)) return false;  // also false for NaN
+        return true;
+    };
+    const std::pair<const char*, const Vec3*> parts[] = {
+        {"translation", &motion.translation}, {"rotation vector", &motion.rotation}, {"centre", &motion.center}};
+    for (const auto& [name, v] : parts) {
+        if (usable(*v)) continue;
+        std::ostringstream e;
+        e << "its " << name << " (" << (*v)[0] << ", " << (*v)[1] << ", " << (*v)[2] << ") is ";
+        if (std::isfinite((*v)[0]) && std::isfinite((*v)[1]) && std::isfinite((*v)[2]))
+            e << "beyond " << max_motion_value << " in magnitude, more than the methods' double arithmetic holds";
+        else
+            e << "not finite";
+        return e.str();
+    }
+    return {};
+}
 
 std::array<double, 9> rotation_matrix(const Vec3& w) {
     const double theta = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
@@ -21,6 +22,18 @@ struct NodeMotion {
 
     bool operator==(const NodeMotion&) const = default;
 };
+
+/// The largest magnitude of a motion value (a translation, rotation vector or
+/// centre component, a new coordinate) that every method computes with: the
+/// methods add squares and products of these, which overflow beyond ~1e154.
+inline constexpr double max_motion_value = 1e150;
+
+/// Empty when every value of `motion` is finite and at most max_motion_value
+/// in magnitude (only these can be deformed with); otherwise what is wrong,
+/// e.g. "its translation (1.7e+308, 0, 0) is beyond 1e+150 in magnitude".
+/// One rule for the motion files (resolve_frame, so `check` as `deform`) and
+/// for motions given as arrays (each method's deform).
+std::string motion_value_problem(const NodeMotion& motion);
 
 /// The rotation matrix R(w) (Rodrigues), row-major 3×3; identity for w = 0.
 std::array<double, 9> rotation_matrix(const Vec3& w);

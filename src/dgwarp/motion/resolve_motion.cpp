@@ -230,6 +230,38 @@ void refuse_disagreements(const Context& c, const FirstMotions& f, const NodeMot
     throw MeshError(message, mesh.markers[static_cast<std::size_t>(pair.first)].name, c.boundary.nodes[entry.second]);
 }
 
+/// Throws MeshError when a moving marker gives a node a motion, or a new
+/// position, that no method can compute with (motion_value_problem: not
+/// finite, or beyond max_motion_value): every method would refuse the step,
+/// so the resolution (which `check` runs too) refuses it, naming the marker
+/// and the node.
+void refuse_unusable_motions(const Context& c, const NodeMotions& motions, const std::string& at) {
+    const Mesh& mesh = c.mesh;
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
+        if (!c.series.marker_moving[m]) continue;
+        for (std::size_t j = 0; j < c.series.marker_nodes[m].size(); ++j) {
+            const NodeMotion& nm = node_motion(motions, m, j);
+            const NodeId node = c.series.marker_nodes[m][j];
+            const auto x = point(mesh, node);
+            std::string problem = motion_value_problem(nm);
+            if (problem.empty()) {
+                double moved[3] = {0, 0, 0};
+                apply_motion(nm, x, moved);
+                if (!std::all_of(moved, moved + x.size(), [](double v) { return std::fabs(v) <= max_motion_value; })) {
+                    std::ostringstream e;
+                    e << "it moves the node from " << point_text(x) << " to " << point_text({moved, x.size()})
+                      << ", beyond " << max_motion_value << " in magnitude, more than the methods' double arithmetic holds";
+                    problem = e.str();
+                }
+            }
+            if (problem.empty()) continue;
+            throw MeshError(at + ": marker '" + mesh.markers[m].name + "' cannot move node " + std::to_string(node) +
+                                ": " + problem + "; give the motion in the mesh's units",
+                            mesh.markers[m].name, node);
+        }
+    }
+}
+
 /// Resolves one frame (see the header's rules). Appends warnings.
 BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
                           std::vector<std::string>& warnings) {
@@ -239,6 +271,7 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
         marker_motions[m] = &marker_motion(c.spec, frame, mesh.markers[m].name);
     const NodeMotions motions = marker_node_motions(mesh, c.series.marker_nodes, marker_motions, time, at);
 
+    refuse_unusable_motions(c, motions, at);
     FirstMotions f = first_motions(c, motions);
     warn_large_motions(c, motions, at, warnings);
     refuse_disagreements(c, f, motions, at);

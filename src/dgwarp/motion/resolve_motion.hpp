@@ -60,8 +60,10 @@ void check_marker_names(const Mesh& mesh, const MotionSpec& spec);
 
 /// Classifies markers and boundary nodes, and checks everything about `spec`
 /// against `mesh` that can fail: unknown marker names, node files (coverage,
-/// ids, dimension), 2D motions out of the plane, and the shared-node rule in
-/// every frame of a frame list (for periodic motions, in step 0).
+/// ids, dimension), 2D motions out of the plane, moving nodes given a motion
+/// or a new position that is not finite (a translation of 1.7e308), and the
+/// shared-node rule in every frame of a frame list (for periodic motions, in
+/// step 0).
 /// Throws MeshError naming the marker (and node, when one node is at fault);
 /// for an unknown marker, the message lists the mesh's markers.
 ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec);

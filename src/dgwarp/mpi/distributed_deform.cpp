@@ -8,6 +8,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/dg_idw_step.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
+#include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/mpi/collective_checks.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
 
@@ -30,10 +31,8 @@ std::string check_step_input(const DistributedPlan& p, std::span<const double> p
         return "the motion has " + std::to_string(motion.size()) + " entries but this process has " +
                std::to_string(p.local_boundary_index.size()) + " boundary nodes";
     for (std::size_t j = 0; j < motion.size(); ++j)
-        for (const Vec3* v : {&motion[j].translation, &motion[j].rotation, &motion[j].center})
-            for (double x : *v)
-                if (!std::isfinite(x))
-                    return "the motion of local boundary node " + std::to_string(j) + " is not finite";
+        if (const std::string problem = motion_value_problem(motion[j]); !problem.empty())
+            return "the motion of local boundary node " + std::to_string(j) + " cannot be used: " + problem;
     return {};
 }
 
@@ -62,6 +61,7 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
     for (std::size_t j = 0; j < motion.size(); ++j) all[p.local_boundary_index[j]] = motion[j];
 
     StepReport report;
+    std::string local_error;
     std::vector<double> working_out(p.working_points.size());
     if (p.gather_all) {
         std::vector<NodeMotion> send(p.my_owned_local.size()), recv(p.owned_boundary.size());
@@ -71,7 +71,14 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
         MPI_Allgatherv(send.data(), static_cast<int>(send.size()) * motion_doubles, MPI_DOUBLE, recv.data(),
                        counts.data(), displs.data(), MPI_DOUBLE, p.comm);
         for (std::size_t k = 0; k < recv.size(); ++k) all[p.owned_boundary[k]] = recv[k];
-        report = deform(p.plan, p.working_points, all, working_out, p.options);
+        try {
+            report = deform(p.plan, p.working_points, all, working_out, p.options);
+        } catch (const InvalidResultError& e) {
+            // A non-finite result may be on this process alone: said on every one below.
+            std::int64_t count = 0;
+            if (non_finite_result(method_name(plan_method(p.plan)), p.dim, working_out, all, count).empty()) throw;
+            local_error = e.what();
+        }
     } else {
         const auto& plan = std::get<DgIdwPlan>(p.plan);
         std::vector<NodeMotion> send(p.send_local.size()), recv(p.recv_boundary.size());
@@ -97,7 +104,11 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
         MPI_Allreduce(&mine, &total, 1, MPI_INT64_T, MPI_SUM, p.comm);
         deform_dg_idw_bounded(plan, p.working_points, all, working_out, angle2_max);
         report.conflicting_shared_vertices = total;
+        std::int64_t count = 0;
+        local_error = non_finite_result("dg-idw", p.dim, working_out, all, count);
     }
+    // No process returns a non-finite coordinate (nodes numbered in the process's working set).
+    detail::throw_if_any_failed(p.comm, local_error, "its step's result", true);
     for (std::int64_t i = 0; i < p.num_local_points; ++i)
         std::copy_n(working_out.data() + static_cast<std::size_t>(p.local_to_working[i]) * p.dim, p.dim,
                     out.data() + static_cast<std::size_t>(i) * p.dim);
