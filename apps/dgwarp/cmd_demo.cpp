@@ -14,6 +14,8 @@
 #include "dgwarp/picture/mesh_picture.hpp"
 #include "dgwarp/picture/picture_window.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "deform_setup.hpp"
+#include "dgwarp/io/number_text.hpp"
 #include "flag_values.hpp"
 #include "frame_output.hpp"
 #include "output_files.hpp"
@@ -42,11 +44,15 @@ MotionSpec demo_motion(double angle_deg) {
 }
 
 void run_demo(const DemoArgs& a) {
+    // The result written is that of the method deform runs by default.
+    const Method shown = method_from_name(SetupArgs{}.method).value();
+    const std::string name(method_name(shown));
+    const std::string stem = "rect_box_" + name;
     make_output_folder(a.folder);
     const std::filesystem::path dir = std::filesystem::absolute(a.folder);
-    for (const char* name : {"rect_box.su2", "rect_box_dg-idw.vtu", "rect_box_dg-idw.png", "rect_box_dg-idw_closeup.png",
-                             "rect_box.png"})
-        check_output(dir / name, {});
+    for (const std::string file : {std::string("rect_box.su2"), stem + ".vtu", stem + ".png", stem + "_closeup.png",
+                                   std::string("rect_box.png")})
+        check_output(dir / file, {});
     std::ostream discard(nullptr);  // -q: the report goes nowhere
     std::ostream& out = a.quiet ? discard : std::cout;
     char line[256];
@@ -66,9 +72,9 @@ void run_demo(const DemoArgs& a) {
                   summarize_quality(original_quality).min, summarize_quality(original_quality).mean, 0);
     out << line;
     Mesh deformed = mesh;
-    std::vector<double> dg_idw_points, dg_idw_quality;
+    std::vector<double> shown_points, shown_quality;
+    std::string shown_failure;  // why the shown method's result is not written
     for (Method m : all_methods) {
-        std::string status;
         Stopwatch sw;
         try {
             const Plan plan = prepare(m, mesh.dim, mesh.points, boundary.boundary);
@@ -81,38 +87,46 @@ void run_demo(const DemoArgs& a) {
                           std::string(method_name(m)).c_str(), milliseconds(prepare_seconds).c_str(),
                           milliseconds(deform_seconds).c_str(), s.min, s.mean, static_cast<long long>(s.inverted));
             out << line;
-            if (m == Method::dg_idw) {
-                dg_idw_points = deformed.points;
-                dg_idw_quality = q;
+            if (m == shown) {
+                shown_points = deformed.points;
+                shown_quality = q;
+                if (s.inverted > 0)
+                    shown_failure = std::to_string(s.inverted) + " inverted cell" + (s.inverted == 1 ? "" : "s");
             }
         } catch (const InvalidResultError& e) {
             std::snprintf(line, sizeof line, "%-11s  ", std::string(method_name(m)).c_str());
             out << line << e.what() << "\n";
+            if (m == shown) shown_failure = e.what();
         }
     }
 
-    deformed.points = dg_idw_points;
-    const std::vector<double> ratio = quality_ratios(dg_idw_quality, original_quality);
     write_mesh(dir / "rect_box.su2", mesh);
-    write_mesh(dir / "rect_box_dg-idw.vtu", deformed, deformation_fields(mesh, deformed.points, dg_idw_quality, ratio));
     PictureOptions picture;
-    picture.title = "DG-IDW: rectangle turned by " + std::to_string(static_cast<int>(a.angle_deg)) +
-                    " degrees, coloured by Knupp shape quality";
-    write_mesh_picture(dir / "rect_box_dg-idw.png", deformed, dg_idw_quality, picture);
-    const auto rect_nodes = marker_nodes(find_marker(mesh, "rectangle"));
-    picture.window = window_around(deformed, rect_nodes, 6.0);
-    picture.title = "DG-IDW, close to the rectangle";
-    write_mesh_picture(dir / "rect_box_dg-idw_closeup.png", deformed, dg_idw_quality, picture);
-    picture.window.reset();
     picture.title = "original mesh";
     write_mesh_picture(dir / "rect_box.png", mesh, original_quality, picture);
+    // As deform: an invalid result is not written (the table above shows every method's).
+    if (!shown_failure.empty())
+        throw InvalidResultError(name + " (the default method): " + shown_failure + " with the rectangle turned by " +
+                                     number_text(a.angle_deg) + " degrees; only the original mesh was written (" +
+                                     (dir / "rect_box.su2").string() + "). Try a smaller --angle",
+                                 1);
+    deformed.points = shown_points;
+    const std::vector<double> ratio = quality_ratios(shown_quality, original_quality);
+    write_mesh(dir / (stem + ".vtu"), deformed, deformation_fields(mesh, deformed.points, shown_quality, ratio));
+    picture.title = name + ": rectangle turned by " + number_text(a.angle_deg) +
+                    " degrees, coloured by Knupp shape quality";
+    write_mesh_picture(dir / (stem + ".png"), deformed, shown_quality, picture);
+    const auto rect_nodes = marker_nodes(find_marker(mesh, "rectangle"));
+    picture.window = window_around(deformed, rect_nodes, 6.0);
+    picture.title = name + ", close to the rectangle";
+    write_mesh_picture(dir / (stem + "_closeup.png"), deformed, shown_quality, picture);
     out << "\nwrote\n  " << (dir / "rect_box.su2").string() << "  (original mesh, SU2)\n  "
-              << (dir / "rect_box_dg-idw.vtu").string()
-              << "  (DG-IDW result: open in ParaView; displacement, quality, quality_ratio)\n  "
-              << (dir / "rect_box_dg-idw.png").string() << "  (DG-IDW result, coloured by quality)\n  "
-              << (dir / "rect_box_dg-idw_closeup.png").string() << "  (the same, close to the rectangle)\n  "
-              << (dir / "rect_box.png").string() << "  (original mesh)\n"
-              << "next: dgwarp deform --help, and README.md for your own meshes and motions\n";
+        << (dir / (stem + ".vtu")).string() << "  (" << name
+        << " result, the default method's: open in ParaView; displacement, quality, quality_ratio)\n  "
+        << (dir / (stem + ".png")).string() << "  (" << name << " result, coloured by quality)\n  "
+        << (dir / (stem + "_closeup.png")).string() << "  (the same, close to the rectangle)\n  "
+        << (dir / "rect_box.png").string() << "  (original mesh)\n"
+        << "next: dgwarp deform --help, and README.md for your own meshes and motions\n";
 }
 
 }  // namespace
@@ -125,7 +139,11 @@ void add_demo_command(CLI::App& app) {
         ->capture_default_str()
         ->check(number_between(-360, 360));
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
-    cmd->footer("Examples:\n  dgwarp demo\n  dgwarp demo -o /tmp/dgwarp-demo --angle 20");
+    cmd->footer(
+        "Runs the five methods and prints their quality; writes the original mesh and the default method's\n"
+        "(dg-harmonic's) result as VTU and PNG. When that result has inverted cells, it is not written and the\n"
+        "exit code is 3, as for deform.\n\n"
+        "Examples:\n  dgwarp demo\n  dgwarp demo -o /tmp/dgwarp-demo --angle 20");
     cmd->callback([args] { run_demo(*args); });
 }
 
