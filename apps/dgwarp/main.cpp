@@ -6,6 +6,7 @@
 #include "dgwarp/core/error.hpp"
 #include "flag_values.hpp"
 #include "mpi_session.hpp"
+#include "report.hpp"
 
 int main(int argc, char** argv) {
     using namespace dgwarp::cli;
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
     try {
         use_threads(0);  // OMP_NUM_THREADS too large would crash OpenMP; --threads sets it again
         app.parse(argc, argv);
+        check_standard_output();
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {

@@ -1,8 +1,13 @@
 #include "report.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <iomanip>
 #include <sstream>
+
+#include "dgwarp/core/error.hpp"
 
 namespace dgwarp::cli {
 
@@ -89,6 +94,16 @@ std::string milliseconds(double seconds) {
     std::ostringstream s;
     s << std::fixed << std::setprecision(seconds < 0.01 ? 2 : 1) << seconds * 1e3 << " ms";
     return s.str();
+}
+
+void check_standard_output() {
+    errno = 0;
+    std::cout.flush();
+    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (lost)
+        throw IoError("standard output",
+                      std::string("the report could not be written: ") +
+                          (errno != 0 ? std::strerror(errno) : "write error"));
 }
 
 }  // namespace dgwarp::cli

@@ -49,4 +49,9 @@ void print_ratio(std::ostream& out, const RatioSummary& r);
 /// A duration for people: "12.3 ms" (two decimals below 10 ms).
 std::string milliseconds(double seconds);
 
+/// Flushes standard output; throws IoError("standard output", the system's
+/// reason) when anything printed was lost (a full disk, /dev/full): a report
+/// a script reads must not vanish with exit code 0.
+void check_standard_output();
+
 }  // namespace dgwarp::cli

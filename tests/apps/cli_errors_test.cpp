@@ -102,6 +102,18 @@ TEST(CliErrors, FailedConvertLeavesExistingOutputIntact) {
     EXPECT_EQ(s.str(), "precious");
 }
 
+TEST(CliErrors, AReportLostOnAFullDiskIsAnError) {
+    // Issue #27: `info --json > /dev/full` exited 0 with the report lost.
+    const auto f = write_text(scratch_dir() / "good.su2", good_su2);
+    for (const std::string& args : {"info " + quoted(f) + " --json", "info " + quoted(f), "quality " + quoted(f)}) {
+        const CommandResult r = run_command("{ " + cli_path().string() + " " + args + " >/dev/full; }");
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find("standard output: the report could not be written: No space left on device"),
+                  std::string::npos)
+            << r.err;
+    }
+}
+
 TEST(CliHelp, EveryCommandHasHelpWithExamples) {
     const CommandResult top = run_cli("--help");
     EXPECT_EQ(top.exit_code, 0);

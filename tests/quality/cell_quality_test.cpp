@@ -83,6 +83,26 @@ TEST(QualityProperties, InvariantUnderTranslationRotationAndScaling) {
     }
 }
 
+TEST(QualityProperties, HugeCoordinatesScoreAsSmallOnesNeverNaN) {
+    // Issue #27: a mesh moved by 1e308 reported "mean": null (NaN): squared
+    // edges overflowed. Scaled by a power of two the metric keeps every bit.
+    std::mt19937 rng(11);
+    for (CellType type : quality_types) {
+        SCOPED_TRACE(std::string(cell_type_name(type)));
+        const TestElement e = test::perturbed(type, rng, 0.15);
+        for (double scale : {0x1p1000, 0x1p1020}) {
+            TestElement big = e;
+            for (double& v : big.x) v *= scale;
+            EXPECT_EQ(big.quality(), e.quality()) << scale;
+            EXPECT_EQ(big.orientation(), e.orientation()) << scale;
+        }
+        // Nodes at 1e308 that rounding has merged: degenerate, 0, not NaN.
+        TestElement far = e;
+        for (double& v : far.x) v = 1e308 + v;
+        EXPECT_EQ(far.quality(), 0.0);
+    }
+}
+
 TEST(QualityProperties, MirroredElementWithOrientationMinusOneScoresAsOriginal) {
     std::mt19937 rng(11);
     for (CellType type : quality_types) {

@@ -16,7 +16,7 @@ double cell_shape_quality(CellType type, std::span<const double> coords, int dim
     const int sign = orientation < 0 ? -1 : 1;
     std::array<Point3, 8> storage;
     const std::span<Point3> x(storage.data(), static_cast<std::size_t>(nodes_per_cell(type)));
-    quality_detail::to_points(coords, dim, x);
+    quality_detail::to_scaled_points(coords, dim, x);
     switch (type) {
         case CellType::triangle: return quality_detail::triangle_quality(x, dim == 2, sign);
         case CellType::quadrilateral: return quality_detail::quadrilateral_quality(x, dim == 2, sign);
@@ -35,7 +35,7 @@ int cell_orientation(CellType type, std::span<const double> coords, int dim) {
     assert(coords.size() >= static_cast<std::size_t>(nodes_per_cell(type) * dim));
     std::array<Point3, 8> storage;
     const std::span<Point3> x(storage.data(), static_cast<std::size_t>(nodes_per_cell(type)));
-    quality_detail::to_points(coords, dim, x);
+    quality_detail::to_scaled_points(coords, dim, x);
     double measure = 0;
     switch (type) {
         // Faces in 3D space have no orientation of their own.

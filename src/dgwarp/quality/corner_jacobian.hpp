@@ -17,6 +17,21 @@ inline void to_points(std::span<const double> coords, int dim, std::span<Point3>
         out[i] = {coords[i * dim], coords[i * dim + 1], dim == 3 ? coords[i * dim + 2] : 0.0};
 }
 
+/// to_points, then scaled by a power of two when the coordinates are so
+/// large (beyond 2^400) that products of edge vectors would overflow to inf
+/// and the metric to NaN: the metrics are scale invariant, and a power of
+/// two keeps every bit of smaller meshes (they are not scaled).
+inline void to_scaled_points(std::span<const double> coords, int dim, std::span<Point3> out) {
+    to_points(coords, dim, out);
+    double largest = 0;
+    for (const Point3& p : out)
+        for (double v : p) largest = std::fmax(largest, std::fabs(v));
+    if (!(largest > 0x1p400) || !std::isfinite(largest)) return;
+    const int e = std::ilogb(largest);
+    for (Point3& p : out)
+        for (double& v : p) v = std::ldexp(v, -e);
+}
+
 inline Point3 minus(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline double dot(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline Point3 cross(const Point3& a, const Point3& b) {
