@@ -160,3 +160,23 @@ TEST(CliOutputs, UnreadableInputsSayWhy) {
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("Is a directory"), std::string::npos) << r.err;
 }
+
+TEST(CliOutputs, DevicesAndPipesAreNotReadEvenThroughLinks) {
+    // Issue #27: `-m /dev/zero`, a displacement file or a mesh linked to
+    // /dev/zero filled the memory. /dev/null (which ends) shows the rule
+    // without that risk: a device is refused before it is read.
+    const RectBoxFiles c = rect_box_files();
+    for (const char* name : {"z.su2", "z.msh", "z.vtu"}) {
+        std::filesystem::create_symlink("/dev/null", c.dir / name);
+        const CommandResult r = run_cli("info " + quoted(c.dir / name));
+        EXPECT_EQ(r.exit_code, 2) << name << ": " << r.err;
+        EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
+    }
+    CommandResult r = run_cli("check " + quoted(c.mesh) + " -m /dev/null");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("/dev/null: is not a regular file"), std::string::npos) << r.err;
+    const auto motion = write_text(c.dir / "d.json", R"({"markers": {"rectangle": {"displacement_file": "/dev/null"}}})");
+    r = run_cli("check " + quoted(c.mesh) + " -m " + quoted(motion));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
+}

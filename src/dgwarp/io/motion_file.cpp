@@ -221,7 +221,10 @@ Table MotionParser::read_cached(std::map<std::string, Table>& cache, const Json&
     try {
         return cache.emplace(key, read(path)).first->second;
     } catch (const IoError& e) {
-        throw IoError(e.file(), "cannot read the file named at " + at.path + " in " + file_);
+        // Keep the reason ("No such file or directory", "is not a regular file").
+        std::string reason = e.what();
+        if (const std::string prefix = e.file() + ": "; reason.starts_with(prefix)) reason.erase(0, prefix.size());
+        throw IoError(e.file(), "cannot read the file named at " + at.path + " in " + file_ + ": " + reason);
     }
 }
 

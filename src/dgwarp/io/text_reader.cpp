@@ -28,12 +28,19 @@ std::string_view trim(std::string_view s) {
 }
 
 std::string read_file_text(const std::filesystem::path& path) {
+    // Opening a folder succeeds; reading it does not (and would look like an
+    // empty file). A device or a pipe (/dev/zero, also through a symbolic
+    // link) may never end: reading it would fill the memory; opening a pipe
+    // may wait for ever. A missing file is left to open() to name the reason.
+    std::error_code ec;
+    const auto type = std::filesystem::status(path, ec).type();
+    if (type == std::filesystem::file_type::directory)
+        throw IoError(path.string(), std::string("cannot read it: ") + std::strerror(EISDIR));
+    if (type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found &&
+        type != std::filesystem::file_type::none)
+        throw IoError(path.string(), "is not a regular file (a device, a pipe or a socket): dgwarp reads files only");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw IoError(path.string(), std::string("cannot open file for reading: ") + std::strerror(errno));
-    // Opening a folder succeeds; reading it does not (and would look like an empty file).
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw IoError(path.string(), std::string("cannot read it: ") + std::strerror(EISDIR));
     std::ostringstream buffer;
     buffer << in.rdbuf();
     if (in.bad()) throw IoError(path.string(), std::string("read error: ") + std::strerror(errno));

@@ -13,7 +13,8 @@ namespace dgwarp {
 
 /// The whole content of the file at `path`. Throws IoError with the operating
 /// system's reason ("No such file or directory", "Permission denied", "Is a
-/// directory") when it cannot be read.
+/// directory") when it cannot be read, and when it is not a regular file
+/// (a device such as /dev/zero, a pipe, a socket: reading it might not end).
 std::string read_file_text(const std::filesystem::path& path);
 
 class TextReader {

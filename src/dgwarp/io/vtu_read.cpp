@@ -423,14 +423,7 @@ Mesh read_vtu_text(const std::string& file_name, std::string content) {
 }
 
 Mesh read_vtu(const std::filesystem::path& path, const ProgressFn& progress) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), "cannot open file for reading");
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    std::string content;
-    if (!ec) content.reserve(static_cast<std::size_t>(size));
-    content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad()) throw IoError(path.string(), "read error");
+    const std::string content = read_file_text(path);
     const std::string file = path.string();
     return VtuReader(file, content, progress).read();
 }
