@@ -35,6 +35,7 @@ void run_convert(const ConvertArgs& a) {
     options.gmsh_version = a.gmsh_version;
     if (!a.foam_format.empty()) options.foam_format = a.foam_format == "binary" ? foam::Format::binary : foam::Format::ascii;
     options.extras = &extras;  // SU2 to SU2 keeps the other zones, FFD boxes, periodic data
+    check_mesh_writable(a.output, mesh, options);  // names the file in the error
     if (const std::string w = dropped_extras_warning(extras, a.input, a.output); !w.empty() && !a.quiet) {
         progress.clear();
         std::cerr << "warning: " << w << "\n";

@@ -261,6 +261,13 @@ void run_deform(const DeformArgs& given) {
         for (Method m : methods)
             for (std::size_t k = 0; k < frames; ++k) check_output(frame_path(method_output(a.output, m, several), k, frames), inputs);
     });
+    // What the output's format cannot store (a marker name SU2 cannot hold):
+    // refused now, naming the file, not after the work.
+    {
+        WriteOptions write_options;
+        write_options.extras = &in.extras;
+        check_mesh_writable(a.output, in.mesh, write_options);
+    }
     if (foam && in.mesh.dim != 3)
         throw MeshError("OpenFOAM meshes are 3D: the " + std::to_string(in.mesh.dim) + "D mesh " + a.setup.mesh +
                         " cannot be written to the OpenFOAM case " + a.output);

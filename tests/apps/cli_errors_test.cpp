@@ -114,6 +114,30 @@ TEST(CliErrors, AReportLostOnAFullDiskIsAnError) {
     }
 }
 
+TEST(CliErrors, AZoneOfAFormatWithoutZonesIsAnError) {
+    // Issue #27: `--zone 2` on a .msh was ignored with exit 0.
+    const auto dir = scratch_dir();
+    const auto su2 = write_text(dir / "good.su2", good_su2);
+    ASSERT_EQ(run_cli("convert " + quoted(su2) + " " + quoted(dir / "good.msh") + " -q").exit_code, 0);
+    CommandResult r = run_cli("info " + quoted(dir / "good.msh") + " --zone 2");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("only SU2 files have several zones"), std::string::npos) << r.err;
+    EXPECT_EQ(run_cli("info " + quoted(dir / "good.msh") + " --zone 1").exit_code, 0);
+}
+
+TEST(CliErrors, AMeshWithoutCellsIsRefused) {
+    // Issue #27: `info` printed "min quality 0.000000 (cell -1)", deform
+    // exited 0, convert wrote files dgwarp then refused.
+    const auto f = write_text(scratch_dir() / "empty.su2",
+                              "NDIME= 2\nNELEM= 0\nNPOIN= 2\n0 0\n1 0\nNMARK= 1\nMARKER_TAG= wall\nMARKER_ELEMS= 1\n3 0 1\n");
+    for (const std::string& args : {"info " + quoted(f), "convert " + quoted(f) + " " + quoted(f.parent_path() / "e.vtu")}) {
+        const CommandResult r = run_cli(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
+        EXPECT_NE(r.err.find("empty.su2:2:"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(f.parent_path() / "e.vtu"));
+}
+
 TEST(CliHelp, EveryCommandHasHelpWithExamples) {
     const CommandResult top = run_cli("--help");
     EXPECT_EQ(top.exit_code, 0);

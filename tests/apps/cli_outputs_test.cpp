@@ -180,3 +180,28 @@ TEST(CliOutputs, DevicesAndPipesAreNotReadEvenThroughLinks) {
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
 }
+
+TEST(CliOutputs, AMarkerNameTheOutputCannotStoreIsRefusedBeforeTheWorkNamingTheFile) {
+    // Issue #27: a marker " lead" (from a Gmsh file) failed at the .su2
+    // write, after the prepare and the step, without naming the file.
+    const RectBoxFiles c = rect_box_files();
+    const auto msh = c.dir / "lead.msh";
+    ASSERT_EQ(run_cli("convert " + quoted(c.mesh) + " " + quoted(msh) + " -q").exit_code, 0);
+    std::string text = slurp(msh);
+    const auto at = text.find("\"rectangle\"");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 11, "\" lead\"");
+    write_text(msh, text);
+    const auto motion = write_text(c.dir / "lead.json", R"({"markers": {" lead": {"translate": [0.1, 0]}}})");
+    const auto out = c.dir / "out.su2";
+    const CommandResult r = run_cli("deform " + quoted(msh) + " -m " + quoted(motion) + " -o " + quoted(out));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(out.string() + ": marker"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("SU2 cannot store"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("plan"), std::string::npos) << "prepared before the check:\n" << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    // .vtu stores it.
+    EXPECT_EQ(run_cli("deform " + quoted(msh) + " -m " + quoted(motion) + " -o " + quoted(c.dir / "out.vtu") + " -q")
+                  .exit_code,
+              0);
+}

@@ -70,6 +70,9 @@ Mesh read_cgns(const std::filesystem::path& path, CgnsSource* source = nullptr);
 /// written.
 void write_cgns(const std::filesystem::path& path, const Mesh& mesh);
 
+/// Throws the MeshError write_cgns(path, mesh) would throw about `mesh`, without writing.
+void check_cgns_writable(const std::filesystem::path& path, const Mesh& mesh);
+
 /// Writes a copy of source.file to `path` with every zone's coordinates taken
 /// from `points` (source.num_points × dim, row-major), atomically. Throws
 /// MeshError when `points` does not hold source.num_points points of the

@@ -61,7 +61,10 @@ SectionData section_of(const ElementList& list) {
 /// isspace): a marker name beginning or ending with one would come back another.
 constexpr const char* cgns_name_blanks = " \t\n\v\f\r";
 
-void check_writable(const std::filesystem::path& path, const Mesh& mesh) {
+
+}  // namespace
+
+void check_cgns_writable(const std::filesystem::path& path, const Mesh& mesh) {
     validate(mesh);
     const std::string file = path.string();
     if (mesh.cells.empty()) throw MeshError(file + ": the mesh has no cells; a CGNS zone needs at least one");
@@ -88,10 +91,8 @@ void check_writable(const std::filesystem::path& path, const Mesh& mesh) {
     }
 }
 
-}  // namespace
-
 void write_cgns(const std::filesystem::path& path, const Mesh& mesh) {
-    check_writable(path, mesh);
+    check_cgns_writable(path, mesh);
     const std::size_t n = mesh.num_points();
     if (n > static_cast<std::size_t>(std::numeric_limits<cgsize_t>::max()))
         throw MeshError(path.string() + ": too many points for this libcgns (32-bit sizes)");

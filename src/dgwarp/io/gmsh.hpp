@@ -52,6 +52,9 @@ Mesh read_gmsh_text(const std::string& file_name, std::string content);
 /// quote or line break, or a marker of vertex elements.
 void write_gmsh(std::ostream& out, const Mesh& mesh, int version = 41);
 
+/// Throws the MeshError write_gmsh would throw about `mesh`, without writing.
+void check_gmsh_writable(const Mesh& mesh);
+
 /// Writes `mesh` as Gmsh ASCII to `path`, atomically (see write_file_atomically).
 void write_gmsh(const std::filesystem::path& path, const Mesh& mesh, int version = 41);
 

@@ -52,21 +52,6 @@ void write_element_nodes(std::ostream& out, const ElementList& list, std::size_t
     }
 }
 
-void check_writable(const Mesh& mesh) {
-    validate(mesh);
-    for (const Marker& m : mesh.markers) {
-        if (m.name.find_first_of("\"\n\r") != std::string::npos)
-            throw MeshError("marker name '" + m.name + "' cannot be written to a Gmsh file (it contains a double "
-                            "quote or a line break)",
-                            m.name);
-        for (CellType t : m.elements.types)
-            if (cell_dimension(t) != mesh.dim - 1)
-                throw MeshError("marker '" + m.name + "' has " + std::string(cell_type_name(t)) +
-                                    " elements, which the Gmsh writer does not support in a " +
-                                    std::to_string(mesh.dim) + "D mesh",
-                                m.name);
-    }
-}
 
 void write_header(std::ostream& out, const Mesh& mesh, int version) {
     out << "$MeshFormat\n" << (version == 41 ? "4.1" : "2.2") << " 0 8\n$EndMeshFormat\n";
@@ -230,11 +215,27 @@ void write_22(std::ostream& out, const Mesh& mesh) {
 
 }  // namespace
 
+void check_gmsh_writable(const Mesh& mesh) {
+    validate(mesh);
+    for (const Marker& m : mesh.markers) {
+        if (m.name.find_first_of("\"\n\r") != std::string::npos)
+            throw MeshError("marker name '" + m.name + "' cannot be written to a Gmsh file (it contains a double "
+                            "quote or a line break)",
+                            m.name);
+        for (CellType t : m.elements.types)
+            if (cell_dimension(t) != mesh.dim - 1)
+                throw MeshError("marker '" + m.name + "' has " + std::string(cell_type_name(t)) +
+                                    " elements, which the Gmsh writer does not support in a " +
+                                    std::to_string(mesh.dim) + "D mesh",
+                                m.name);
+    }
+}
+
 void write_gmsh(std::ostream& out, const Mesh& mesh, int version) {
     if (version != 41 && version != 22)
         throw FormatError("Gmsh MSH version " + std::to_string(version) +
                           " cannot be written; dgwarp writes 41 (MSH 4.1) and 22 (MSH 2.2)");
-    check_writable(mesh);
+    check_gmsh_writable(mesh);
     write_header(out, mesh, version);
     if (version == 41)
         write_41(out, mesh);

@@ -40,7 +40,17 @@ bool has_mesh_extension(const std::filesystem::path& path) {
 bool reads_openfoam(const std::filesystem::path& path) { return !has_mesh_extension(path) && is_openfoam_input(path); }
 bool writes_openfoam(const std::filesystem::path& path) { return !has_mesh_extension(path) && is_openfoam_output(path); }
 
+namespace {
+// Only SU2 files have zones: another zone asked of another format would be ignored.
+void check_zone(const std::filesystem::path& path, const ReadOptions& options) {
+    if (options.zone != 1 && (reads_openfoam(path) || lower_case_extension(path) != ".su2"))
+        throw FormatError(path.string() + ": zone " + std::to_string(options.zone) +
+                          " asked (--zone), but only SU2 files have several zones; this mesh is one zone");
+}
+}  // namespace
+
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress) {
+    check_zone(path, options);
     if (reads_openfoam(path)) return read_openfoam(path, progress);
     const std::string ext = lower_case_extension(path);
     if (ext == ".su2") return read_su2(path, options.zone, progress);
@@ -58,6 +68,7 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
 Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, const ProgressFn& progress,
                MeshExtras& extras) {
     extras = {};
+    check_zone(path, options);
     if (reads_openfoam(path)) {
         OpenFoamSource source;
         Mesh mesh = read_openfoam(path, progress, &source);
@@ -90,6 +101,27 @@ std::string dropped_extras_warning(const MeshExtras& extras, const std::string& 
     for (const auto& d : dropped) list += (list.empty() ? "" : ", ") + d;
     return output.string() + " holds the mesh only: " + input + " also has " + list +
            " (an .su2 output keeps them)";
+}
+
+void check_mesh_writable(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options) {
+    const std::string file = path.string();
+    try {
+        const std::string ext = lower_case_extension(path);
+        if (writes_openfoam(path) || ext == ".vtu") {
+            validate(mesh);
+        } else if (ext == ".su2") {
+            check_su2_writable(mesh);
+        } else if (ext == ".msh") {
+            check_gmsh_writable(mesh);
+        } else if (ext == ".cgns") {
+            const CgnsSource* source = options.extras && options.extras->cgns ? &*options.extras->cgns : nullptr;
+            if (!(source && source->num_points == mesh.num_points() && source->dim == mesh.dim))
+                check_cgns_writable(path, mesh);
+        }
+    } catch (const MeshError& e) {
+        if (std::string_view(e.what()).starts_with(file + ": ")) throw;
+        throw MeshError(file + ": " + e.what(), e.marker(), e.index());
+    }
 }
 
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,

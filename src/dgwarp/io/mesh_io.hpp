@@ -66,7 +66,7 @@ struct WriteOptions {
 };
 
 /// Reads a mesh; the format comes from the extension (a folder: OpenFOAM). Throws FormatError for
-/// an unsupported extension, IoError when the file cannot be read, ParseError
+/// an unsupported extension or a zone other than 1 asked of a format without zones (not SU2), IoError when the file cannot be read, ParseError
 /// (file, line, what was expected) when it is malformed, and MeshError when
 /// its content is inconsistent.
 /// `progress` (core/progress.hpp) gets the fraction of the file parsed
@@ -87,6 +87,13 @@ std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::fil
 /// `output`, which cannot hold them (dropped_extras; "" when nothing is
 /// dropped). The CLI and the Python package print it.
 std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output);
+
+/// Throws the MeshError write_mesh(path, mesh, {}, options) would throw about
+/// `mesh` itself (a marker name the format cannot store, such as " lead" in
+/// SU2), naming `path`, without writing anything: for commands to check their
+/// outputs before the work. A CGNS output copied from a CGNS input
+/// (options.extras) keeps the input's names: nothing to check.
+void check_mesh_writable(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options = {});
 
 /// Writes a mesh atomically (temporary file, then rename); the format comes
 /// from the extension. An OpenFOAM case folder (is_openfoam_output) gets a

@@ -58,6 +58,11 @@ Mesh read_su2_text(const std::string& file_name, std::string content, int zone =
 /// cannot be stored (empty, duplicated, several lines, surrounding blanks).
 void write_su2(std::ostream& out, const Mesh& mesh);
 
+/// Throws the MeshError write_su2 would throw about `mesh` (validate(), a
+/// marker name SU2 cannot store), without writing: to check an output before
+/// the work.
+void check_su2_writable(const Mesh& mesh);
+
 /// Writes `mesh` as SU2 ASCII to `path` through write_file_atomically: on any
 /// error `path` is left as it was. Throws IoError (e.g. missing folder) or
 /// MeshError as above.

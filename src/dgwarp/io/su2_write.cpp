@@ -51,9 +51,13 @@ void write_elements(std::ostream& out, const ElementList& elements, bool with_in
 
 }  // namespace
 
-void write_su2(std::ostream& out, const Mesh& mesh) {
+void check_su2_writable(const Mesh& mesh) {
     validate(mesh);
     check_marker_names(mesh);
+}
+
+void write_su2(std::ostream& out, const Mesh& mesh) {
+    check_su2_writable(mesh);
     out << "NDIME= " << mesh.dim << '\n';
     out << "NELEM= " << mesh.cells.size() << '\n';
     write_elements(out, mesh.cells, true);
@@ -87,8 +91,7 @@ void write_su2(const std::filesystem::path& path, const Mesh& mesh, const Su2Sur
         throw MeshError("the mesh has " + std::to_string(points) + " points and " + std::to_string(cells) +
                         " cells, the zone it replaces " + std::to_string(surroundings.num_points) + " and " +
                         std::to_string(surroundings.num_cells) + ": it is not that zone");
-    validate(mesh);
-    check_marker_names(mesh);
+    check_su2_writable(mesh);
     write_file_atomically(path, [&](std::ostream& out) {
         out << surroundings.before;
         if (surroundings.zone_has_ndime) {
