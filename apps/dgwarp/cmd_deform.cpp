@@ -281,6 +281,22 @@ void run_deform(const DeformArgs& given) {
         print_table(in, runs);
         print_written(runs);
     }
+    // A shorter series than an earlier run's: its other frames are still there.
+    std::vector<std::string> stale_warnings;
+    if (!foam)
+        for (const MethodRun& r : runs) {
+            if (std::none_of(r.frames.begin(), r.frames.end(), [](const FrameResult& f) { return !f.output.empty(); }))
+                continue;
+            const std::vector<std::filesystem::path> stale =
+                stale_frames(method_output(a.output, r.planned.method, several), frames);
+            if (stale.empty()) continue;
+            stale_warnings.push_back(
+                stale.front().string() + (stale.size() > 1 ? " ... " + stale.back().string() : std::string()) + " (" +
+                std::to_string(stale.size()) + " file" + (stale.size() > 1 ? "s" : "") +
+                ") are left from an earlier run, not written by this one (" + std::to_string(frames) + " frame" +
+                (frames > 1 ? "s" : "") + "); remove them if they are not wanted");
+            warnings.print(stale_warnings.back());
+        }
 
     if (a.json) {
         nlohmann::json j = inputs_json(in, "deform");
@@ -297,6 +313,7 @@ void run_deform(const DeformArgs& given) {
             const nlohmann::json run = run_json(in, runs[0]);
             for (const auto& [key, value] : run.items()) j[key] = value;
         }
+        for (const auto& w : stale_warnings) j["warnings"].push_back(w);
         j["valid"] = std::none_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.invalid; });
         std::cout << j.dump(2) << "\n";
     }

@@ -50,7 +50,7 @@ void run_demo(const DemoArgs& a) {
     const std::string stem = "rect_box_" + name;
     make_output_folder(a.folder);
     const std::filesystem::path dir = std::filesystem::absolute(a.folder);
-    for (const std::string file : {std::string("rect_box.su2"), stem + ".vtu", stem + ".png", stem + "_closeup.png",
+    for (const std::string& file : {std::string("rect_box.su2"), stem + ".vtu", stem + ".png", stem + "_closeup.png",
                                    std::string("rect_box.png")})
         check_output(dir / file, {});
     std::ostream discard(nullptr);  // -q: the report goes nowhere

@@ -16,6 +16,18 @@ std::filesystem::path frame_path(const std::filesystem::path& out, std::size_t f
     return p;
 }
 
+std::vector<std::filesystem::path> stale_frames(const std::filesystem::path& out, std::size_t frames) {
+    std::vector<std::filesystem::path> stale;
+    const std::size_t numbered = std::max<std::size_t>(frames, 2);  // the numbering of a series
+    for (std::size_t k = frames > 1 ? frames : 0;; ++k) {
+        const std::filesystem::path p = frame_path(out, k, std::max(numbered, k + 1));
+        std::error_code ec;
+        if (!std::filesystem::exists(p, ec)) break;
+        stale.push_back(p);
+    }
+    return stale;
+}
+
 MeshFields deformation_fields(const Mesh& original, std::span<const double> new_points,
                               const std::vector<double>& quality, const std::vector<double>& ratio) {
     const std::size_t n = original.num_points(), dim = static_cast<std::size_t>(original.dim);

@@ -1,15 +1,36 @@
 // dgwarp: deform CFD volume meshes to follow moving boundaries.
+#include <csignal>
 #include <iostream>
 #include <new>
 
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/atomic_write.hpp"
 #include "flag_values.hpp"
 #include "mpi_session.hpp"
 #include "report.hpp"
 
+namespace {
+
+// Ctrl-C or a kill during a write: the temporary file goes too (the old
+// output is intact anyway), then the signal ends the program as it would have.
+extern "C" void remove_temporaries_and_stop(int sig) {
+    dgwarp::remove_unfinished_temporary_files();
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
+void remove_temporaries_on_signals() {
+    // A signal the caller ignores (nohup, a background job's SIGINT) stays ignored.
+    for (int sig : {SIGINT, SIGTERM, SIGHUP})
+        if (std::signal(sig, remove_temporaries_and_stop) == SIG_IGN) std::signal(sig, SIG_IGN);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace dgwarp::cli;
+    remove_temporaries_on_signals();
     // Under mpirun (docs/MPI.md), rank 0 runs the command and the other ranks
     // serve its distributed prepares and steps until it stops them.
     try {

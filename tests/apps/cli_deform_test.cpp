@@ -103,6 +103,33 @@ TEST(CliDeform, TimeSeriesWritesOneFilePerFrame) {
     EXPECT_NE(read_mesh(dir / "frame_0002.su2").points, read_mesh(mesh).points);
 }
 
+TEST(CliDeform, AShorterSeriesSaysWhichFramesOfAnEarlierOneAreLeft) {
+    // Issue #27: 3 frames after 5 left frame_0003 and frame_0004 without a word.
+    const auto [dir, mesh, rotation] = rect_box_files();
+    const auto series = [&](int steps) {
+        return write_text(dir / ("pitch" + std::to_string(steps) + ".json"),
+                          R"({"markers": {"rectangle": {"periodic": {"pitch": {"amplitude_deg": 5, "frequency": 1, "center": [0, 0]}}}},
+                              "time": {"time_step": 0.125, "steps": )" + std::to_string(steps) + "}}");
+    };
+    const auto out = dir / "frame.su2";
+    ASSERT_EQ(run_cli("deform " + quoted(mesh) + " -m " + quoted(series(5)) + " -o " + quoted(out) + " -q").exit_code, 0);
+    CommandResult r = run_cli("deform " + quoted(mesh) + " -m " + quoted(series(3)) + " -o " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: " + (dir / "frame_0003.su2").string() + " ... " + (dir / "frame_0004.su2").string() +
+                         " (2 files) are left from an earlier run"),
+              std::string::npos)
+        << r.err;
+    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(series(3)) + " -o " + quoted(out) + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j.contains("warnings"));
+    EXPECT_NE(j.at("warnings").dump().find("frame_0003.su2"), std::string::npos) << j.at("warnings").dump();
+    // One frame written to frame.su2 itself: the whole series is left.
+    r = run_cli("deform " + quoted(mesh) + " -m " + quoted(rotation) + " -o " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("(5 files) are left"), std::string::npos) << r.err;
+}
+
 TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
     const auto [dir, mesh, motion] = rect_box_files();
     ASSERT_EQ(run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "rb.plan") + " -q")

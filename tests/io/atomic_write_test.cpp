@@ -176,6 +176,72 @@ TEST(AtomicWrite, KilledMidWriteLeavesTheOldFileIntact) {
     EXPECT_EQ(read_file(path), full.str());
 }
 
+namespace {
+extern "C" void atomic_write_test_on_term(int) {
+    remove_unfinished_temporary_files();
+    ::_exit(13);
+}
+}  // namespace
+
+TEST(AtomicWrite, ASignalHandlerRemovesTheTemporaryFileOfAnInterruptedWrite) {
+    // Issue #27: SIGINT/SIGTERM during a write left ".out.su2.tmp.PID.N"
+    // (35 MB, one per interrupted run). The CLI's handler does what this
+    // child's does: remove_unfinished_temporary_files, then stop.
+    const auto dir = test::scratch_dir();
+    const auto path = dir / "mesh.su2";
+    write_plain(path, "old");
+    const Mesh mesh = large_mesh();
+    int pipe_fds[2];
+    ASSERT_EQ(::pipe(pipe_fds), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::close(pipe_fds[0]);
+        ::signal(SIGTERM, atomic_write_test_on_term);
+        try {
+            write_file_atomically(path, [&](std::ostream& out) {
+                PausingBuffer pausing(out, 100000, pipe_fds[1]);
+                std::ostream through(&pausing);
+                write_su2(through, mesh);
+            });
+        } catch (...) {
+            ::_exit(11);
+        }
+        ::_exit(12);
+    }
+    ChildGuard guard{child};
+    ::close(pipe_fds[1]);
+    char byte = 0;
+    ASSERT_EQ(::read(pipe_fds[0], &byte, 1), 1);
+    ::close(pipe_fds[0]);
+    ASSERT_EQ(entries(dir).size(), 2u);  // mid-write: the temporary file is there
+    ASSERT_EQ(::kill(child, SIGTERM), 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    guard.pid = -1;
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 13);
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"mesh.su2"});
+    EXPECT_EQ(read_file(path), "old");
+}
+
+TEST(AtomicWrite, AWriteThroughASymbolicLinkReplacesTheFileItLeadsToAndKeepsTheLink) {
+    // Issue #27: the link was replaced by a file, silently.
+    const auto dir = test::scratch_dir();
+    std::filesystem::create_directory(dir / "real");
+    write_plain(dir / "real" / "out.su2", "old");
+    std::filesystem::create_symlink("real/out.su2", dir / "link.su2");
+    write_file_atomically(dir / "link.su2", [](std::ostream& out) { out << "new"; });
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.su2"));
+    EXPECT_EQ(read_file(dir / "real" / "out.su2"), "new");
+    EXPECT_EQ(entries(dir / "real"), std::vector<std::string>{"out.su2"});
+    // A dangling link gets its file.
+    std::filesystem::create_symlink("real/new.su2", dir / "dangling.su2");
+    write_file_atomically(dir / "dangling.su2", [](std::ostream& out) { out << "made"; });
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "dangling.su2"));
+    EXPECT_EQ(read_file(dir / "real" / "new.su2"), "made");
+}
+
 TEST(AtomicWrite, AThrowingWriterLeavesTheOldFileAndNoTemporary) {
     const auto dir = test::scratch_dir();
     const auto path = dir / "out.txt";

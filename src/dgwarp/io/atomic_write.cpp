@@ -4,9 +4,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -55,7 +57,53 @@ void sync_file(const std::filesystem::path& path) {
     if (rc != 0) throw IoError(path.string(), std::string("fsync failed: ") + std::strerror(err));
 }
 
+// The temporary files being written, for remove_unfinished_temporary_files,
+// which a signal handler calls: fixed storage and lock-free atomics only.
+// state: 0 free, 1 being filled in, 2 a temporary file that exists.
+struct UnfinishedSlot {
+    std::atomic<int> state{0};
+    char path[4096];
+};
+UnfinishedSlot unfinished[16];
+
+/// Records `tmp`; returns its slot, or -1 when there is no room (then it is
+/// not removed on a signal: only a leftover, never a wrong file).
+int register_unfinished(const std::filesystem::path& tmp) {
+    const std::string& s = tmp.native();
+    if (s.size() >= sizeof(UnfinishedSlot::path)) return -1;
+    for (int i = 0; i < static_cast<int>(std::size(unfinished)); ++i) {
+        int free_state = 0;
+        if (!unfinished[i].state.compare_exchange_strong(free_state, 1)) continue;
+        std::memcpy(unfinished[i].path, s.c_str(), s.size() + 1);
+        unfinished[i].state.store(2);
+        return i;
+    }
+    return -1;
+}
+
+void unregister_unfinished(int slot) {
+    if (slot >= 0) unfinished[slot].state.store(0);
+}
+
+/// The file a write to `path` replaces: `path` itself, or, when it is a
+/// symbolic link, the file it leads to (the link stays a link).
+std::filesystem::path write_target(const std::filesystem::path& path) {
+    std::filesystem::path p = path;
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && std::filesystem::is_symlink(p, ec); ++hops) {
+        const std::filesystem::path to = std::filesystem::read_symlink(p, ec);
+        if (ec) break;
+        p = to.is_absolute() ? to : p.parent_path() / to;
+    }
+    return p;
+}
+
 }  // namespace
+
+void remove_unfinished_temporary_files() noexcept {
+    for (UnfinishedSlot& slot : unfinished)
+        if (slot.state.load() == 2) ::unlink(slot.path);
+}
 
 void check_replaceable(const std::filesystem::path& path) {
     struct stat st {};
@@ -99,12 +147,15 @@ void write_file_atomically(const std::filesystem::path& path,
     });
 }
 
-void write_file_atomically_at(const std::filesystem::path& path,
+void write_file_atomically_at(const std::filesystem::path& output,
                               const std::function<void(const std::filesystem::path& tmp)>& write) {
-    if (path.empty()) throw IoError("", "empty output file name");
-    check_replaceable(path);
+    if (output.empty()) throw IoError("", "empty output file name");
+    check_replaceable(output);
+    // Through a symbolic link: the file it leads to is replaced, the link stays.
+    const std::filesystem::path path = write_target(output);
     const std::filesystem::path tmp = temporary_path_for(path);
-    create_new_file(tmp, path);
+    create_new_file(tmp, output);
+    const int slot = register_unfinished(tmp);
     try {
         write(tmp);
         sync_file(tmp);
@@ -112,10 +163,12 @@ void write_file_atomically_at(const std::filesystem::path& path,
         if (::stat(path.c_str(), &old) == 0) ::chmod(tmp.c_str(), old.st_mode & 07777);  // keep its permissions
         std::error_code ec;
         std::filesystem::rename(tmp, path, ec);
-        if (ec) throw IoError(path.string(), "cannot rename temporary file into place: " + ec.message());
+        if (ec) throw IoError(output.string(), "cannot rename temporary file into place: " + ec.message());
+        unregister_unfinished(slot);
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(tmp, ignored);
+        unregister_unfinished(slot);
         throw;
     }
 }

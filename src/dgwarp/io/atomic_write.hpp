@@ -17,6 +17,8 @@ namespace dgwarp {
 /// left as it was, and the error is rethrown (IoError for disk errors, with
 /// the operating system's reason: "Permission denied", "No such file or
 /// directory", ...).
+/// When `path` is a symbolic link, the file it leads to is replaced and the
+/// link stays (the temporary file is written beside that file).
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
 
@@ -26,6 +28,12 @@ void write_file_atomically(const std::filesystem::path& path,
 /// then it is synced and renamed to `path`, with the same guarantees.
 void write_file_atomically_at(const std::filesystem::path& path,
                               const std::function<void(const std::filesystem::path& tmp)>& write);
+
+/// Removes the temporary files of the writes under way (unlink only): for a
+/// program's SIGINT/SIGTERM handler, so that an interrupted write leaves
+/// nothing behind (the old file is intact anyway). Async-signal-safe; the
+/// library installs no handler itself.
+void remove_unfinished_temporary_files() noexcept;
 
 /// Throws IoError when `path` exists and write_file_atomically would not
 /// replace it: a folder, not a regular file (a device, a pipe), or read-only
