@@ -330,7 +330,7 @@ void run_deform(const DeformArgs& given) {
                 ++failed_runs;
                 failed += (failed.empty() ? "" : "; ") + line;
             } else {
-                advice += (advice.empty() ? "" : "; ") + invalid_result_advice(r.planned.method);
+                advice += (advice.empty() ? "" : "; ") + invalid_result_advice(r.planned.method, a);
             }
         }
     if (invalid_runs > 0) {
@@ -351,27 +351,56 @@ void run_deform(const DeformArgs& given) {
 
 }  // namespace
 
-std::string invalid_result_advice(Method method) {
+std::string invalid_result_advice(Method method, const DeformArgs& a) {
     // Every frame is measured from the original mesh, so splitting a motion
-    // into frames does not help; these do.
+    // into frames does not help; these do. What was already tried (given on
+    // the command line) is not suggested again.
+    const auto given = [&](const char* flag) { return a.setup.given.count(flag) > 0; };
+    std::vector<std::string> tries;
+    const auto add = [&](bool already, const std::string& what) {
+        if (!already) tries.push_back(what);
+    };
+    const std::string untangle = "--untangle to repair the inverted cells";
     switch (method) {
         case Method::dg_idw:
-            return "For dg-idw: try --method dg-harmonic (robust next to fixed walls and for large rotations, "
-                   "docs/dg-harmonic.md), --length-scale auto when a fixed wall is close to the moving one, or "
-                   "--untangle to repair the inverted cells";
+            tries.push_back("--method dg-harmonic (robust next to fixed walls and for large rotations, docs/dg-harmonic.md)");
+            add(given("--length-scale"), "--length-scale auto when a fixed wall is close to the moving one");
+            add(a.untangle, untangle);
+            break;
         case Method::dgm:
-            return "For dgm: try --dgm-substep, or --method dg-harmonic";
+            add(a.setup.dgm_substep, "--dgm-substep");
+            tries.push_back("--method dg-harmonic");
+            break;
         case Method::idw:
-            return "For idw: try --method dg-harmonic, or --untangle to repair the inverted cells";
+            tries.push_back("--method dg-harmonic");
+            add(a.untangle, untangle);
+            break;
         case Method::rbf:
-            return "For rbf: try --method dg-harmonic, a compact support (--rbf-radius), or --untangle to repair "
-                   "the inverted cells";
+            tries.push_back("--method dg-harmonic");
+            add(given("--rbf-radius"), "a compact support (--rbf-radius)");
+            add(a.untangle, untangle);
+            break;
         case Method::dg_harmonic:
-            return "For dg-harmonic: its untangle last resort (off with --no-untangle) could not repair every "
-                   "cell: try a finer coarse level (--harmonic-wall-spacing 3), or check that the boundary motion "
-                   "itself does not fold the boundary's faces (docs/dg-harmonic.md)";
+            add(!a.no_untangle, "without --no-untangle (its last resort repairs the cells its step folds)");
+            tries.push_back(given("--harmonic-wall-spacing")
+                                ? "a smaller --harmonic-wall-spacing than " + number_text(a.setup.harmonic_wall_spacing) +
+                                      " (a finer coarse level)"
+                                : "a finer coarse level (--harmonic-wall-spacing 3)");
+            break;
     }
-    return "";
+    std::string advice = "For " + std::string(method_name(method)) + ": ";
+    if (method == Method::dg_harmonic && !a.no_untangle)
+        advice += std::string(a.untangle ? "--untangle" : "its untangle last resort") + " could not repair every cell; ";
+    if (tries.empty()) {
+        advice += "every option that could help was given";
+    } else {
+        advice += "try ";
+        for (std::size_t k = 0; k < tries.size(); ++k)
+            advice += (k == 0 ? "" : k + 1 == tries.size() ? ", or " : ", ") + tries[k];
+    }
+    if (method == Method::dg_harmonic)
+        advice += "; check that the boundary motion itself does not fold the boundary's faces (docs/dg-harmonic.md)";
+    return advice;
 }
 
 void add_deform_command(CLI::App& app) {

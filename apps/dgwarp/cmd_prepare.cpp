@@ -21,6 +21,8 @@ struct PrepareArgs {
 
 void run_prepare(const PrepareArgs& a) {
     const Method method = chosen_methods(a.setup, false).front();
+    // Before any work, and without advising a method prepare cannot save.
+    refuse_other_methods_options(a.setup, method, {Method::dg_idw, Method::dg_harmonic});
     if (method != Method::dg_idw && method != Method::dg_harmonic)
         throw CLI::ValidationError("--method", "only dg-idw and dg-harmonic plans can be saved, not " +
                                                    std::string(method_name(method)));

@@ -23,8 +23,10 @@ void add_demo_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_picture_command(CLI::App& app);
 void add_deform_command(CLI::App& app);
-/// What to try when `method` gave inverted cells (the options that apply to it).
-std::string invalid_result_advice(Method method);
+struct DeformArgs;
+/// What to try when `method` gave inverted cells (the options that apply to
+/// it), leaving out what `args` already gave.
+std::string invalid_result_advice(Method method, const DeformArgs& args);
 void add_prepare_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_case_command(CLI::App& app);

@@ -298,7 +298,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     if (run.invalid) {
         if (!a.allow_invalid)
             throw InvalidResultError(run.error + ". Nothing was written for an invalid frame. " +
-                                         invalid_result_advice(method) + "; or --allow-invalid to write it anyway",
+                                         invalid_result_advice(method, a) + "; or --allow-invalid to write it anyway",
                                      1);
         if (!a.quiet && rank == 0) std::cerr << "warning: " << run.error << "; written anyway (--allow-invalid)\n";
     }

@@ -1,5 +1,6 @@
 #include "deform_setup.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -59,15 +60,23 @@ std::int64_t moving_count(const BoundarySet& b) {
 
 // An option of another method than the one that runs would be silently
 // ignored: a usage error instead (with --method all, every option applies).
-void refuse_other_methods_options(const SetupArgs& args, Method method) {
+void refuse_other_methods_options(const SetupArgs& args, Method method, const std::vector<Method>& usable) {
     if (args.method == "all") return;
-    for (const std::string& flag : args.given)
-        if (const Method owner = option_method(flag).value(); owner != method)
-            throw CLI::ValidationError(flag, "is an option of " + std::string(method_name(owner)) +
-                                                 "; it does nothing with " + std::string(method_name(method)) +
-                                                 (args.method_given ? std::string()
-                                                                    : " (the default method): add --method " +
-                                                                          std::string(method_name(owner))));
+    for (const std::string& flag : args.given) {
+        const Method owner = option_method(flag).value();
+        if (owner == method) continue;
+        const std::string owner_name(method_name(owner));
+        std::string message = "is an option of " + owner_name + "; it does nothing with " + std::string(method_name(method));
+        // Advise --method only where the command can run that method.
+        if (!usable.empty() && std::find(usable.begin(), usable.end(), owner) == usable.end()) {
+            std::string list;
+            for (Method m : usable) list += (list.empty() ? "" : " and ") + std::string(method_name(m));
+            message += ", and this command does not run " + owner_name + " (only " + list + "): drop it";
+        } else if (!args.method_given) {
+            message += " (the default method): add --method " + owner_name;
+        }
+        throw CLI::ValidationError(flag, message);
+    }
 }
 
 void add_input_options(CLI::App* cmd, SetupArgs& a) {

@@ -56,7 +56,9 @@ std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all);
 
 /// Usage error (CLI::ValidationError) when an option of another method than
 /// `method` was given (it would do nothing), unless every method runs.
-void refuse_other_methods_options(const SetupArgs& args, Method method);
+/// `usable`: the methods the command can run (empty: every one); an option of
+/// another is refused without advising --method.
+void refuse_other_methods_options(const SetupArgs& args, Method method, const std::vector<Method>& usable = {});
 
 /// The method options from the command line.
 MethodOptions method_options(const SetupArgs& args);

@@ -130,6 +130,40 @@ TEST(CliDeform, AShorterSeriesSaysWhichFramesOfAnEarlierOneAreLeft) {
     EXPECT_NE(r.err.find("(5 files) are left"), std::string::npos) << r.err;
 }
 
+TEST(CliDeform, FailureAdviceLeavesOutWhatWasAlreadyGiven) {
+    // Issue #27: "--dgm-substep" was advised to a run with --dgm-substep,
+    // "--untangle" to one with --untangle; prepare advised "--method rbf",
+    // then refused it (only dg-idw and dg-harmonic plans can be saved).
+    const auto [dir, mesh, rotation] = rect_box_files();
+    const auto motion = write_text(
+        dir / "r170.json", R"({"markers": {"rectangle": {"rotate": {"angle_deg": 170, "center": [0, 0]}, "translate": [0.5, 0.25]}}})");
+    const std::string base = "deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "o.su2") + " ";
+    struct Case {
+        std::string options, advice, not_advised;
+    };
+    for (const Case& c : {Case{"--method dgm --dgm-substep", "For dgm: try --method dg-harmonic", "--dgm-substep"},
+                          Case{"--method dg-idw --untangle --length-scale auto", "For dg-idw: try --method dg-harmonic",
+                               "--untangle"},
+                          Case{"--method dg-idw", "--length-scale auto when", ""},
+                          Case{"--method rbf --rbf-radius 5", "For rbf: try --method dg-harmonic, or --untangle",
+                               "--rbf-radius"}}) {
+        const CommandResult r = run_cli(base + c.options);
+        ASSERT_EQ(r.exit_code, 3) << c.options << "\n" << r.err;
+        const std::size_t at = r.err.find("For ");
+        ASSERT_NE(at, std::string::npos) << r.err;
+        const std::string advice = r.err.substr(at);
+        EXPECT_NE(advice.find(c.advice), std::string::npos) << c.options << "\n" << advice;
+        if (!c.not_advised.empty()) {
+            EXPECT_EQ(advice.find(c.not_advised), std::string::npos) << c.options << "\n" << advice;
+        }
+    }
+    const CommandResult r = run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " +
+                                    quoted(dir / "p.plan") + " --rbf-radius 1");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("does not run rbf (only dg-idw and dg-harmonic): drop it"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("add --method rbf"), std::string::npos) << r.err;
+}
+
 TEST(CliPrepare, SavedPlanGivesBitIdenticalResults) {
     const auto [dir, mesh, motion] = rect_box_files();
     ASSERT_EQ(run_cli("prepare " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "rb.plan") + " -q")
