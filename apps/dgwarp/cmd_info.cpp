@@ -23,7 +23,9 @@ struct InfoArgs {
 
 void run_info(const InfoArgs& a) {
     ProgressLine progress(!a.json && !a.quiet);
-    const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh));
+    MeshExtras extras;
+    const Mesh mesh = read_mesh(a.mesh, {a.zone}, progress.reporter("reading " + a.mesh), extras);
+    const std::int64_t zones = extras.su2 ? extras.su2->zones : 1;
     progress.phase("measuring quality");
     const BoundingBox box = bounding_box(mesh);
     const QualitySummary quality = summarize_quality(cell_qualities(mesh, dominant_orientations(mesh)));
@@ -37,12 +39,14 @@ void run_info(const InfoArgs& a) {
                             {"bounding_box",
                              {{"min", std::vector<double>(box.min.begin(), box.min.begin() + d)},
                               {"max", std::vector<double>(box.max.begin(), box.max.begin() + d)}}},
-                            {"quality", quality_json(quality)}};
+                            {"quality", quality_json(quality)},
+                            {"zone", {{"number", a.zone}, {"of", zones}}}};
         std::cout << j.dump(2) << "\n";
         return;
     }
     if (a.quiet) return;
     std::cout << a.mesh << "\n  " << describe_mesh(mesh) << "\n";
+    if (zones > 1) std::cout << "  zone " << a.zone << " of " << zones << " (--zone N reads another)\n";
     std::cout << "markers\n";
     for (const Marker& m : mesh.markers)
         std::cout << "  " << std::left << std::setw(24) << m.name << std::right << std::setw(9)

@@ -194,6 +194,9 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     in.boundary = resolve_boundary(in.mesh, in.spec);
+    if (const std::string zone = zone_notice(in.extras, args.mesh, args.zone); !zone.empty())
+        in.boundary.warnings.insert(in.boundary.warnings.begin(),
+                                    zone + "; an .su2 output keeps the other zones as they are");
     in.resolve_seconds = sw.lap();
     progress.clear();
     return in;

@@ -96,6 +96,12 @@ std::string milliseconds(double seconds) {
     return s.str();
 }
 
+std::string zone_notice(const MeshExtras& extras, const std::string& file, int zone) {
+    if (!extras.su2 || extras.su2->zones <= 1) return "";
+    return file + " holds " + std::to_string(extras.su2->zones) + " zones; zone " + std::to_string(zone) +
+           " is read (--zone N reads another)";
+}
+
 void check_standard_output() {
     errno = 0;
     std::cout.flush();

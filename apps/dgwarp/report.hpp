@@ -49,6 +49,10 @@ void print_ratio(std::ostream& out, const RatioSummary& r);
 /// A duration for people: "12.3 ms" (two decimals below 10 ms).
 std::string milliseconds(double seconds);
 
+/// For a multi-zone SU2 file read as one zone: "FILE holds 3 zones; zone 1
+/// is read (--zone N reads another)"; "" for a single-zone file or another format.
+std::string zone_notice(const MeshExtras& extras, const std::string& file, int zone);
+
 /// Flushes standard output; throws IoError("standard output", the system's
 /// reason) when anything printed was lost (a full disk, /dev/full): a report
 /// a script reads must not vanish with exit code 0.

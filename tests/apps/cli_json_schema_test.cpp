@@ -153,3 +153,25 @@ TEST(CliJsonSchema, BenchReportValidatesAndATamperedOneDoesNot) {
     expect_invalid(dir, "bench", nlohmann::json::parse(text), [](auto& j) { j["rows"][0]["methods"][0].erase("paper"); },
                    "paper");
 }
+
+TEST(CliJsonSchema, AMultiZoneSu2FileSaysWhichZoneIsRead) {
+    // Issue #27: zone 1 of a multi-zone file was read silently by info
+    // (text and JSON) and deform.
+    const auto dir = scratch_dir();
+    const std::string zone = "NDIME= 2\nNELEM= 2\n5 0 1 2\n5 0 2 3\nNPOIN= 4\n0 0\n1 0\n1 1\n0 1\n"
+                             "NMARK= 2\nMARKER_TAG= wall\nMARKER_ELEMS= 1\n3 0 1\n"
+                             "MARKER_TAG= farfield\nMARKER_ELEMS= 3\n3 1 2\n3 2 3\n3 3 0\n";
+    const auto mesh = write_text(dir / "zones.su2", "NZONE= 2\nIZONE= 1\n" + zone + "IZONE= 2\n" + zone);
+    const nlohmann::json info = valid_report(dir, "info", quoted(mesh) + " --json");
+    EXPECT_EQ(info.at("zone"), (nlohmann::json{{"number", 1}, {"of", 2}}));
+    EXPECT_EQ(valid_report(dir, "info", quoted(mesh) + " --zone 2 --json").at("zone").at("number"), 2);
+    const CommandResult text = run_cli("info " + quoted(mesh));
+    EXPECT_NE(text.out.find("zone 1 of 2 (--zone N reads another)"), std::string::npos) << text.out;
+    const auto motion = write_text(dir / "m.json", R"({"markers": {"wall": {"translate": [0, 0]}}})");
+    const CommandResult deform = run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + quoted(dir / "o.su2"));
+    EXPECT_EQ(deform.exit_code, 0) << deform.err;
+    EXPECT_NE(deform.err.find("zones.su2 holds 2 zones; zone 1 is read"), std::string::npos) << deform.err;
+    // A single-zone file: 1 of 1, no warning.
+    const auto single = write_text(dir / "single.su2", zone);
+    EXPECT_EQ(valid_report(dir, "info", quoted(single) + " --json").at("zone").at("of"), 1);
+}

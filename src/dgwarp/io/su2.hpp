@@ -39,6 +39,7 @@ struct Su2Surroundings {
     bool zone_has_ndime = true;    // false when the zone's dimension is given by an NDIME= before NZONE=
     std::int64_t num_points = 0;   // the zone's: the surroundings may name its nodes (FFD_SURFACE_POINTS)
     std::int64_t num_cells = 0;
+    std::int64_t zones = 1;        // zones in the file (NZONE=; 1 for a single-zone file)
     /// What before and after hold, for messages: e.g. "zone 2 of 2", "FFD_NBOX= 1", "NPERIODIC= 1";
     /// empty when they hold nothing but blank lines and comments.
     std::vector<std::string> contents;

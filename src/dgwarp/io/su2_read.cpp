@@ -437,6 +437,7 @@ Mesh read_zone(TextReader& r, int zone, ZoneStart start, Su2Surroundings* surrou
         std::int64_t other_zones = 0;
         describe_surroundings(s.before, zone, s.contents, other_zones);
         describe_surroundings(s.after, zone, s.contents, other_zones);
+        s.zones = other_zones + 1;
         if (other_zones > 0)
             s.contents.insert(s.contents.begin(), std::to_string(other_zones) + " other zone" +
                                                       (other_zones == 1 ? "" : "s") + " (IZONE=)");
