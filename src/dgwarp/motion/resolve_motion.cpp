@@ -1,6 +1,7 @@
 #include "dgwarp/motion/resolve_motion.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -262,6 +263,73 @@ void refuse_unusable_motions(const Context& c, const NodeMotions& motions, const
     }
 }
 
+/// A warning when the boundary motion itself folds boundary faces: a face
+/// whose moved normal (3D; in 2D its direction) points against its original
+/// one turned by its nodes' mean rotation. No method can keep the cells on
+/// such a face valid, and none of them is all-boundary, so the step's report
+/// would not say so (issue #27: a face turned inside a rim held by
+/// static_wins).
+void warn_folded_faces(const Context& c, const BoundaryMotion& motion, const std::string& at,
+                       std::vector<std::string>& warnings) {
+    const Mesh& mesh = c.mesh;
+    const BoundarySet& boundary = c.boundary;
+    if (std::none_of(boundary.moving.begin(), boundary.moving.end(), [](std::uint8_t m) { return m != 0; })) return;
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    const std::vector<double> moved = moved_boundary_points(mesh, boundary, motion);
+    using P = std::array<double, 3>;
+    const auto sub = [](const P& a, const P& b) { return P{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+    const auto cross = [](const P& a, const P& b) {
+        return P{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    // The face's normal (3D: triangle, or a quadrilateral's diagonals) or direction (2D).
+    const auto normal = [&](const std::vector<P>& x) {
+        if (x.size() == 2) return sub(x[1], x[0]);
+        if (x.size() == 4) return cross(sub(x[2], x[0]), sub(x[3], x[1]));
+        return cross(sub(x[1], x[0]), sub(x[2], x[0]));
+    };
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
+        const ElementList& faces = mesh.markers[m].elements;
+        std::size_t folded = 0, example = 0;
+        std::vector<P> before, after;
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            const auto nodes = faces.nodes_of(f);
+            before.clear();
+            after.clear();
+            Vec3 w{0, 0, 0};
+            bool moves = false;
+            for (NodeId n : nodes) {
+                const auto b = static_cast<std::size_t>(
+                    std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), n) - boundary.nodes.begin());
+                moves = moves || boundary.moving[b];
+                P x{0, 0, 0}, y{0, 0, 0};
+                for (std::size_t d = 0; d < dim; ++d) {
+                    x[d] = mesh.points[static_cast<std::size_t>(n) * dim + d];
+                    y[d] = moved[b * dim + d];
+                }
+                before.push_back(x);
+                after.push_back(y);
+                for (int d = 0; d < 3; ++d) w[d] += motion[b].rotation[d] / static_cast<double>(nodes.size());
+            }
+            if (!moves || nodes.size() < 2 || nodes.size() > 4) continue;
+            if (dim == 2) w[0] = w[1] = 0;
+            const std::array<double, 9> r = rotation_matrix(w);
+            const P n0 = normal(before), n1 = normal(after);
+            const P turned{r[0] * n0[0] + r[1] * n0[1] + r[2] * n0[2], r[3] * n0[0] + r[4] * n0[1] + r[5] * n0[2],
+                           r[6] * n0[0] + r[7] * n0[1] + r[8] * n0[2]};
+            const double d = turned[0] * n1[0] + turned[1] * n1[1] + turned[2] * n1[2];
+            if (d < 0 && folded++ == 0) example = f;  // turned over; edge-on (0) is not
+        }
+        if (folded == 0) continue;
+        std::ostringstream w;
+        w << at << ": the boundary motion itself folds " << folded << " of marker '" << mesh.markers[m].name
+          << "''s " << faces.size() << " faces (e.g. its element " << example
+          << "): they turn over against their nodes' rotation, so no method can keep the cells on them valid; "
+             "change the motion (a moving marker held at a static rim by shared_nodes: static_wins does this, "
+             "docs/MOTION.md)";
+        warnings.push_back(w.str());
+    }
+}
+
 /// Resolves one frame (see the header's rules). Appends warnings.
 BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
                           std::vector<std::string>& warnings) {
@@ -277,6 +345,7 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
     refuse_disagreements(c, f, motions, at);
     for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b)
         if (!c.boundary.moving[b]) f.motion[b] = NodeMotion{};  // static nodes stay
+    warn_folded_faces(c, f.motion, at, warnings);
     return std::move(f.motion);
 }
 

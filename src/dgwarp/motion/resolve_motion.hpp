@@ -19,7 +19,8 @@
 //    than the mesh's bounding-box diagonal, nodes on moving and static
 //    markers, boundary nodes at the same coordinates (zero-length boundary
 //    edges), a marker the motion names that has no elements, no moving
-//    marker at all (an empty or all-fixed motion: nothing moves).
+//    marker at all (an empty or all-fixed motion: nothing moves), boundary
+//    faces the motion itself turns over (against their nodes' mean rotation).
 #include <cstddef>
 #include <cstdint>
 #include <string>
