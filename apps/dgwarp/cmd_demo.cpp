@@ -71,7 +71,7 @@ void run_demo(const DemoArgs& a) {
         std::string status;
         Stopwatch sw;
         try {
-            const Plan plan = prepare(m, mesh.dim, mesh.points, boundary.boundary);
+            const Plan plan = prepare(m, mesh.dim, mesh.points, mesh.cells, boundary.boundary);
             const double prepare_seconds = sw.lap();
             deform(plan, mesh.points, motion, deformed.points);
             const double deform_seconds = sw.lap();

@@ -88,8 +88,11 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
                   << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
                   << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
                   << milliseconds(f.untangle_seconds) << "\n";
-    if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
-                                       << f.step.invalid_graph_simplices << " invalid simplices)\n";
+    if (f.step.substeps > 1 && f.step.invalid_graph_simplices > 0)
+        std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
+                  << f.step.invalid_graph_simplices << " invalid simplices)\n";
+    else if (f.step.substeps > 1)
+        std::cout << "increments " << f.step.substeps << " (each solved on the mesh the earlier ones moved)\n";
 }
 
 void print_frame_line(const FrameResult& f) {

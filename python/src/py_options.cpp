@@ -101,6 +101,19 @@ MethodOptions method_options(Method method, const py::kwargs& kwargs, const char
         else if (name == "rbf_greedy") o.rbf.greedy_tolerance = number_option(value, name);
         else if (name == "harmonic_wall_spacing") o.dg_harmonic.wall_spacing = number_option(value, name);
         else if (name == "harmonic_growth") o.dg_harmonic.growth = number_option(value, name);
+        else if (name == "laplacian_increments") {
+            const double n = number_option(value, name);
+            if (!(n >= 1 && n <= 64 && n == std::floor(n)))
+                throw py::value_error("laplacian_increments must be a whole number from 1 to 64, got " +
+                                      py::repr(value).cast<std::string>());
+            o.laplacian.increments = static_cast<int>(n);
+        } else if (name == "laplacian_exponent") o.laplacian.stiffness_exponent = number_option(value, name);
+        else if (name == "laplacian_model") {
+            const std::string m = py::str(value);
+            if (m != "elasticity" && m != "laplacian")
+                throw py::value_error("laplacian_model must be 'elasticity' or 'laplacian', got '" + m + "'");
+            o.laplacian.model = m == "laplacian" ? LaplacianModel::laplacian : LaplacianModel::elasticity;
+        }
         else throw std::logic_error("method option " + name + " is not bound");
     }
     return o;
@@ -127,6 +140,11 @@ py::dict options_dict(Method method, const MethodOptions& o) {
         case Method::dg_harmonic:
             d["harmonic_wall_spacing"] = o.dg_harmonic.wall_spacing;
             d["harmonic_growth"] = o.dg_harmonic.growth;
+            break;
+        case Method::laplacian:
+            d["laplacian_increments"] = o.laplacian.increments;
+            d["laplacian_exponent"] = o.laplacian.stiffness_exponent;
+            d["laplacian_model"] = o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity";
             break;
     }
     return d;

@@ -111,7 +111,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
                            p->shared_nodes);
     ProgressBridge bridge(progress);
     bridge.run([&] {
-        p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, p->boundary.boundary, p->options,
+        p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells, p->boundary.boundary, p->options,
                           bridge.function());
     });
     warn_plan(*p);
