@@ -39,6 +39,10 @@ enum class Method { dg_idw, dgm, idw, rbf, dg_harmonic, laplacian };
 inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm,         Method::idw,
                                          Method::rbf,    Method::dg_harmonic, Method::laplacian};
 
+/// Whether `m` solves on the mesh's cells (prepare needs them): laplacian
+/// only; the others work on points and a boundary set.
+constexpr bool method_needs_cells(Method m) { return m == Method::laplacian; }
+
 /// "dg-idw", "dgm", "idw", "rbf", "dg-harmonic", "laplacian".
 std::string_view method_name(Method m);
 
