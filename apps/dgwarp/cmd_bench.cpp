@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench_robustness.hpp"
 #include "bench_tables.hpp"
 #include "commands.hpp"
 #include "dgwarp/cases/child_process.hpp"
@@ -33,6 +34,9 @@ struct BenchArgs {
     double rbf_max_boundary = 20000; // RBF: dense N_b × N_b beyond this is skipped
     double idw_max_work = 1e11;      // IDW: N_volume × N_boundary beyond this is skipped
     double laplacian_max_nodes = 3e5;  // laplacian: a sparse factorisation per increment beyond this is skipped
+    bool robustness = false;           // the random-scene campaign instead (bench_robustness.hpp)
+    std::string seeds = "1-20";
+    int dim = 2;
 };
 
 std::string machine_name() {
@@ -201,6 +205,23 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
 }
 
 void run_bench(const BenchArgs& a) {
+    if (a.robustness) {
+        if (a.quick || !a.cases.empty())
+            throw CLI::ValidationError("--robustness", "runs the random scenes: --quick and --case do not apply");
+        RobustnessArgs r;
+        if (const std::string why = parse_seed_range(a.seeds, r); !why.empty())
+            throw CLI::ValidationError("--seeds", why);
+        r.dim = a.dim;
+        r.quiet = a.quiet;
+        r.markdown = a.markdown;
+        r.json = a.json;
+        r.cache = a.cache;
+        r.pictures = a.pictures;
+        r.commit = a.commit;
+        r.mesh_timeout = a.mesh_timeout;
+        run_robustness(r);
+        return;
+    }
     // The outputs, before hours of work.
     if (!a.markdown.empty()) {
         require_extension("--markdown", a.markdown, {".md"}, "Markdown");
@@ -296,7 +317,16 @@ void add_bench_command(CLI::App& app) {
                                     "empty it when the generators change)");
     cmd->add_option("--mesh-timeout", args->mesh_timeout, "Seconds allowed to Gmsh per 3D mesh (default 1200)")
         ->check(positive_whole_number());
+    CLI::Option* robustness =
+        cmd->add_flag("--robustness", args->robustness,
+                      "Instead of the paper's cases: every method on the random scenes of --seeds, against the "
+                      "laplacian reference (docs/ROBUSTNESS.md); --cache keeps their meshes");
+    cmd->add_option("--seeds", args->seeds, "--robustness: the seeds, A-B (default 1-20)")->needs(robustness);
+    cmd->add_option("--dim", args->dim, "--robustness: 2 or 3 (default 2)")
+        ->check(whole_number_between(2, 3))
+        ->needs(robustness);
     cmd->footer("Examples:\n  dgwarp bench --quick\n"
+                "  dgwarp bench --robustness --dim 2 --seeds 1-200 --markdown docs/ROBUSTNESS-2D.md --cache scenes\n"
                 "  dgwarp bench --markdown docs/RESULTS.md --json results.json --pictures docs/results "
                 "--commit $(git rev-parse --short HEAD)");
     cmd->callback([args] { run_bench(*args); });

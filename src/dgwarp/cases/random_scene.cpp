@@ -368,9 +368,10 @@ RandomScene random_scene(int dim, std::uint64_t seed) {
     Draw draw{std::mt19937_64(seed * 2 + static_cast<std::uint64_t>(dim - 2) + 0x5eedULL)};
     scene.box_half = {draw.u(2.5, 4), draw.u(2, 3), dim == 3 ? draw.u(2, 3) : 0.0};
     const int wanted = draw.integer(1, 4);
-    scene.wall_size = draw.u(0.008, 0.02);
-    scene.growth = draw.u(0.1, 0.25);
-    scene.max_size = draw.u(0.12, 0.25);
+    // 3D: coarser (20k-150k nodes).
+    scene.wall_size = dim == 2 ? draw.u(0.008, 0.02) : draw.u(0.035, 0.06);
+    scene.growth = dim == 2 ? draw.u(0.1, 0.25) : draw.u(0.2, 0.35);
+    scene.max_size = dim == 2 ? draw.u(0.12, 0.25) : draw.u(0.3, 0.5);
     scene.boundary_layers = dim == 2 && draw.integer(0, 2) == 0 ? draw.integer(4, 8) : 0;
 
     // Placement.

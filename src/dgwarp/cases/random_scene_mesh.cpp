@@ -6,6 +6,7 @@
 #include <array>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,11 @@ namespace {
 // at most max_size, and at most a quarter of d_bodies + d_box (the width of
 // the gap a point is in: four cells across a gap between a body and the box).
 std::string size_formula(const RandomScene& s, int bodies, int box) {
-    const std::string b = "F" + std::to_string(bodies), w = "F" + std::to_string(box);
-    return "Min(" + std::to_string(s.max_size) + ", Min(" + std::to_string(s.wall_size) + " + " +
-           std::to_string(s.growth) + " * " + b + ", 0.25 * (" + b + " + " + w + ")))";
+    std::ostringstream f;
+    f.precision(17);
+    f << "Min(" << s.max_size << ", Min(" << s.wall_size << " + " << s.growth << " * F" << bodies << ", 0.25 * (F"
+      << bodies << " + F" << box << ")))";
+    return f.str();
 }
 
 // The distance field from entities of dimension `dim` (1: curves, 2: surfaces).
@@ -250,8 +253,9 @@ Mesh mesh_3d(const RandomScene& scene) {
                 const double w = q[0], h = q[1];
                 const int box = occ::addBox(-0.5, -w / 2, -h / 2, 1, w, h);
                 occ::synchronize();
-                gmsh::vectorpair edges;
-                gmsh::model::getBoundary({{3, box}}, edges, false, false, true);
+                gmsh::vectorpair faces, edges;  // the box's faces, then their curves (recursive would give points)
+                gmsh::model::getBoundary({{3, box}}, faces, false, false, false);
+                gmsh::model::getBoundary(faces, edges, false, false, false);
                 std::vector<int> curves;
                 for (const auto& e : edges)
                     if (e.first == 1) curves.push_back(std::abs(e.second));

@@ -12,6 +12,8 @@
 // moves the boundary from fraction (s-1)/n to s/n of its motion (a rotation
 // along its arc: fraction f is c + R(f w)(x0 - c) + f t) and is assembled on
 // the mesh as the earlier increments left it, so cells that shrink stiffen.
+// When a simplex of the (split) mesh folds, the step is solved again with
+// twice the increments (up to max_increments), and the report says how many.
 // It is slow by design (a sparse factorisation per increment) and is the
 // quality reference of the robustness campaign (dgwarp bench --robustness).
 //
@@ -51,8 +53,11 @@ struct LaplacianOptions {
     /// Increments per step, 1 to 64: more is slower and follows large
     /// rotations better (docs/laplacian.md has the measurements).
     int increments = 4;
+    /// While a simplex of the split mesh folds, the step is solved again with
+    /// twice the increments, up to this many (1 to 64; = increments: never).
+    int max_increments = 64;
     /// e in the stiffness (V_mean / V_cell)^e, 0 to 4 (0: the plain Laplacian).
-    double stiffness_exponent = 1.0;
+    double stiffness_exponent = 1.5;
     LaplacianModel model = LaplacianModel::elasticity;
     /// Elasticity: Poisson's ratio, in [0, 0.45].
     double poisson_ratio = 0.3;
@@ -71,6 +76,10 @@ struct LaplacianPlan {
     std::vector<std::int32_t> simplices;
     /// Per simplex, the mesh cell it comes from (its stiffness is the cell's).
     std::vector<std::int32_t> simplex_cell;
+    /// The corner simplices of the cells that are not simplices (a corner and
+    /// its dim neighbours), × (dim + 1): with the split's simplices, what must
+    /// not fold (a quadrilateral can fold at a corner while its split does not).
+    std::vector<std::int32_t> corners;
     std::int64_t num_cells = 0;
     /// Centre c: the mean of nodes centre_node[centre_start[c] .. centre_start[c+1]).
     std::vector<std::int64_t> centre_start{0};
@@ -85,7 +94,7 @@ struct LaplacianPlan {
 
 /// What one step did.
 struct LaplacianStepReport {
-    int increments = 0;
+    int increments = 0;  // the increments of the solve kept (more than options.increments when folds asked for more)
     std::int64_t unknowns = 0;
 };
 

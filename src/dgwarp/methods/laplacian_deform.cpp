@@ -66,6 +66,34 @@ std::vector<double> cell_measures(const LaplacianPlan& plan, const std::vector<d
     return v;
 }
 
+// Per simplex of the split mesh, its signed measure (times dim!) at x.
+// Then the same of its cells' corner simplices.
+template <int Dim>
+std::vector<double> signed_measures(const LaplacianPlan& plan, const std::vector<double>& x) {
+    const std::size_t split = plan.simplex_cell.size();
+    std::vector<double> v(split + plan.corners.size() / (Dim + 1));
+    for (std::size_t s = 0; s < v.size(); ++s) {
+        const std::int32_t* ids = s < split ? plan.simplices.data() + s * (Dim + 1)
+                                            : plan.corners.data() + (s - split) * (Dim + 1);
+        double e[Dim][Dim];
+        for (int k = 0; k < Dim; ++k)
+            for (int d = 0; d < Dim; ++d)
+                e[k][d] = x[static_cast<std::size_t>(ids[k + 1]) * Dim + d] - x[static_cast<std::size_t>(ids[0]) * Dim + d];
+        if constexpr (Dim == 2) v[s] = e[0][0] * e[1][1] - e[0][1] * e[1][0];
+        else
+            v[s] = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                   e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    }
+    return v;
+}
+
+// Whether a simplex that had a sign lost it (flipped or flat).
+bool folds(const std::vector<double>& before, const std::vector<double>& after) {
+    for (std::size_t s = 0; s < before.size(); ++s)
+        if ((before[s] > 0 && !(after[s] > 0)) || (before[s] < 0 && !(after[s] < 0))) return true;
+    return false;
+}
+
 // One increment: moves x (split-mesh nodes × Dim) so that the given nodes
 // reach `target` (same layout; read at given nodes only).
 template <int Dim>
@@ -199,18 +227,25 @@ LaplacianStepReport deform_in(const LaplacianPlan& plan, std::span<const double>
             x[(num_points + static_cast<std::size_t>(c)) * Dim + d] = sum / static_cast<double>(last - first);
         }
     }
+    const std::vector<double> x0 = x;
+    const std::vector<double> before = signed_measures<Dim>(plan, x0);
     std::vector<double> target(x);
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, MetisOrAmdOrdering> ldlt;
     bool analysed = false;
-    const int n = plan.options.increments;
-    for (int s = 1; s <= n; ++s) {
-        given_targets(plan, points, motion, static_cast<double>(s) / n, target);
-        if (plan.num_unknowns > 0) solve_increment<Dim>(plan, x, target, ldlt, analysed);
-        else
-            for (std::size_t node = 0; node < total; ++node)
-                if (plan.unknown[node] == -1)
-                    for (int d = 0; d < Dim; ++d) x[node * Dim + d] = target[node * Dim + d];
-        if (progress) progress(static_cast<double>(s) / n);
+    // Twice the increments while a simplex of the split mesh folds, up to max_increments.
+    int n = plan.options.increments;
+    for (;; n *= 2) {
+        x = x0;
+        for (int s = 1; s <= n; ++s) {
+            given_targets(plan, points, motion, static_cast<double>(s) / n, target);
+            if (plan.num_unknowns > 0) solve_increment<Dim>(plan, x, target, ldlt, analysed);
+            else
+                for (std::size_t node = 0; node < total; ++node)
+                    if (plan.unknown[node] == -1)
+                        for (int d = 0; d < Dim; ++d) x[node * Dim + d] = target[node * Dim + d];
+            if (progress) progress(static_cast<double>(s) / n);
+        }
+        if (2 * n > plan.options.max_increments || !folds(before, signed_measures<Dim>(plan, x))) break;
     }
     // Points no cell uses stay; boundary nodes are exactly where apply_motion puts them.
     for (std::size_t node = 0; node < num_points; ++node)

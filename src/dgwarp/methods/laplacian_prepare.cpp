@@ -29,6 +29,23 @@ std::span<const Face> faces_of(CellType t) {
     }
 }
 
+// Each corner's dim neighbours along the cell's edges (VTK corner order), per cell type.
+std::span<const std::array<int, 4>> corner_neighbours(CellType t) {
+    static constexpr std::array<int, 4> quadrilateral[] = {{0, 1, 3, -1}, {1, 2, 0, -1}, {2, 3, 1, -1}, {3, 0, 2, -1}};
+    static constexpr std::array<int, 4> hexahedron[] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
+                                                        {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+    static constexpr std::array<int, 4> prism[] = {{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5},
+                                                   {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}};
+    static constexpr std::array<int, 4> pyramid[] = {{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}};
+    switch (t) {
+        case CellType::quadrilateral: return quadrilateral;
+        case CellType::hexahedron: return hexahedron;
+        case CellType::prism: return prism;
+        case CellType::pyramid: return pyramid;
+        default: return {};
+    }
+}
+
 bool is_simplex(int dim, CellType t) {
     return (dim == 2 && t == CellType::triangle) || (dim == 3 && t == CellType::tetrahedron);
 }
@@ -75,6 +92,8 @@ LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const E
     const std::size_t num_points = check_points_and_boundary("laplacian", dim, points, boundary);
     if (!(options.increments >= 1 && options.increments <= 64))
         throw Error("laplacian: increments must be 1 to 64, got " + std::to_string(options.increments));
+    if (!(options.max_increments >= options.increments && options.max_increments <= 64))
+        throw Error("laplacian: max_increments must be increments to 64, got " + std::to_string(options.max_increments));
     if (!(options.stiffness_exponent >= 0 && options.stiffness_exponent <= 4))
         throw Error("laplacian: the stiffness exponent must be 0 to 4, got " +
                     std::to_string(options.stiffness_exponent));
@@ -169,6 +188,8 @@ LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const E
         }
         const std::int32_t centre = add_centre(nodes);
         centre_given.push_back(0);
+        for (const auto& corner : corner_neighbours(t))
+            for (int k = 0; k <= dim; ++k) plan.corners.push_back(nodes[corner[k]]);
         if (dim == 2) {  // a quadrilateral: a triangle on each edge
             for (std::size_t k = 0; k < nodes.size(); ++k) add_simplex(c, {nodes[k], nodes[(k + 1) % nodes.size()], centre});
             continue;
@@ -203,7 +224,7 @@ LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const E
 }
 
 std::size_t plan_bytes(const LaplacianPlan& p) {
-    return bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) + bytes_of(p.simplices) +
+    return bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) + bytes_of(p.simplices) + bytes_of(p.corners) +
            bytes_of(p.simplex_cell) + bytes_of(p.centre_start) + bytes_of(p.centre_node) + bytes_of(p.unknown);
 }
 
