@@ -37,7 +37,8 @@ void bind_extras(py::module_& m) {
     m.def(
         "untangle",
         [](const PyMesh& mesh, py::handle points, py::handle fixed, double target) {
-            auto xs = output_matrix(points, "points", static_cast<py::ssize_t>(mesh.mesh.num_points()), mesh.mesh.dim);
+            auto xs = output_matrix(points, "points", static_cast<py::ssize_t>(mesh.mesh.num_points()), mesh.mesh.dim,
+                                    true);
             std::vector<NodeId> fixed_nodes;
             if (fixed.is_none()) {
                 for (const Marker& marker : mesh.mesh.markers) {
@@ -67,7 +68,7 @@ void bind_extras(py::module_& m) {
             d["min_quality_after"] = r.min_quality_after;
             return d;
         },
-        py::arg("mesh"), py::arg("points"), py::arg("fixed") = py::none(), py::arg("target") = 0.0,
+        py::arg("mesh").none(false), py::arg("points"), py::arg("fixed") = py::none(), py::arg("target") = 0.0,
         "Repairs inverted cells of `points` (the mesh's deformed coordinates, float64 (num_points, dim),\n"
         "changed in place) by moving the volume nodes around them (docs/UNTANGLE.md); `fixed` node ids\n"
         "never move (default: every marker's nodes); cells at or below `target` are repaired too.\n"

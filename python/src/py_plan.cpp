@@ -103,6 +103,7 @@ void warn_plan(const PyPlan& p) {
 std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle moving, py::handle static_markers,
                                      const std::string& method_name_arg, const std::string& shared_nodes,
                                      double shared_tolerance, py::object progress, const py::kwargs& kwargs) {
+    if (!mesh) throw py::type_error("prepare(): mesh must be a dgwarp.Mesh, got None");
     const Method method = method_arg(method_name_arg);
     auto p = std::make_shared<PyPlan>();
     p->options = method_options(method, kwargs, "prepare");
@@ -121,6 +122,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
 std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::shared_ptr<PyMesh> mesh,
                                        py::handle moving, py::handle static_markers, const std::string& shared_nodes,
                                        double shared_tolerance) {
+    if (!mesh) throw py::type_error("load_plan(): mesh must be a dgwarp.Mesh, got None");
     auto p = std::make_shared<PyPlan>();
     p->mesh = mesh;
     {
@@ -319,7 +321,7 @@ void bind_plan(py::module_& m) {
                    (moving.empty() ? "none" : moving) + ")";
         });
 
-    m.def("prepare", &prepare_plan, py::arg("mesh"), py::arg("moving"), py::arg("static") = py::none(),
+    m.def("prepare", &prepare_plan, py::arg("mesh").none(false), py::arg("moving"), py::arg("static") = py::none(),
           py::arg("method") = "dg-harmonic", py::kw_only(), py::arg("shared_nodes") = "moving_wins",
           py::arg("shared_tolerance") = 0.0, py::arg("progress") = py::none(),
           "Prepares `method`'s plan for `mesh`, once; Plan.deform then moves the mesh every step.\n"
@@ -340,7 +342,7 @@ void bind_plan(py::module_& m) {
           "degenerate boundary, InputError (ValueError) for an option out of range, ValueError for an\n"
           "option of another method, TypeError for an unknown keyword.");
 
-    m.def("load_plan", &load_plan_file, py::arg("path"), py::arg("mesh"), py::arg("moving") = py::none(),
+    m.def("load_plan", &load_plan_file, py::arg("path"), py::arg("mesh").none(false), py::arg("moving") = py::none(),
           py::arg("static") = py::none(), py::kw_only(), py::arg("shared_nodes") = "moving_wins",
           py::arg("shared_tolerance") = 0.0,
           "Reads a plan saved by Plan.save (or `dgwarp prepare`) for `mesh`, checked to be for this mesh\n"
