@@ -30,10 +30,20 @@ void bind_extras(py::module_& m) {
         "rect-box, naca0012, twisted-bar, squeezed-sphere (sizes 0-2), wing-body (sizes 0-1), and\n"
         "two-element, store. Deterministic. Raises InputError for an unknown name or size.");
     m.def("num_threads", &num_threads, "The number of threads the library's loops use (for calls from this thread).");
-    m.def("set_num_threads", &set_num_threads, py::arg("n"),
-          "Sets the number of threads of the library's loops (clamped to 1 .. 4 x cores, at least 64), for\n"
-          "later calls from the calling Python thread (OpenMP's setting is per thread; OMP_NUM_THREADS\n"
-          "sets every thread's default).");
+    m.def(
+        "set_num_threads",
+        [](int n) {
+            // As the CLI's --threads: a count out of range is refused, not clamped.
+            if (n < 1 || n > max_threads())
+                throw py::value_error("set_num_threads: n must be 1 to " + std::to_string(max_threads()) +
+                                      " (4 per core, and at least 64; this machine has " +
+                                      std::to_string(available_cores()) + " cores), got " + std::to_string(n));
+            set_num_threads(n);
+        },
+        py::arg("n"),
+        "Sets the number of threads of the library's loops, 1 to max (4 x cores, at least 64; ValueError\n"
+        "otherwise), for later calls from the calling Python thread (OpenMP's setting is per thread;\n"
+        "OMP_NUM_THREADS sets every thread's default).");
     m.def(
         "untangle",
         [](const PyMesh& mesh, py::handle points, py::handle fixed, double target) {

@@ -62,6 +62,14 @@ SharedNodeRule shared_nodes_arg(const std::string& rule) {
     throw py::value_error("shared_nodes must be 'moving_wins' or 'static_wins', got '" + rule + "'");
 }
 
+double shared_tolerance_arg(double tolerance) {
+    // As a motion file's shared_tolerance (a length > 0), with 0 for its default.
+    if (!(std::isfinite(tolerance) && tolerance >= 0))
+        throw py::value_error("shared_tolerance must be a length > 0 (or 0: 1e-9 x the mesh's diagonal), got " +
+                              py::repr(py::float_(tolerance)).cast<std::string>());
+    return tolerance;
+}
+
 const char* shared_nodes_name(SharedNodeRule rule) {
     return rule == SharedNodeRule::moving_wins ? "moving_wins" : "static_wins";
 }

@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
@@ -51,6 +52,7 @@ std::vector<std::string> marker_list(py::handle obj, const char* what) {
 /// motion classifies it.
 ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle static_markers, SharedNodeRule rule,
                           double tolerance, SharedNodeRule& rule_used) {
+    tolerance = shared_tolerance_arg(tolerance);
     MotionSpec spec;
     if (py::isinstance<PyMotion>(moving) || py::isinstance<py::dict>(moving)) {
         if (!static_markers.is_none())
@@ -247,11 +249,15 @@ void bind_plan(py::module_& m) {
              "The GIL is released while the step runs. Raises InvalidResultError (ValueError) when the\n"
              "method cannot move the mesh validly (DGM without dgm_substep).")
         .def("save", [](const PyPlan& p, const std::filesystem::path& path) {
+                 // As `dgwarp prepare -o`: a plan file's name says what it is.
+                 if (lower_case_extension(path) != ".plan")
+                     throw py::value_error("save: a plan file's name ends in .plan, got " + path.string());
                  py::gil_scoped_release release;
                  save_plan(path, p.plan);
              },
              py::arg("path"),
-             "Writes the plan to `path` (atomically; DG-IDW and DG-harmonic plans). dgwarp.load_plan(path, mesh)\n"
+             "Writes the plan to `path`, a name ending in .plan (atomically; DG-IDW and DG-harmonic plans).\n"
+             "dgwarp.load_plan(path, mesh)\n"
              "reads it back; so does `dgwarp deform --plan`.")
         .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(p.plan))); },
                                "The method's name ('dg-idw', 'dgm', 'idw', 'rbf', 'dg-harmonic').")

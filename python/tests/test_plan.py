@@ -199,3 +199,20 @@ def test_dgm_invalid_graph_is_an_invalid_result(mesh):
     assert e.value.count > 0 and isinstance(e.value, ValueError)
     substep = dgwarp.prepare(mesh, moving=["airfoil"], method="dgm", dgm_substep=True)
     assert np.isfinite(substep.deform(big)).all()
+
+
+def test_refusals_instead_of_silent_changes(tmp_path, mesh, plan):
+    # Issue #27, item 8: a plan saved under another name than .plan, a negative shared tolerance
+    # and a thread count below 1 were accepted silently (the last became 1).
+    with pytest.raises(ValueError, match=r"ends in \.plan"):
+        plan.save(tmp_path / "x.txt")
+    assert not (tmp_path / "x.txt").exists()
+    plan.save(tmp_path / "x.PLAN")  # the CLI's rule: the extension without regard to case
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="shared_tolerance must be a length > 0"):
+            dgwarp.prepare(mesh, ["airfoil"], shared_tolerance=bad)
+    threads = dgwarp.num_threads()
+    for bad in (0, -1, 10**6):
+        with pytest.raises(ValueError, match="set_num_threads: n must be 1 to"):
+            dgwarp.set_num_threads(bad)
+    assert dgwarp.num_threads() == threads
