@@ -116,10 +116,15 @@ def from_meshio(m):
     if dim not in (2, 3):
         raise ValueError("the meshio mesh has no 2D or 3D cells")
     points = np.asarray(m.points, dtype=np.float64)
+    if points.ndim != 2 or points.shape[1] not in (2, 3):
+        raise ValueError(f"the meshio mesh's points must have shape (n, 2) or (n, 3), got {points.shape}")
     if dim == 2 and points.shape[1] == 3:
         if np.any(points[:, 2] != 0):
             raise ValueError("a mesh of 2D cells with non-zero z coordinates (a surface in 3D) is not a volume mesh")
-        points = np.ascontiguousarray(points[:, :2])
+        points = points[:, :2]
+    # meshio's arrays may be views (its Gmsh 2.2 reader's points are columns of a wider
+    # table): dgwarp takes C-contiguous float64 only, so a copy here (the mesh copies anyway).
+    points = np.ascontiguousarray(points)
     cells = [(_FROM_MESHIO[t], a) for t, a in blocks if _DIMENSION[t] == dim]
     markers = {}
 
