@@ -66,9 +66,9 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
     return std::visit(overloaded{[&](const DgIdwPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_idw(p, points, motion, out)
+                                         deform_dg_idw(p, points, motion, out, progress)
                                              .conflicting_shared_vertices;
-                                     return done(r);
+                                     return r;
                                  },
                                  [&](const DgmPlan& p) {
                                      const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
@@ -93,8 +93,9 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                                  [&](const DgHarmonicPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_harmonic(p, points, motion, out).conflicting_shared_vertices;
-                                     return done(r);
+                                         deform_dg_harmonic(p, points, motion, out, progress)
+                                             .conflicting_shared_vertices;
+                                     return r;
                                  }},
                       plan);
 }
