@@ -181,6 +181,7 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     if (!motion.is_none()) {
         if (py::isinstance<py::array>(motion) && !arrays) {
             boundary_motion = motion_from_arrays(p, motion, py::none(), py::none());  // a translation per node
+            warnings = large_motion_warnings(p.mesh->mesh, p.boundary, boundary_motion, "deform() arrays");
         } else {
             if (arrays)
                 throw py::type_error("deform(): give a motion or translation= / rotation= / center=, not both");
@@ -194,6 +195,8 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     } else {
         if (frame != 0) throw py::value_error("frame is for a motion of several frames, not for arrays");
         boundary_motion = motion_from_arrays(p, translation, rotation, center);
+        // What a motion dict would warn about (as resolve_frame does).
+        warnings = large_motion_warnings(p.mesh->mesh, p.boundary, boundary_motion, "deform() arrays");
     }
     if (!untangle.is_none() && !py::isinstance<py::bool_>(untangle))
         throw py::type_error("untangle must be None (the method's default), True or False");

@@ -165,3 +165,23 @@ def test_write_refuses_fields_a_format_cannot_hold(tmp_path):
             mesh.write(tmp_path / f"x.{ext}", cell_data={"q": np.zeros(2)})
         assert not (tmp_path / f"x.{ext}").exists()
     mesh.write(tmp_path / "x.vtu", point_data={"d": np.zeros(4)}, cell_data={"q": np.zeros(2)})
+
+
+def test_io_errors_are_the_builtin_oserror_of_their_errno(tmp_path, naca_file):
+    # Issue #27, item 15: IoError was no FileNotFoundError and had no errno.
+    import errno
+
+    missing = tmp_path / "missing.su2"
+    with pytest.raises(FileNotFoundError) as e:
+        dgwarp.read(missing)
+    assert isinstance(e.value, dgwarp.IoError) and e.value.errno == errno.ENOENT
+    assert e.value.strerror == "No such file or directory" and e.value.filename == str(missing)
+    assert str(e.value) == f"{missing}: cannot open file for reading: No such file or directory"
+    with pytest.raises(FileNotFoundError):
+        dgwarp.load_plan(tmp_path / "missing.plan", dgwarp.read(naca_file))
+    with pytest.raises(FileNotFoundError) as e:
+        square_mesh().write(tmp_path / "no_such_folder" / "x.su2")
+    assert e.value.errno == errno.ENOENT
+    (tmp_path / "file").write_text("")
+    with pytest.raises(NotADirectoryError):
+        square_mesh().write(tmp_path / "file" / "x.su2")

@@ -216,3 +216,36 @@ def test_refusals_instead_of_silent_changes(tmp_path, mesh, plan):
         with pytest.raises(ValueError, match="set_num_threads: n must be 1 to"):
             dgwarp.set_num_threads(bad)
     assert dgwarp.num_threads() == threads
+
+
+def test_arrays_warn_as_the_same_motion_as_a_dict_does(plan):
+    # Issue #27, item 15: the warnings of large motions came for dicts only.
+    turn = {"markers": {"airfoil": {"rotate": {"angle_deg": 200, "center": [0.25, 0]}}}}
+    with pytest.warns(dgwarp.DgwarpWarning, match="turns by 200 degrees in one step"):
+        plan.deform(turn, untangle=False)
+    with pytest.warns(dgwarp.DgwarpWarning, match="deform\\(\\) arrays: marker 'airfoil' turns by 200 degrees"):
+        plan.deform(rotation=[0, 0, math.radians(200)], center=[0.25, 0], untangle=False)
+    with pytest.warns(dgwarp.DgwarpWarning, match="moves node .* more than the diagonal"):
+        plan.deform(translation=[1000.0, 0], untangle=False)
+    with pytest.warns(dgwarp.DgwarpWarning, match="more than the diagonal"):
+        plan.deform(np.array([1000.0, 0, 0]), untangle=False)
+
+
+def test_a_non_finite_number_in_a_motion_dict_is_named_by_its_place(plan):
+    # Issue #27, item 15: json's "Out of range float values are not JSON compliant" said not where.
+    with pytest.raises(dgwarp.ParseError, match=r"a finite number at markers\.airfoil\.translate\[1\].*nan") as e:
+        plan.deform({"markers": {"airfoil": {"translate": [0.0, float("nan")]}}})
+    assert e.value.file == "motion"
+    with pytest.raises(dgwarp.ParseError, match=r"rotate\.angle_deg.*inf"):
+        dgwarp.Motion({"markers": {"airfoil": {"rotate": {"angle_deg": np.float32("inf"), "center": [0, 0]}}}})
+    with pytest.raises(dgwarp.ParseError, match=r"translate\[0\]"):
+        dgwarp.Motion({"markers": {"airfoil": {"translate": np.array([np.inf, 0.0])}}})
+
+
+def test_the_rbf_error_names_the_python_keyword(su2_meshes):
+    # Issue #27, item 15: it named RbfOptions::support_radius and --rbf-radius only.
+    mesh = dgwarp.read(su2_meshes / "rans_naca0012_n0012_225-65.su2")
+    with pytest.raises(dgwarp.InputError, match="not positive definite") as e:
+        dgwarp.prepare(mesh, ["airfoil"], method="rbf")
+    assert "rbf_radius" in str(e.value) and "RbfOptions" not in str(e.value)
+

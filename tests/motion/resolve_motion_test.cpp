@@ -380,6 +380,26 @@ TEST(MotionResolve, MotionLargerThanTheMeshIsAWarning) {
     EXPECT_TRUE(resolve_boundary(mesh, small).warnings.empty());
 }
 
+TEST(MotionResolve, LargeMotionWarningsOfAMotionGivenNodeByNode) {
+    // Issue #27, item 15: the same warnings for per-node motions (Python's arrays) as for a spec.
+    const Mesh mesh = two_squares();
+    const MotionSpec spec = spec_of(R"({"markers": {"airfoil": {"translate": [6, 0]}}})");
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
+    ASSERT_EQ(f.warnings.size(), 1u);
+    const auto w = large_motion_warnings(mesh, rb, f.motion, "arrays");
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].substr(w[0].find(':')), f.warnings[0].substr(f.warnings[0].find(':'))) << w[0];
+    EXPECT_TRUE(w[0].starts_with("arrays: marker 'airfoil' moves node")) << w[0];
+    BoundaryMotion turn(rb.boundary.nodes.size());
+    for (std::size_t b = 0; b < turn.size(); ++b)
+        if (rb.boundary.moving[b]) turn[b].rotation = {0, 0, 190 * deg};
+    const auto t = large_motion_warnings(mesh, rb, turn, "arrays");
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_TRUE(contains(t[0], "marker 'airfoil' turns by 190 degrees in one step")) << t[0];
+    EXPECT_TRUE(large_motion_warnings(mesh, rb, BoundaryMotion(rb.boundary.nodes.size()), "arrays").empty());
+}
+
 TEST(MotionResolve, SpecBuiltInCodeWithNodeTables) {
     // Tables without a source: markers with distinct tables are checked separately.
     const Mesh mesh = chain();
