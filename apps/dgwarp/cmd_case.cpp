@@ -74,7 +74,7 @@ void add_case_command(CLI::App& app) {
                     "Folder to write the case's motions to, one motion file per motion (<motion>.json, with its node "
                     "file for per-node motions; docs/MOTION.md): 'dgwarp deform' with one of them does what "
                     "'dgwarp bench' does for that motion");
-    cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~404k), 2 (~826k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
+    cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~408k), 2 (~865k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer("At least one of -o and --motions. The per-node motions (twisted-bar, squeezed-sphere) name the "
                 "mesh's nodes:\nuse them with the mesh of the same case and --size.\n\n"

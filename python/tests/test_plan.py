@@ -249,3 +249,28 @@ def test_the_rbf_error_names_the_python_keyword(su2_meshes):
         dgwarp.prepare(mesh, ["airfoil"], method="rbf")
     assert "rbf_radius" in str(e.value) and "RbfOptions" not in str(e.value)
 
+
+def test_a_plan_for_another_motion_says_what_to_do(tmp_path, mesh, plan):
+    # Issue #27, item 16: "(240 boundary nodes vs 240)", and no word of preparing it again.
+    path = tmp_path / "naca.plan"
+    plan.save(path)
+    with pytest.raises(dgwarp.MeshError) as e:
+        dgwarp.load_plan(path, mesh, moving=["farfield"], static=["airfoil"])
+    message = str(e.value)
+    assert "the same number of boundary nodes (240) with other nodes or other moving markers" in message
+    assert message.endswith("prepare the plan again for this mesh and motion (dgwarp prepare, dgwarp.prepare)")
+    assert "vs 240" not in message
+
+
+def test_a_plan_of_another_version_says_what_to_do(tmp_path, mesh, plan):
+    # Issue #27, item 16: a newer version's plan gave no advice (an older one's did).
+    import struct
+
+    for p in (plan, dgwarp.prepare(mesh, ["airfoil"], method="dg-idw")):
+        path = tmp_path / f"{p.method}.plan"
+        p.save(path)
+        data = bytearray(path.read_bytes())
+        data[8:12] = struct.pack("<I", 99)  # the format version, after the 8-byte magic
+        path.write_bytes(bytes(data))
+        with pytest.raises(dgwarp.ParseError, match="99 \\(a newer dgwarp's: run dgwarp prepare again\\)"):
+            dgwarp.load_plan(path, mesh)

@@ -149,6 +149,10 @@ TEST(MotionResolve, DisplacementFileMustCoverExactlyItsMarker) {
     EXPECT_EQ(missing.index(), 5);
     EXPECT_TRUE(contains(missing.what(), "2 of the 4 nodes")) << missing.what();
     EXPECT_TRUE(contains(missing.what(), "first: node 5")) << missing.what();
+    // One missing node: "1 of the 4 nodes ... is not in" (issue #27, item 16: "are not", "first").
+    MeshError one = mesh_error_of([&] { resolve("4,0,0\n6,0,0\n7,0,0\n"); });
+    EXPECT_TRUE(contains(one.what(), "1 of the 4 nodes of marker 'airfoil' is not in")) << one.what();
+    EXPECT_TRUE(contains(one.what(), "(node 5)")) << one.what();
     // A mesh node that is not on the marker (the farfield's node 2), with its line.
     MeshError off = mesh_error_of([&] { resolve("4,0,0\n5,0,0\n6,0,0\n7,0,0\n2,1,1\n"); });
     EXPECT_EQ(off.index(), 2);
