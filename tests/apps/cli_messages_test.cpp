@@ -36,7 +36,7 @@ TEST(CliMessages, AnOutputIsNamedAsWhatItIs) {
     const auto [dir, mesh, motion] = rect_box_files();
     // A file without extension is taken as an OpenFOAM case folder: say so, not "Not a directory".
     write_text(dir / "plain", "x");
-    for (const std::string out : {std::string("/dev/full"), (dir / "plain").string()}) {
+    for (const std::string& out : {std::string("/dev/full"), (dir / "plain").string()}) {
         const CommandResult r =
             run_cli("deform " + quoted(mesh) + " -m " + quoted(motion) + " -o " + dgwarp::test::quoted(out));
         EXPECT_EQ(r.exit_code, 1) << out;
