@@ -97,7 +97,7 @@ void add_case_command(CLI::App& app) {
                     "Folder to write the case's motions to, one motion file per motion (<motion>.json, with its node "
                     "file for per-node motions; docs/MOTION.md): 'dgwarp deform' with one of them does what "
                     "'dgwarp bench' does for that motion");
-    cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~404k), 2 (~826k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
+    cmd->add_option("--size", args->size, "Size of squeezed-sphere: 0 (~202k nodes), 1 (~408k), 2 (~865k); of wing-body: 0 (coarse), 1 (the paper's, ~258k)");
     cmd->add_option("--seed", args->seed, "random: the scene's seed (the same seed and --dim give the same scene)")
         ->check(whole_number_between(0, 1000000000));
     cmd->add_option("--dim", args->dim, "random: 2 or 3 (default 2)")->check(whole_number_between(2, 3));

@@ -82,7 +82,9 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         return [&a, flag = std::move(flag)](const std::string&) { a.given.insert(flag); };
     };
     add_input_options(cmd, a);
-    cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
+    cmd->add_option("--method", a.method,
+                    "Deformation method: " + method_list() + " (README: which to choose), or all (each in turn, "
+                    "one output per method, compared)")
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
     add_threads_option(cmd, a.threads, "all cores");

@@ -34,7 +34,15 @@ double number_option(py::handle value, const std::string& name) {
     if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
                                               py::hasattr(value, "__float__")))
         throw py::type_error(name + " must be a number, got " + py::str(py::type::of(value)).cast<std::string>());
-    const double v = value.cast<double>();
+    double v = 0;
+    try {
+        // float(value): refuses arrays of more than one value
+        v = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+    } catch (py::error_already_set& e) {
+        if (e.matches(PyExc_KeyboardInterrupt) || e.matches(PyExc_MemoryError)) throw;
+        throw py::type_error(name + " must be a number, got " + py::repr(value).cast<std::string>() + " (" +
+                             e.what() + ")");
+    }
     if (!std::isfinite(v)) throw py::value_error(name + " must be finite, got " + py::repr(value).cast<std::string>());
     return v;
 }
@@ -52,6 +60,14 @@ SharedNodeRule shared_nodes_arg(const std::string& rule) {
     if (rule == "moving_wins") return SharedNodeRule::moving_wins;
     if (rule == "static_wins") return SharedNodeRule::static_wins;
     throw py::value_error("shared_nodes must be 'moving_wins' or 'static_wins', got '" + rule + "'");
+}
+
+double shared_tolerance_arg(double tolerance) {
+    // As a motion file's shared_tolerance (a length > 0), with 0 for its default.
+    if (!(std::isfinite(tolerance) && tolerance >= 0))
+        throw py::value_error("shared_tolerance must be a length > 0 (or 0: 1e-9 x the mesh's diagonal), got " +
+                              py::repr(py::float_(tolerance)).cast<std::string>());
+    return tolerance;
 }
 
 const char* shared_nodes_name(SharedNodeRule rule) {

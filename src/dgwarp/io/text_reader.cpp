@@ -29,7 +29,10 @@ std::string_view trim(std::string_view s) {
 
 std::string read_file_text(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), std::string("cannot open file for reading: ") + std::strerror(errno));
+    if (!in) {
+        const int err = errno;
+        throw IoError(path.string(), std::string("cannot open file for reading: ") + std::strerror(err), err);
+    }
     // Opening a folder succeeds; reading it does not (and would look like an empty file).
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
@@ -45,7 +48,10 @@ TextReader TextReader::open(const std::filesystem::path& path) {
 }
 
 TextReader::TextReader(std::string file_name, std::string content)
-    : file_(std::move(file_name)), content_(std::move(content)) {}
+    : file_(std::move(file_name)), content_(std::move(content)) {
+    // A UTF-8 byte order mark (editors on Windows write one) is not part of the first line.
+    if (content_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
+}
 
 void TextReader::set_progress(ProgressFn progress) {
     progress_ = std::move(progress);

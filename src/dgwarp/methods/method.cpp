@@ -74,7 +74,7 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Eleme
 
 StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
                   std::span<double> out, const MethodOptions& options, const ProgressFn& progress) {
-    // DG-IDW and DGM: one pass over the nodes, milliseconds; only the end is reported.
+    // DGM: one pass over the nodes, milliseconds; only the end is reported.
     const auto done = [&](StepReport r) {
         if (progress) progress(1.0);
         return r;
@@ -82,9 +82,9 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
     return std::visit(overloaded{[&](const DgIdwPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_idw(p, points, motion, out)
+                                         deform_dg_idw(p, points, motion, out, progress)
                                              .conflicting_shared_vertices;
-                                     return done(r);
+                                     return r;
                                  },
                                  [&](const DgmPlan& p) {
                                      const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
@@ -109,8 +109,9 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
                                  [&](const DgHarmonicPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_harmonic(p, points, motion, out).conflicting_shared_vertices;
-                                     return done(r);
+                                         deform_dg_harmonic(p, points, motion, out, progress)
+                                             .conflicting_shared_vertices;
+                                     return r;
                                  },
                                  [&](const LaplacianPlan& p) {
                                      StepReport r;

@@ -91,8 +91,8 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Eleme
 /// (MeshError on size mismatch, InvalidResultError when the method cannot
 /// produce a valid result and was told to fail).
 /// `progress` gets the fraction done, ending at 1: per block of volume nodes
-/// (IDW, RBF's evaluation, after its solve), per increment (laplacian); DG-IDW
-/// and DGM, one fast pass, report only the end.
+/// (IDW, DG-IDW, DG-harmonic's pass after its coarse solve, RBF's evaluation
+/// after its solve), per increment (laplacian); DGM reports only the end.
 StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
                   std::span<double> out, const MethodOptions& options = {}, const ProgressFn& progress = {});
 
