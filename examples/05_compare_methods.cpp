@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
         for (Method method : all_methods) {
             const std::string name(method_name(method));
             Clock::time_point start = Clock::now();
-            const Plan plan = prepare(method, mesh.dim, mesh.points, boundary, options);
+            const Plan plan = prepare(method, mesh.dim, mesh.points, mesh.cells, boundary, options);  // cells: laplacian
             const double prepare_ms = 1e3 * seconds_since(start);
             for (double degrees : angles) {
                 const MotionSpec spec = turn_rectangle(degrees);

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench_robustness.hpp"
 #include "bench_tables.hpp"
 #include "commands.hpp"
 #include "dgwarp/cases/child_process.hpp"
@@ -32,6 +33,10 @@ struct BenchArgs {
     int mesh_timeout = 1200;         // seconds per Gmsh run of a 3D case
     double rbf_max_boundary = 20000; // RBF: dense N_b × N_b beyond this is skipped
     double idw_max_work = 1e11;      // IDW: N_volume × N_boundary beyond this is skipped
+    double laplacian_max_nodes = 3e5;  // laplacian: a sparse factorisation per increment beyond this is skipped
+    bool robustness = false;           // the random-scene campaign instead (bench_robustness.hpp)
+    std::string seeds = "1-20";
+    int dim = 2;
 };
 
 std::string machine_name() {
@@ -80,6 +85,8 @@ std::string skip_reason(Method method, const BenchArgs& a, std::size_t nodes, st
     if (method == Method::rbf && dim == 3 && a.quick) return "skipped: --quick (dense 3D solve takes minutes)";
     if (method == Method::idw && nv * nb > a.idw_max_work)
         return "skipped: N_v × N_b = " + std::to_string(static_cast<long long>(nv * nb)) + " (too long for one run)";
+    if (method == Method::laplacian && double(nodes) > a.laplacian_max_nodes)
+        return "skipped: " + std::to_string(nodes) + " nodes (a 3D sparse factorisation per increment)";
     return "";
 }
 
@@ -173,7 +180,7 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
         const MethodOptions& options = v.options;
         try {
             Stopwatch sw;
-            const Plan plan = prepare(method, mesh.dim, mesh.points, b.boundary, options,
+            const Plan plan = prepare(method, mesh.dim, mesh.points, mesh.cells, b.boundary, options,
                                       progress.reporter(what + ": preparing"));
             r.prepare_seconds = sw.lap();
             const StepReport step =
@@ -183,7 +190,8 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             const std::vector<double> q = cell_qualities(deformed, orientation);
             r.quality = summarize_quality(q);
             r.ran = true;
-            if (step.substeps > 1) r.status = "ok (" + std::to_string(step.substeps) + " DGM sub-steps)";
+            if (step.substeps > 1 && method == Method::dgm)
+                r.status = "ok (" + std::to_string(step.substeps) + " DGM sub-steps)";
             if (r.quality.inverted > 0) r.status = "invalid: " + std::to_string(r.quality.inverted) + " inverted";
             if (v.label == method_name(method))  // the paper's methods only
                 write_pictures(a, row, mesh, deformed, q, stem + "-" + v.label, name + ", " + cm.name + ", " + v.label);
@@ -197,6 +205,23 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
 }
 
 void run_bench(const BenchArgs& a) {
+    if (a.robustness) {
+        if (a.quick || !a.cases.empty())
+            throw CLI::ValidationError("--robustness", "runs the random scenes: --quick and --case do not apply");
+        RobustnessArgs r;
+        if (const std::string why = parse_seed_range(a.seeds, r); !why.empty())
+            throw CLI::ValidationError("--seeds", why);
+        r.dim = a.dim;
+        r.quiet = a.quiet;
+        r.markdown = a.markdown;
+        r.json = a.json;
+        r.cache = a.cache;
+        r.pictures = a.pictures;
+        r.commit = a.commit;
+        r.mesh_timeout = a.mesh_timeout;
+        run_robustness(r);
+        return;
+    }
     // The outputs, before hours of work.
     if (!a.markdown.empty()) {
         require_extension("--markdown", a.markdown, {".md"}, "Markdown");
@@ -292,7 +317,16 @@ void add_bench_command(CLI::App& app) {
                                     "empty it when the generators change)");
     cmd->add_option("--mesh-timeout", args->mesh_timeout, "Seconds allowed to Gmsh per 3D mesh (default 1200)")
         ->check(positive_whole_number());
+    CLI::Option* robustness =
+        cmd->add_flag("--robustness", args->robustness,
+                      "Instead of the paper's cases: every method on the random scenes of --seeds, against the "
+                      "laplacian reference (docs/ROBUSTNESS.md); --cache keeps their meshes");
+    cmd->add_option("--seeds", args->seeds, "--robustness: the seeds, A-B (default 1-20)")->needs(robustness);
+    cmd->add_option("--dim", args->dim, "--robustness: 2 or 3 (default 2)")
+        ->check(whole_number_between(2, 3))
+        ->needs(robustness);
     cmd->footer("Examples:\n  dgwarp bench --quick\n"
+                "  dgwarp bench --robustness --dim 2 --seeds 1-200 --markdown docs/ROBUSTNESS-2D.md --cache scenes\n"
                 "  dgwarp bench --markdown docs/RESULTS.md --json results.json --pictures docs/results "
                 "--commit $(git rev-parse --short HEAD)");
     cmd->callback([args] { run_bench(*args); });

@@ -197,7 +197,9 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
             double deform_seconds = 0;
             for (const auto& fr : r.frames) deform_seconds += fr.deform_seconds;
             std::string status = r.error.empty() ? "ok" : r.error;
-            if (f.step.substeps > 1) status += " (" + std::to_string(f.step.substeps) + " DGM sub-steps)";
+            if (f.step.substeps > 1)
+                status += " (" + std::to_string(f.step.substeps) +
+                          (r.planned.method == Method::dgm ? " DGM sub-steps)" : " increments)");
             if (r.failed) status = "failed: " + status;
             std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11.4f  %12.4f  %8lld  %9.4f   ", name.c_str(),
                           milliseconds(r.planned.prepare_seconds).c_str(), milliseconds(deform_seconds).c_str(),
@@ -379,6 +381,9 @@ std::string invalid_result_advice(Method method, const DeformArgs& a) {
             tries.push_back("--method dg-harmonic");
             add(given("--rbf-radius"), "a compact support (--rbf-radius)");
             add(a.untangle, untangle);
+            break;
+        case Method::laplacian:
+            tries.push_back("--method dg-harmonic");
             break;
         case Method::dg_harmonic:
             add(!a.no_untangle, "without --no-untangle (its last resort repairs the cells its step folds)");

@@ -77,7 +77,7 @@ void run_demo(const DemoArgs& a) {
     for (Method m : all_methods) {
         Stopwatch sw;
         try {
-            const Plan plan = prepare(m, mesh.dim, mesh.points, boundary.boundary);
+            const Plan plan = prepare(m, mesh.dim, mesh.points, mesh.cells, boundary.boundary);
             const double prepare_seconds = sw.lap();
             deform(plan, mesh.points, motion, deformed.points);
             const double deform_seconds = sw.lap();

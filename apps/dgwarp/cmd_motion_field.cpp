@@ -61,9 +61,9 @@ void run_motion_field(const MotionFieldArgs& a) {
         check_nearest_folder_writable(file.parent_path());
         check_output(file, inputs);
         if (static_cast<std::size_t>(a.frame) >= frame_count(spec))
-            throw CLI::ValidationError("--frame", "the motion has " + std::to_string(frame_count(spec)) +
-                                                      " frame(s), frames count from 0; got " +
-                                                      std::to_string(a.frame));
+            throw CLI::ValidationError("--frame", "the motion has " + std::to_string(frame_count(spec)) + " frame" +
+                                                      (frame_count(spec) == 1 ? "" : "s") +
+                                                      ", frames count from 0; got " + std::to_string(a.frame));
     });
     if (!csv && (!in.extras.openfoam || !in.extras.openfoam->processors.empty()))
         throw FormatError(a.setup.mesh + ": a pointDisplacement field lists values in the patches' point order, " +
@@ -106,7 +106,15 @@ void add_motion_field_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--frame", args->frame, "The frame of a time series (0-based)")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                // Not CLI11's NonNegativeNumber: its range printed as 0 to 1.8e308, and "1e3" was "Could not convert".
+                int value = 0;
+                if (!CLI::detail::lexical_cast(text, value) || value < 0)
+                    return "expected a frame number, a whole number >= 0 (frames count from 0), got " + text;
+                return {};
+            },
+            "", ""));
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
         "The displacement is the new position minus the old of every boundary node (zero for the fixed ones), "

@@ -52,6 +52,9 @@ nlohmann::json processor_args_json(const DeformArgs& a, const std::string& given
             {"rbf_greedy", s.rbf_greedy},
             {"harmonic_wall_spacing", s.harmonic_wall_spacing},
             {"harmonic_growth", s.harmonic_growth},
+            {"laplacian_increments", s.laplacian_increments},
+            {"laplacian_exponent", s.laplacian_exponent},
+            {"laplacian_model", s.laplacian_model},
             {"output", a.output},
             {"given_output", given_output},
             {"json", a.json},
@@ -82,6 +85,9 @@ DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_
     s.rbf_greedy = j.at("rbf_greedy");
     s.harmonic_wall_spacing = j.at("harmonic_wall_spacing");
     s.harmonic_growth = j.at("harmonic_growth");
+    s.laplacian_increments = j.at("laplacian_increments");
+    s.laplacian_exponent = j.at("laplacian_exponent");
+    s.laplacian_model = j.at("laplacian_model");
     a.output = j.at("output");
     given_output = j.at("given_output");
     a.json = j.at("json");

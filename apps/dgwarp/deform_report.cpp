@@ -75,7 +75,7 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
               << "), mean " << f.ratio.mean << "\n";
     std::cout.unsetf(std::ios::floatfield);
     std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
-              << ", write " << milliseconds(f.write_seconds) << "\n";
+              << (f.output.empty() ? std::string() : ", write " + milliseconds(f.write_seconds)) << "\n";
     if (!f.process_seconds.empty()) {
         std::cout << "processes " << f.process_seconds.size() << ", step on each:";
         for (double s : f.process_seconds) std::cout << " " << milliseconds(s);
@@ -88,14 +88,19 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
                   << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
                   << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
                   << milliseconds(f.untangle_seconds) << "\n";
-    if (f.step.substeps > 1) std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
-                                       << f.step.invalid_graph_simplices << " invalid simplices)\n";
+    if (f.step.substeps > 1 && f.step.invalid_graph_simplices > 0)
+        std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
+                  << f.step.invalid_graph_simplices << " invalid simplices)\n";
+    else if (f.step.substeps > 1)
+        std::cout << "increments " << f.step.substeps << " (each solved on the mesh the earlier ones moved)\n";
 }
 
-void print_frame_line(const FrameResult& f) {
+void print_frame_line(const FrameResult& f, bool timed) {
+    char time[32] = "";
+    if (timed) std::snprintf(time, sizeof time, "t=%-10g ", f.time);  // a frames list has no times
     char line[200];
-    std::snprintf(line, sizeof line, "frame %4zu  t=%-10g min %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
-                  f.frame, f.time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
+    std::snprintf(line, sizeof line, "frame %4zu  %smin %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
+                  f.frame, time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
                   f.ratio.min, milliseconds(f.deform_seconds).c_str());
     std::cout << line << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
 }
@@ -108,7 +113,7 @@ void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::
         print_single_frame(in, f);
         if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";
     } else {
-        print_frame_line(f);
+        print_frame_line(f, in.spec.time.has_value());
     }
 }
 

@@ -74,8 +74,9 @@ nlohmann::json run_json(const Inputs& in, const MethodRun& r);
 
 /// The single-frame table (quality before and after, ratio, times).
 void print_single_frame(const Inputs& in, const FrameResult& f);
-/// One line of a series.
-void print_frame_line(const FrameResult& f);
+/// One line of a series; `timed`: the motion has times (periodic), so the
+/// line shows the frame's (a frames list has none).
+void print_frame_line(const FrameResult& f, bool timed);
 /// A frame's text report: its warnings, then the single-frame table or the frame's line.
 void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,
                  const std::vector<std::string>& step_warning_texts, std::size_t frames, WarningPrinter& warnings);

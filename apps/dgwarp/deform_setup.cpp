@@ -91,7 +91,9 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         return [&a, flag = std::move(flag)](const std::string&) { a.given.insert(flag); };
     };
     add_input_options(cmd, a);
-    cmd->add_option("--method", a.method, "Deformation method: " + method_list() + " (README: which to choose)")
+    cmd->add_option("--method", a.method,
+                    "Deformation method: " + method_list() + " (README: which to choose), or all (each in turn, "
+                    "one output per method, compared)")
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
     add_threads_option(cmd, a.threads, "all cores");
@@ -156,6 +158,23 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str()
         ->check(positive_number())
         ->each(given("--harmonic-growth"));
+    cmd->add_option("--laplacian-increments", a.laplacian_increments,
+                    "laplacian: increments per step, each assembled on the mesh the earlier ones moved "
+                    "(docs/laplacian.md)")
+        ->capture_default_str()
+        ->check(whole_number_between(1, 64))
+        ->each(given("--laplacian-increments"));
+    cmd->add_option("--laplacian-exponent", a.laplacian_exponent,
+                    "laplacian: stiffness exponent e, stiffness (mean volume / cell volume)^e (0 to 4)")
+        ->capture_default_str()
+        ->check(number_between(0, 4))
+        ->each(given("--laplacian-exponent"));
+    cmd->add_option("--laplacian-model", a.laplacian_model,
+                    "laplacian: 'elasticity' (linear elasticity, the components coupled) or 'laplacian' (the "
+                    "displacement Laplacian per component)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"elasticity", "laplacian"}))
+        ->each(given("--laplacian-model"));
 }
 
 std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
@@ -178,6 +197,9 @@ MethodOptions method_options(const SetupArgs& args) {
     o.rbf.greedy_tolerance = args.rbf_greedy;
     o.dg_harmonic.wall_spacing = args.harmonic_wall_spacing;
     o.dg_harmonic.growth = args.harmonic_growth;
+    o.laplacian.increments = args.laplacian_increments;
+    o.laplacian.stiffness_exponent = args.laplacian_exponent;
+    o.laplacian.model = args.laplacian_model == "laplacian" ? LaplacianModel::laplacian : LaplacianModel::elasticity;
     return o;
 }
 
@@ -293,7 +315,7 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         refuse_other_methods_options(in.args, method);
         const std::string phase = "preparing " + std::string(method_name(method));
         progress.phase(phase);
-        p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.boundary.boundary, p.options,
+        p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.mesh.cells, in.boundary.boundary, p.options,
                          progress.reporter(phase));
     }
     p.prepare_seconds = sw.lap();
@@ -362,7 +384,10 @@ nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
             {"rbf_radius", o.rbf.support_radius},
             {"rbf_greedy_tolerance", o.rbf.greedy_tolerance},
             {"harmonic_wall_spacing", o.dg_harmonic.wall_spacing},
-            {"harmonic_growth", o.dg_harmonic.growth}};
+            {"harmonic_growth", o.dg_harmonic.growth},
+            {"laplacian_increments", o.laplacian.increments},
+            {"laplacian_exponent", o.laplacian.stiffness_exponent},
+            {"laplacian_model", o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity"}};
 }
 
 nlohmann::json boundary_json(const Inputs& in) {

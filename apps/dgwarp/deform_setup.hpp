@@ -43,6 +43,9 @@ struct SetupArgs {
     double rbf_greedy = RbfOptions{}.greedy_tolerance;  // 0 = all boundary nodes are centres
     double harmonic_wall_spacing = DgHarmonicOptions{}.wall_spacing;
     double harmonic_growth = DgHarmonicOptions{}.growth;
+    int laplacian_increments = LaplacianOptions{}.increments;
+    double laplacian_exponent = LaplacianOptions{}.stiffness_exponent;
+    std::string laplacian_model = "elasticity";
 };
 
 /// Adds the mesh, --motion and --zone to `cmd` (what read_motion_inputs reads).

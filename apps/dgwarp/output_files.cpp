@@ -36,7 +36,25 @@ void require_extension(const std::string& flag, const std::filesystem::path& out
 }
 
 void require_mesh_extension(const std::string& flag, const std::filesystem::path& output) {
-    if (writes_openfoam(output)) return;
+    if (output.empty())
+        throw CLI::ValidationError(flag, "the output name is empty: give a mesh file (" +
+                                             [] {
+                                                 std::string list;
+                                                 for (const auto& e : writable_extensions())
+                                                     list += (list.empty() ? "" : ", ") + e;
+                                                 return list;
+                                             }() +
+                                             ") or an OpenFOAM case folder");
+    if (writes_openfoam(output)) {
+        // A name without a mesh extension is an OpenFOAM case folder; an existing file
+        // (such as /dev/full) made that "cannot write files into this folder: Not a directory".
+        std::error_code ec;
+        if (std::filesystem::exists(output, ec) && !std::filesystem::is_directory(output, ec))
+            throw CLI::ValidationError(flag, output.string() +
+                                                 " is a file without a mesh extension: such a name is an OpenFOAM "
+                                                 "case folder; name the output with the format's extension");
+        return;
+    }
     require_extension(flag, output, writable_extensions(),
                       "a mesh (the format is chosen by the extension; an OpenFOAM case is a folder, a name ending "
                       "in '/')");

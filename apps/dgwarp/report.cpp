@@ -106,10 +106,11 @@ void check_standard_output() {
     errno = 0;
     std::cout.flush();
     const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    const int err = errno;
     if (lost)
         throw IoError("standard output",
-                      std::string("the report could not be written: ") +
-                          (errno != 0 ? std::strerror(errno) : "write error"));
+                      std::string("the report could not be written: ") + (err != 0 ? std::strerror(err) : "write error"),
+                      err);
 }
 
 }  // namespace dgwarp::cli

@@ -24,6 +24,8 @@ class Error(Exception):
 
 class IoError(Error, OSError):
     filename: str
+    errno: int | None
+    strerror: str | None
 
 class ParseError(Error, ValueError):
     file: str

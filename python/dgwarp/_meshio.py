@@ -54,10 +54,23 @@ def to_meshio(mesh, points=None, point_data=None, cell_data=None):
     point_data: {name: (num_points, ...) array}; cell_data: {name: (num_cells, ...) array} for the
     volume cells (NaN on the markers' blocks).
     """
+    from . import Mesh
+
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"to_meshio: mesh must be a dgwarp.Mesh, got {type(mesh).__name__}")
     meshio = _import_meshio()
-    xs = mesh.points if points is None else np.asarray(points, dtype=np.float64)
+    for name, value in (("point_data", point_data), ("cell_data", cell_data)):
+        if value is not None and not isinstance(value, dict):
+            raise TypeError(f"to_meshio: {name} must be a dict {{name: array}}, got {type(value).__name__}")
+    try:
+        xs = mesh.points if points is None else np.asarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"points must be an array of numbers, got {type(points).__name__} ({e})") from None
     if xs.shape != mesh.points.shape:
         raise ValueError(f"points must have shape {mesh.points.shape}, got {xs.shape}")
+    if not np.isfinite(xs).all():
+        bad = tuple(int(i) for i in np.argwhere(~np.isfinite(xs))[0])
+        raise ValueError(f"points[{bad[0]}, {bad[1]}] is {xs[bad]}; every value must be finite")
     runs = _cell_runs(mesh)
     blocks = [(_TO_MESHIO[t], np.array(a)) for t, a, _ in runs]
     volume_blocks = len(blocks)
@@ -73,8 +86,8 @@ def to_meshio(mesh, points=None, point_data=None, cell_data=None):
     meshio_cell_data = {}
     for name, values in (cell_data or {}).items():
         values = np.asarray(values)
-        if values.shape[0] != mesh.num_cells:
-            raise ValueError(f"cell_data['{name}'] must have {mesh.num_cells} rows, got {values.shape[0]}")
+        if values.ndim == 0 or values.shape[0] != mesh.num_cells:
+            raise ValueError(f"cell_data['{name}'] must have {mesh.num_cells} rows, got shape {values.shape}")
         per_block = [values[s:s + len(a)] for (_, a, s) in runs]
         for i in range(volume_blocks, len(blocks)):
             per_block.append(np.full((len(blocks[i][1]),) + values.shape[1:], np.nan))
@@ -92,6 +105,8 @@ def from_meshio(m):
     """
     from . import Mesh
 
+    if not (hasattr(m, "points") and hasattr(m, "cells")):
+        raise TypeError(f"from_meshio: m must be a meshio.Mesh, got {type(m).__name__}")
     blocks = [(b.type, np.asarray(b.data)) for b in m.cells]
     for t, _ in blocks:
         if t not in _FROM_MESHIO:
@@ -101,10 +116,15 @@ def from_meshio(m):
     if dim not in (2, 3):
         raise ValueError("the meshio mesh has no 2D or 3D cells")
     points = np.asarray(m.points, dtype=np.float64)
+    if points.ndim != 2 or points.shape[1] not in (2, 3):
+        raise ValueError(f"the meshio mesh's points must have shape (n, 2) or (n, 3), got {points.shape}")
     if dim == 2 and points.shape[1] == 3:
         if np.any(points[:, 2] != 0):
             raise ValueError("a mesh of 2D cells with non-zero z coordinates (a surface in 3D) is not a volume mesh")
-        points = np.ascontiguousarray(points[:, :2])
+        points = points[:, :2]
+    # meshio's arrays may be views (its Gmsh 2.2 reader's points are columns of a wider
+    # table): dgwarp takes C-contiguous float64 only, so a copy here (the mesh copies anyway).
+    points = np.ascontiguousarray(points)
     cells = [(_FROM_MESHIO[t], a) for t, a in blocks if _DIMENSION[t] == dim]
     markers = {}
 

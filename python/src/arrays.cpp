@@ -94,7 +94,7 @@ py::array_t<double> float_vector(py::handle obj, const char* name, py::ssize_t s
     return result;
 }
 
-py::array_t<double> output_matrix(py::handle obj, const char* name, py::ssize_t rows, py::ssize_t cols) {
+py::array_t<double> output_matrix(py::handle obj, const char* name, py::ssize_t rows, py::ssize_t cols, bool finite) {
     if (!py::isinstance<py::array>(obj))
         throw py::type_error(std::string(name) + " must be a NumPy array (float64, shape (" + std::to_string(rows) +
                              ", " + std::to_string(cols) + ")), got " + py::str(py::type::of(obj)).cast<std::string>());
@@ -103,7 +103,9 @@ py::array_t<double> output_matrix(py::handle obj, const char* name, py::ssize_t 
         throw py::value_error(std::string(name) + " must have shape " + dims_text(rows, cols, 0) + ", got " +
                               shape_text(a));
     if (!a.writeable()) throw py::value_error(std::string(name) + " is read-only; pass a writeable array");
-    return py::reinterpret_borrow<py::array_t<double>>(a);
+    auto result = py::reinterpret_borrow<py::array_t<double>>(a);
+    if (finite) check_finite(result, name);
+    return result;
 }
 
 std::vector<NodeId> node_ids(py::handle obj, const char* name, py::ssize_t cols, py::ssize_t* rows) {

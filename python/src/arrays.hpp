@@ -35,9 +35,10 @@ pybind11::array_t<double> float_matrix(pybind11::handle obj, const char* name, p
 pybind11::array_t<double> float_vector(pybind11::handle obj, const char* name, pybind11::ssize_t size,
                                        pybind11::ssize_t size_alt = 0);
 
-/// An output array: float64, C-contiguous, writeable, shape (rows, cols).
+/// An output array: float64, C-contiguous, writeable, shape (rows, cols);
+/// with `finite` (an array changed in place), also finite on entry.
 pybind11::array_t<double> output_matrix(pybind11::handle obj, const char* name, pybind11::ssize_t rows,
-                                        pybind11::ssize_t cols);
+                                        pybind11::ssize_t cols, bool finite = false);
 
 /// `obj`, an integer array (any integer dtype, any layout) of shape (any, cols)
 /// (cols = any_rows: any 1D array), copied to node ids; values outside int32 are refused.

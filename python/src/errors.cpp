@@ -1,5 +1,11 @@
 #include "errors.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <tuple>
+#include <utility>
+#include <vector>
+
 #include "dgwarp/core/error.hpp"
 
 namespace py = pybind11;
@@ -12,6 +18,9 @@ namespace {
 struct Classes {
     PyObject* error = nullptr;
     PyObject* io = nullptr;
+    // IoError subclasses that are also the built-in OSError subclass of their
+    // errno, as OSError(errno, ...) itself would be: FileNotFoundError, ...
+    std::vector<std::pair<int, PyObject*>> io_by_errno;
     PyObject* parse = nullptr;
     PyObject* mesh = nullptr;
     PyObject* format = nullptr;
@@ -49,6 +58,21 @@ void bind_errors(py::module_& m) {
     const py::handle error(classes.error);
     classes.io = new_class(m, "IoError", "A file could not be opened, read or written; `filename` names it.",
                            py::make_tuple(error, builtin_os_error));
+    const std::tuple<int, const char*, PyObject*> by_errno[] = {
+        {ENOENT, "FileNotFoundIoError", PyExc_FileNotFoundError},
+        {EACCES, "PermissionIoError", PyExc_PermissionError},
+        {EPERM, "", PyExc_PermissionError},  // the class made for EACCES
+        {EISDIR, "IsADirectoryIoError", PyExc_IsADirectoryError},
+        {ENOTDIR, "NotADirectoryIoError", PyExc_NotADirectoryError},
+    };
+    for (const auto& [number, name, builtin] : by_errno) {
+        PyObject* c = *name ? new_class(m, name,
+                                        "An IoError that is also the built-in OSError subclass of its errno "
+                                        "(`except FileNotFoundError` catches a missing file).",
+                                        py::make_tuple(py::handle(classes.io), py::handle(builtin)))
+                            : classes.io_by_errno.back().second;
+        classes.io_by_errno.emplace_back(number, c);
+    }
     classes.parse = new_class(m, "ParseError",
                               "A file's content is malformed: `file`, `line` (1-based; 0 when unknown), `expected`, "
                               "`found`.",
@@ -82,7 +106,14 @@ void bind_errors(py::module_& m) {
         } catch (const IoError& e) {
             py::dict a;
             a["filename"] = e.file();
-            raise(classes.io, e.what(), a);
+            PyObject* cls = classes.io;
+            if (const int number = e.error_number(); number != 0) {
+                a["errno"] = number;
+                a["strerror"] = std::strerror(number);
+                for (const auto& [n, c] : classes.io_by_errno)
+                    if (n == number) cls = c;
+            }
+            raise(cls, e.what(), a);
         } catch (const ParseError& e) {
             py::dict a;
             a["file"] = e.file();

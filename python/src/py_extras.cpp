@@ -30,14 +30,25 @@ void bind_extras(py::module_& m) {
         "rect-box, naca0012, twisted-bar, squeezed-sphere (sizes 0-2), wing-body (sizes 0-1), and\n"
         "two-element, store. Deterministic. Raises InputError for an unknown name or size.");
     m.def("num_threads", &num_threads, "The number of threads the library's loops use (for calls from this thread).");
-    m.def("set_num_threads", &set_num_threads, py::arg("n"),
-          "Sets the number of threads of the library's loops (clamped to 1 .. 4 x cores, at least 64), for\n"
-          "later calls from the calling Python thread (OpenMP's setting is per thread; OMP_NUM_THREADS\n"
-          "sets every thread's default).");
+    m.def(
+        "set_num_threads",
+        [](int n) {
+            // As the CLI's --threads: a count out of range is refused, not clamped.
+            if (n < 1 || n > max_threads())
+                throw py::value_error("set_num_threads: n must be 1 to " + std::to_string(max_threads()) +
+                                      " (4 per core, and at least 64; this machine has " +
+                                      std::to_string(available_cores()) + " cores), got " + std::to_string(n));
+            set_num_threads(n);
+        },
+        py::arg("n"),
+        "Sets the number of threads of the library's loops, 1 to max (4 x cores, at least 64; ValueError\n"
+        "otherwise), for later calls from the calling Python thread (OpenMP's setting is per thread;\n"
+        "OMP_NUM_THREADS sets every thread's default).");
     m.def(
         "untangle",
         [](const PyMesh& mesh, py::handle points, py::handle fixed, double target) {
-            auto xs = output_matrix(points, "points", static_cast<py::ssize_t>(mesh.mesh.num_points()), mesh.mesh.dim);
+            auto xs = output_matrix(points, "points", static_cast<py::ssize_t>(mesh.mesh.num_points()), mesh.mesh.dim,
+                                    true);
             std::vector<NodeId> fixed_nodes;
             if (fixed.is_none()) {
                 for (const Marker& marker : mesh.mesh.markers) {
@@ -67,7 +78,7 @@ void bind_extras(py::module_& m) {
             d["min_quality_after"] = r.min_quality_after;
             return d;
         },
-        py::arg("mesh"), py::arg("points"), py::arg("fixed") = py::none(), py::arg("target") = 0.0,
+        py::arg("mesh").none(false), py::arg("points"), py::arg("fixed") = py::none(), py::arg("target") = 0.0,
         "Repairs inverted cells of `points` (the mesh's deformed coordinates, float64 (num_points, dim),\n"
         "changed in place) by moving the volume nodes around them (docs/UNTANGLE.md); `fixed` node ids\n"
         "never move (default: every marker's nodes); cells at or below `target` are repaired too.\n"

@@ -178,6 +178,21 @@ std::vector<Field> fields(py::handle obj, const char* what, std::size_t count) {
     return out;
 }
 
+/// Refuses, before anything is written, what write() would do silently:
+/// replace the file the mesh was read from (as the CLI refuses an output that
+/// is its input), or drop point / cell data a format cannot hold.
+void check_write_target(const PyMesh& p, const std::filesystem::path& path, const MeshFields& f) {
+    std::error_code ec;
+    if (!p.source.empty() && std::filesystem::exists(path, ec) && std::filesystem::equivalent(path, p.source, ec))
+        throw py::value_error(path.string() + " is the file this mesh was read from (" + p.source +
+                              "): it would be overwritten; write to another name");
+    const std::string ext = lower_case_extension(path);
+    if ((!f.point_data.empty() || !f.cell_data.empty()) && ext != ".vtu")
+        throw py::value_error(std::string(f.point_data.empty() ? "cell_data" : "point_data") +
+                              ": only .vtu files hold point and cell data; " + path.string() +
+                              " would be written without it (write a .vtu, or leave the data out)");
+}
+
 }  // namespace
 
 std::span<const double> mesh_points_arg(const PyMesh& m, py::handle points, const char* name, py::object& keep) {
@@ -292,6 +307,7 @@ void bind_mesh(py::module_& m) {
                 f.cell_data = fields(cell_data, "cell_data", p.mesh.cells.size());
                 if (gmsh_version != 41 && gmsh_version != 22)
                     throw py::value_error("gmsh_version must be 41 or 22, got " + std::to_string(gmsh_version));
+                check_write_target(p, path, f);
                 WriteOptions options;
                 options.gmsh_version = gmsh_version;
                 options.extras = &p.extras;

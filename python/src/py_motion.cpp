@@ -1,11 +1,15 @@
 #include "py_motion.hpp"
 
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "bindings.hpp"
+#include "dgwarp/core/error.hpp"
 #include "dgwarp/io/motion_file.hpp"
 
 namespace py = pybind11;
@@ -19,6 +23,36 @@ py::object json_default(py::handle obj) {
     if (py::hasattr(obj, "tolist")) return obj.attr("tolist")();
     throw py::type_error("motion: a value of type " + py::str(py::type::of(obj)).cast<std::string>() +
                          " cannot be written as JSON (numbers, strings, lists, dicts and NumPy arrays can)");
+}
+
+/// The place (as motion-file errors name it: "markers.airfoil.translate[0]")
+/// and the text of the first NaN or infinity in a motion dict, or "" when
+/// there is none: JSON cannot hold them, and json.dumps would refuse them
+/// without saying where. Stops at depth 64 (a motion is never that deep; a dict
+/// holding itself is then json.dumps's to refuse).
+std::pair<std::string, std::string> first_non_finite(py::handle obj, const std::string& at, int depth = 0) {
+    if (depth > 64) return {};
+    const auto place = [&](const std::string& sub) { return at.empty() ? sub : at + "." + sub; };
+    if (py::isinstance<py::dict>(obj)) {
+        for (auto item : py::reinterpret_borrow<py::dict>(obj)) {
+            auto found = first_non_finite(item.second, place(py::str(item.first).cast<std::string>()), depth + 1);
+            if (!found.first.empty()) return found;
+        }
+    } else if (py::isinstance<py::array>(obj)) {
+        return first_non_finite(obj.attr("tolist")(), at, depth + 1);
+    } else if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
+        std::size_t i = 0;
+        for (auto item : obj) {
+            auto found = first_non_finite(item, at + "[" + std::to_string(i++) + "]", depth + 1);
+            if (!found.first.empty()) return found;
+        }
+    } else if (py::isinstance<py::float_>(obj) || (py::hasattr(obj, "dtype") && py::hasattr(obj, "item"))) {
+        const py::object value = py::isinstance<py::float_>(obj) ? py::reinterpret_borrow<py::object>(obj)
+                                                                  : obj.attr("item")();
+        if (py::isinstance<py::float_>(value) && !std::isfinite(value.cast<double>()))
+            return {at.empty() ? "the top level" : at, py::str(value).cast<std::string>()};
+    }
+    return {};
 }
 
 bool is_path(py::handle obj) {
@@ -35,6 +69,8 @@ MotionPtr motion_arg(py::handle obj) {
     if (py::isinstance<PyMotion>(obj)) return obj.cast<MotionPtr>();
     auto motion = std::make_shared<PyMotion>();
     if (py::isinstance<py::dict>(obj)) {
+        if (const auto [at, value] = first_non_finite(obj, ""); !at.empty())
+            throw ParseError("motion", 0, "a finite number at " + at, value);
         const std::string text = py::module_::import("json")
                                      .attr("dumps")(obj, py::arg("default") = py::cpp_function(json_default),
                                                     py::arg("allow_nan") = false)

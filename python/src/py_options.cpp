@@ -34,7 +34,15 @@ double number_option(py::handle value, const std::string& name) {
     if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
                                               py::hasattr(value, "__float__")))
         throw py::type_error(name + " must be a number, got " + py::str(py::type::of(value)).cast<std::string>());
-    const double v = value.cast<double>();
+    double v = 0;
+    try {
+        // float(value): refuses arrays of more than one value
+        v = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+    } catch (py::error_already_set& e) {
+        if (e.matches(PyExc_KeyboardInterrupt) || e.matches(PyExc_MemoryError)) throw;
+        throw py::type_error(name + " must be a number, got " + py::repr(value).cast<std::string>() + " (" +
+                             e.what() + ")");
+    }
     if (!std::isfinite(v)) throw py::value_error(name + " must be finite, got " + py::repr(value).cast<std::string>());
     return v;
 }
@@ -52,6 +60,14 @@ SharedNodeRule shared_nodes_arg(const std::string& rule) {
     if (rule == "moving_wins") return SharedNodeRule::moving_wins;
     if (rule == "static_wins") return SharedNodeRule::static_wins;
     throw py::value_error("shared_nodes must be 'moving_wins' or 'static_wins', got '" + rule + "'");
+}
+
+double shared_tolerance_arg(double tolerance) {
+    // As a motion file's shared_tolerance (a length > 0), with 0 for its default.
+    if (!(std::isfinite(tolerance) && tolerance >= 0))
+        throw py::value_error("shared_tolerance must be a length > 0 (or 0: 1e-9 x the mesh's diagonal), got " +
+                              py::repr(py::float_(tolerance)).cast<std::string>());
+    return tolerance;
 }
 
 const char* shared_nodes_name(SharedNodeRule rule) {
@@ -101,6 +117,19 @@ MethodOptions method_options(Method method, const py::kwargs& kwargs, const char
         else if (name == "rbf_greedy") o.rbf.greedy_tolerance = number_option(value, name);
         else if (name == "harmonic_wall_spacing") o.dg_harmonic.wall_spacing = number_option(value, name);
         else if (name == "harmonic_growth") o.dg_harmonic.growth = number_option(value, name);
+        else if (name == "laplacian_increments") {
+            const double n = number_option(value, name);
+            if (!(n >= 1 && n <= 64 && n == std::floor(n)))
+                throw py::value_error("laplacian_increments must be a whole number from 1 to 64, got " +
+                                      py::repr(value).cast<std::string>());
+            o.laplacian.increments = static_cast<int>(n);
+        } else if (name == "laplacian_exponent") o.laplacian.stiffness_exponent = number_option(value, name);
+        else if (name == "laplacian_model") {
+            const std::string m = py::str(value);
+            if (m != "elasticity" && m != "laplacian")
+                throw py::value_error("laplacian_model must be 'elasticity' or 'laplacian', got '" + m + "'");
+            o.laplacian.model = m == "laplacian" ? LaplacianModel::laplacian : LaplacianModel::elasticity;
+        }
         else throw std::logic_error("method option " + name + " is not bound");
     }
     return o;
@@ -127,6 +156,11 @@ py::dict options_dict(Method method, const MethodOptions& o) {
         case Method::dg_harmonic:
             d["harmonic_wall_spacing"] = o.dg_harmonic.wall_spacing;
             d["harmonic_growth"] = o.dg_harmonic.growth;
+            break;
+        case Method::laplacian:
+            d["laplacian_increments"] = o.laplacian.increments;
+            d["laplacian_exponent"] = o.laplacian.stiffness_exponent;
+            d["laplacian_model"] = o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity";
             break;
     }
     return d;

@@ -17,6 +17,10 @@ Method method_arg(const std::string& name);
 SharedNodeRule shared_nodes_arg(const std::string& rule);
 const char* shared_nodes_name(SharedNodeRule rule);
 
+/// A shared_tolerance argument: a length > 0, or 0 for the default (1e-9 x
+/// the mesh's diagonal); ValueError for a negative or non-finite one.
+double shared_tolerance_arg(double tolerance);
+
 /// The method options given as keyword arguments to `function` (for
 /// messages). TypeError for an unknown keyword, ValueError for an option of
 /// another method than `method` (as the CLI refuses it) or a value of the

@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
@@ -51,6 +52,7 @@ std::vector<std::string> marker_list(py::handle obj, const char* what) {
 /// motion classifies it.
 ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle static_markers, SharedNodeRule rule,
                           double tolerance, SharedNodeRule& rule_used) {
+    tolerance = shared_tolerance_arg(tolerance);
     MotionSpec spec;
     if (py::isinstance<PyMotion>(moving) || py::isinstance<py::dict>(moving)) {
         if (!static_markers.is_none())
@@ -103,6 +105,7 @@ void warn_plan(const PyPlan& p) {
 std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle moving, py::handle static_markers,
                                      const std::string& method_name_arg, const std::string& shared_nodes,
                                      double shared_tolerance, py::object progress, const py::kwargs& kwargs) {
+    if (!mesh) throw py::type_error("prepare(): mesh must be a dgwarp.Mesh, got None");
     const Method method = method_arg(method_name_arg);
     auto p = std::make_shared<PyPlan>();
     p->options = method_options(method, kwargs, "prepare");
@@ -111,7 +114,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
                            p->shared_nodes);
     ProgressBridge bridge(progress);
     bridge.run([&] {
-        p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, p->boundary.boundary, p->options,
+        p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells, p->boundary.boundary, p->options,
                           bridge.function());
     });
     warn_plan(*p);
@@ -121,6 +124,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
 std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::shared_ptr<PyMesh> mesh,
                                        py::handle moving, py::handle static_markers, const std::string& shared_nodes,
                                        double shared_tolerance) {
+    if (!mesh) throw py::type_error("load_plan(): mesh must be a dgwarp.Mesh, got None");
     auto p = std::make_shared<PyPlan>();
     p->mesh = mesh;
     {
@@ -177,6 +181,7 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     if (!motion.is_none()) {
         if (py::isinstance<py::array>(motion) && !arrays) {
             boundary_motion = motion_from_arrays(p, motion, py::none(), py::none());  // a translation per node
+            warnings = large_motion_warnings(p.mesh->mesh, p.boundary, boundary_motion, "deform() arrays");
         } else {
             if (arrays)
                 throw py::type_error("deform(): give a motion or translation= / rotation= / center=, not both");
@@ -190,6 +195,8 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     } else {
         if (frame != 0) throw py::value_error("frame is for a motion of several frames, not for arrays");
         boundary_motion = motion_from_arrays(p, translation, rotation, center);
+        // What a motion dict would warn about (as resolve_frame does).
+        warnings = large_motion_warnings(p.mesh->mesh, p.boundary, boundary_motion, "deform() arrays");
     }
     if (!untangle.is_none() && !py::isinstance<py::bool_>(untangle))
         throw py::type_error("untangle must be None (the method's default), True or False");
@@ -245,11 +252,15 @@ void bind_plan(py::module_& m) {
              "The GIL is released while the step runs. Raises InvalidResultError (ValueError) when the\n"
              "method cannot move the mesh validly (DGM without dgm_substep).")
         .def("save", [](const PyPlan& p, const std::filesystem::path& path) {
+                 // As `dgwarp prepare -o`: a plan file's name says what it is.
+                 if (lower_case_extension(path) != ".plan")
+                     throw py::value_error("save: a plan file's name ends in .plan, got " + path.string());
                  py::gil_scoped_release release;
                  save_plan(path, p.plan);
              },
              py::arg("path"),
-             "Writes the plan to `path` (atomically; DG-IDW and DG-harmonic plans). dgwarp.load_plan(path, mesh)\n"
+             "Writes the plan to `path`, a name ending in .plan (atomically; DG-IDW and DG-harmonic plans).\n"
+             "dgwarp.load_plan(path, mesh)\n"
              "reads it back; so does `dgwarp deform --plan`.")
         .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(p.plan))); },
                                "The method's name ('dg-idw', 'dgm', 'idw', 'rbf', 'dg-harmonic').")
@@ -319,7 +330,7 @@ void bind_plan(py::module_& m) {
                    (moving.empty() ? "none" : moving) + ")";
         });
 
-    m.def("prepare", &prepare_plan, py::arg("mesh"), py::arg("moving"), py::arg("static") = py::none(),
+    m.def("prepare", &prepare_plan, py::arg("mesh").none(false), py::arg("moving"), py::arg("static") = py::none(),
           py::arg("method") = "dg-harmonic", py::kw_only(), py::arg("shared_nodes") = "moving_wins",
           py::arg("shared_tolerance") = 0.0, py::arg("progress") = py::none(),
           "Prepares `method`'s plan for `mesh`, once; Plan.deform then moves the mesh every step.\n"
@@ -340,7 +351,7 @@ void bind_plan(py::module_& m) {
           "degenerate boundary, InputError (ValueError) for an option out of range, ValueError for an\n"
           "option of another method, TypeError for an unknown keyword.");
 
-    m.def("load_plan", &load_plan_file, py::arg("path"), py::arg("mesh"), py::arg("moving") = py::none(),
+    m.def("load_plan", &load_plan_file, py::arg("path"), py::arg("mesh").none(false), py::arg("moving") = py::none(),
           py::arg("static") = py::none(), py::kw_only(), py::arg("shared_nodes") = "moving_wins",
           py::arg("shared_tolerance") = 0.0,
           "Reads a plan saved by Plan.save (or `dgwarp prepare`) for `mesh`, checked to be for this mesh\n"

@@ -107,7 +107,7 @@ void bind_quality(py::module_& m) {
             if (reference) r.ratio = moved_array(std::move(ratio));
             return r;
         },
-        py::arg("mesh"), py::arg("points") = py::none(), py::arg("reference") = py::none(),
+        py::arg("mesh").none(false), py::arg("points") = py::none(), py::arg("reference") = py::none(),
         "Knupp's shape quality of every cell of `mesh`, and its summary.\n"
         "  points:    other coordinates of the mesh's nodes to judge, (num_points, dim) float64\n"
         "             (e.g. Plan.deform's result); the mesh itself is then the reference;\n"

@@ -138,3 +138,50 @@ def test_write_refuses_bad_points(tmp_path):
     with pytest.raises(ValueError, match=r"points\[1, 0\] is nan"):
         mesh.write(tmp_path / "x.vtu", points=np.array([[0, 0], [np.nan, 0], [1, 1], [0, 1]]))
     assert not (tmp_path / "x.vtu").exists()
+
+
+def test_write_refuses_to_overwrite_the_file_the_mesh_was_read_from(tmp_path, naca_file):
+    # Issue #27, item 8: as the CLI refuses an output that is its input.
+    victim = tmp_path / "victim.su2"
+    victim.write_bytes(naca_file.read_bytes())
+    mesh = dgwarp.read(victim)
+    before = victim.read_bytes()
+    with pytest.raises(ValueError, match="the file this mesh was read from.*write to another name"):
+        mesh.write(victim, points=mesh.points + 1.0)
+    (tmp_path / "link.su2").symlink_to(victim)
+    with pytest.raises(ValueError, match="read from"):
+        mesh.write(tmp_path / "link.su2")
+    assert victim.read_bytes() == before
+    mesh.write(tmp_path / "other.su2", points=mesh.points + 1.0)  # another name is fine
+
+
+def test_write_refuses_fields_a_format_cannot_hold(tmp_path):
+    # Issue #27, item 8: .su2 and .msh have no point or cell data; they were dropped silently.
+    mesh = square_mesh()
+    for ext in ("su2", "msh"):
+        with pytest.raises(ValueError, match="only .vtu files hold point and cell data"):
+            mesh.write(tmp_path / f"x.{ext}", point_data={"d": np.zeros(4)})
+        with pytest.raises(ValueError, match="cell_data: only .vtu"):
+            mesh.write(tmp_path / f"x.{ext}", cell_data={"q": np.zeros(2)})
+        assert not (tmp_path / f"x.{ext}").exists()
+    mesh.write(tmp_path / "x.vtu", point_data={"d": np.zeros(4)}, cell_data={"q": np.zeros(2)})
+
+
+def test_io_errors_are_the_builtin_oserror_of_their_errno(tmp_path, naca_file):
+    # Issue #27, item 15: IoError was no FileNotFoundError and had no errno.
+    import errno
+
+    missing = tmp_path / "missing.su2"
+    with pytest.raises(FileNotFoundError) as e:
+        dgwarp.read(missing)
+    assert isinstance(e.value, dgwarp.IoError) and e.value.errno == errno.ENOENT
+    assert e.value.strerror == "No such file or directory" and e.value.filename == str(missing)
+    assert str(e.value) == f"{missing}: cannot open file for reading: No such file or directory"
+    with pytest.raises(FileNotFoundError):
+        dgwarp.load_plan(tmp_path / "missing.plan", dgwarp.read(naca_file))
+    with pytest.raises(FileNotFoundError) as e:
+        square_mesh().write(tmp_path / "no_such_folder" / "x.su2")
+    assert e.value.errno == errno.ENOENT
+    (tmp_path / "file").write_text("")
+    with pytest.raises(NotADirectoryError):
+        square_mesh().write(tmp_path / "file" / "x.su2")

@@ -43,3 +43,23 @@ def test_unsupported_cells_are_refused():
     m = meshio.Mesh(np.zeros((6, 2)), [("triangle6", np.arange(6).reshape(1, 6))])
     with pytest.raises(ValueError, match="triangle6"):
         dgwarp.from_meshio(m)
+
+
+def test_3d_points_that_are_not_contiguous(tmp_path, su2_meshes):
+    # Issue #27, item 12: meshio's Gmsh 2.2 reader gives points as columns of a wider table;
+    # only 2D meshes were made contiguous.
+    mesh = dgwarp.read(su2_meshes / "deformation_brick_tets_mesh_brick_tets_ffd.su2")
+    m = dgwarp.to_meshio(mesh)
+    table = np.zeros((mesh.num_points, 4))
+    table[:, :3] = mesh.points
+    m.points = table[:, :3]
+    assert not m.points.flags.c_contiguous
+    back = dgwarp.from_meshio(m)
+    assert back.dim == 3 and np.array_equal(back.points, mesh.points)
+    assert back.marker_names == mesh.marker_names
+    # And through meshio's own Gmsh 2.2 reader.
+    path = tmp_path / "brick.msh"
+    with pytest.warns(dgwarp.DgwarpWarning):  # the SU2 file's FFD box and periodic data stay behind
+        mesh.write(path, gmsh_version=22)
+    back = dgwarp.from_meshio(meshio.read(path))
+    assert np.array_equal(back.points, mesh.points) and set(back.marker_names) == set(mesh.marker_names)

@@ -199,3 +199,78 @@ def test_dgm_invalid_graph_is_an_invalid_result(mesh):
     assert e.value.count > 0 and isinstance(e.value, ValueError)
     substep = dgwarp.prepare(mesh, moving=["airfoil"], method="dgm", dgm_substep=True)
     assert np.isfinite(substep.deform(big)).all()
+
+
+def test_refusals_instead_of_silent_changes(tmp_path, mesh, plan):
+    # Issue #27, item 8: a plan saved under another name than .plan, a negative shared tolerance
+    # and a thread count below 1 were accepted silently (the last became 1).
+    with pytest.raises(ValueError, match=r"ends in \.plan"):
+        plan.save(tmp_path / "x.txt")
+    assert not (tmp_path / "x.txt").exists()
+    plan.save(tmp_path / "x.PLAN")  # the CLI's rule: the extension without regard to case
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="shared_tolerance must be a length > 0"):
+            dgwarp.prepare(mesh, ["airfoil"], shared_tolerance=bad)
+    threads = dgwarp.num_threads()
+    for bad in (0, -1, 10**6):
+        with pytest.raises(ValueError, match="set_num_threads: n must be 1 to"):
+            dgwarp.set_num_threads(bad)
+    assert dgwarp.num_threads() == threads
+
+
+def test_arrays_warn_as_the_same_motion_as_a_dict_does(plan):
+    # Issue #27, item 15: the warnings of large motions came for dicts only.
+    turn = {"markers": {"airfoil": {"rotate": {"angle_deg": 200, "center": [0.25, 0]}}}}
+    with pytest.warns(dgwarp.DgwarpWarning, match="turns by 200 degrees in one step"):
+        plan.deform(turn, untangle=False)
+    with pytest.warns(dgwarp.DgwarpWarning, match="deform\\(\\) arrays: marker 'airfoil' turns by 200 degrees"):
+        plan.deform(rotation=[0, 0, math.radians(200)], center=[0.25, 0], untangle=False)
+    with pytest.warns(dgwarp.DgwarpWarning, match="moves node .* more than the diagonal"):
+        plan.deform(translation=[1000.0, 0], untangle=False)
+    with pytest.warns(dgwarp.DgwarpWarning, match="more than the diagonal"):
+        plan.deform(np.array([1000.0, 0, 0]), untangle=False)
+
+
+def test_a_non_finite_number_in_a_motion_dict_is_named_by_its_place(plan):
+    # Issue #27, item 15: json's "Out of range float values are not JSON compliant" said not where.
+    with pytest.raises(dgwarp.ParseError, match=r"a finite number at markers\.airfoil\.translate\[1\].*nan") as e:
+        plan.deform({"markers": {"airfoil": {"translate": [0.0, float("nan")]}}})
+    assert e.value.file == "motion"
+    with pytest.raises(dgwarp.ParseError, match=r"rotate\.angle_deg.*inf"):
+        dgwarp.Motion({"markers": {"airfoil": {"rotate": {"angle_deg": np.float32("inf"), "center": [0, 0]}}}})
+    with pytest.raises(dgwarp.ParseError, match=r"translate\[0\]"):
+        dgwarp.Motion({"markers": {"airfoil": {"translate": np.array([np.inf, 0.0])}}})
+
+
+def test_the_rbf_error_names_the_python_keyword(su2_meshes):
+    # Issue #27, item 15: it named RbfOptions::support_radius and --rbf-radius only.
+    mesh = dgwarp.read(su2_meshes / "rans_naca0012_n0012_225-65.su2")
+    with pytest.raises(dgwarp.InputError, match="not positive definite") as e:
+        dgwarp.prepare(mesh, ["airfoil"], method="rbf")
+    assert "rbf_radius" in str(e.value) and "RbfOptions" not in str(e.value)
+
+
+def test_a_plan_for_another_motion_says_what_to_do(tmp_path, mesh, plan):
+    # Issue #27, item 16: "(240 boundary nodes vs 240)", and no word of preparing it again.
+    path = tmp_path / "naca.plan"
+    plan.save(path)
+    with pytest.raises(dgwarp.MeshError) as e:
+        dgwarp.load_plan(path, mesh, moving=["farfield"], static=["airfoil"])
+    message = str(e.value)
+    assert "the same number of boundary nodes (240) with other nodes or other moving markers" in message
+    assert message.endswith("prepare the plan again for this mesh and motion (dgwarp prepare, dgwarp.prepare)")
+    assert "vs 240" not in message
+
+
+def test_a_plan_of_another_version_says_what_to_do(tmp_path, mesh, plan):
+    # Issue #27, item 16: a newer version's plan gave no advice (an older one's did).
+    import struct
+
+    for p in (plan, dgwarp.prepare(mesh, ["airfoil"], method="dg-idw")):
+        path = tmp_path / f"{p.method}.plan"
+        p.save(path)
+        data = bytearray(path.read_bytes())
+        data[8:12] = struct.pack("<I", 99)  # the format version, after the 8-byte magic
+        path.write_bytes(bytes(data))
+        with pytest.raises(dgwarp.ParseError, match="99 \\(a newer dgwarp's: run dgwarp prepare again\\)"):
+            dgwarp.load_plan(path, mesh)

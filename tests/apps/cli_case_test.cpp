@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
 
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/io/mesh_io.hpp"
@@ -78,4 +79,36 @@ TEST(CaseMotionsCli, NeedsAnOutputAndReportsAFolderItCannotMake) {
     ASSERT_EQ(only.exit_code, 0) << only.err;
     EXPECT_EQ(only.out.find(".su2"), std::string::npos) << only.out;
     EXPECT_TRUE(std::filesystem::exists(dir / "m" / "rotate-30.json"));
+}
+
+TEST(CaseRandomCli, WritesTheSceneAndItsMotionAndRefusesMisusedFlags) {
+    const auto dir = scratch_dir();
+    const std::string mesh = (dir / "scene.su2").string(), motions = (dir / "scene-motions").string();
+    const CommandResult r = run_cli("case random --seed 2 --dim 2 -o " + mesh + " --motions " + motions);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("seed 2, 2D"), std::string::npos) << r.out;
+    const Mesh m = read_mesh(mesh);
+    EXPECT_EQ(m.markers.back().name, "walls");
+    EXPECT_TRUE(std::filesystem::exists(dir / "scene-motions" / "move.json"));
+    // deform with the written motion runs (the CLI's default method, with its last resort).
+    const CommandResult d = run_cli("deform " + mesh + " -m " + motions + "/move.json -o " +
+                                    (dir / "moved.su2").string() + " --method laplacian -q");
+    EXPECT_TRUE(d.exit_code == 0 || d.exit_code == 3) << d.err;
+    EXPECT_EQ(run_cli("case random -o " + mesh).exit_code, 1);                 // no --seed
+    EXPECT_EQ(run_cli("case naca0012 --seed 3 -o " + mesh).exit_code, 1);      // --seed of another case
+    EXPECT_EQ(run_cli("case random --seed 1 --dim 4 -o " + mesh).exit_code, 1);
+}
+
+TEST(BenchRobustnessCli, SummarisesEveryMethodAgainstTheReference) {
+    const auto dir = scratch_dir();
+    const std::string md = (dir / "robustness.md").string();
+    const CommandResult r = run_cli("bench --robustness --seeds 2-3 --dim 2 -q --markdown " + md);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(md);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (Method m : all_methods) EXPECT_NE(text.find("| " + std::string(method_name(m)) + " |"), std::string::npos) << method_name(m);
+    EXPECT_NE(text.find("| 2 | "), std::string::npos);  // a row per seed
+    EXPECT_NE(text.find("| 3 | "), std::string::npos);
+    EXPECT_EQ(run_cli("bench --robustness --seeds 5-2").exit_code, 1);
+    EXPECT_EQ(run_cli("bench --seeds 1-2").exit_code, 1);  // --seeds needs --robustness
 }

@@ -299,7 +299,7 @@ TEST(CliDeform, AMethodThatFailsInMethodAllMakesTheRunInvalid) {
     EXPECT_NE(r.out.find("failed: RBF: the 480 x 480 interpolation matrix is numerically not positive definite"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find("or greedy reduction (greedy_tolerance, --rbf-greedy)\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("or greedy reduction (rbf_greedy, --rbf-greedy)\n"), std::string::npos) << r.out;
     // --allow-invalid writes inverted meshes, but a method that failed has none: still exit 3.
     EXPECT_EQ(run_cli(base + " --allow-invalid -q").exit_code, 3);
 }

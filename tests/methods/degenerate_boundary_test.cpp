@@ -52,6 +52,7 @@ TEST(DegenerateBoundary, EveryMethodWorksWithBoundaryNodesAtTheSameCoordinates) 
                          false);
         ASSERT_EQ(twice.num_points(), plain.num_points() + 2);
         for (Method method : all_methods) {
+            if (method_needs_cells(method)) continue;  // point sets without cells
             SCOPED_TRACE(std::string(method_name(method)) + " " + std::to_string(dim) + "D");
             std::vector<double> expected(plain.points.size()), out(twice.points.size());
             deform(prepare(method, dim, plain.points, plain.boundary), plain.points, translation(plain, t), expected);
@@ -92,6 +93,7 @@ TEST(DegenerateBoundary, CopiesGivenDifferentMotionsAreCountedAndEachFollowsItsO
     const test::BoxInBox m = with_copy_of(plain, mover, false);
     const Vec3 t{0.02, 0.01, 0};
     for (Method method : all_methods) {
+        if (method_needs_cells(method)) continue;  // point sets without cells
         SCOPED_TRACE(std::string(method_name(method)));
         std::vector<double> out(m.points.size());
         const StepReport report = deform(prepare(method, 2, m.points, m.boundary), m.points, translation(m, t), out);
@@ -109,6 +111,7 @@ TEST(DegenerateBoundary, WithoutAMovingBoundaryNodeNothingMoves) {
     test::BoxInBox m = test::box_in_box(2, 12);
     std::fill(m.boundary.moving.begin(), m.boundary.moving.end(), 0);
     for (Method method : all_methods) {
+        if (method_needs_cells(method)) continue;  // point sets without cells
         SCOPED_TRACE(std::string(method_name(method)));
         std::vector<double> out(m.points.size());
         deform(prepare(method, 2, m.points, m.boundary), m.points, BoundaryMotion(m.boundary.nodes.size()), out);

@@ -149,6 +149,10 @@ TEST(MotionResolve, DisplacementFileMustCoverExactlyItsMarker) {
     EXPECT_EQ(missing.index(), 5);
     EXPECT_TRUE(contains(missing.what(), "2 of the 4 nodes")) << missing.what();
     EXPECT_TRUE(contains(missing.what(), "first: node 5")) << missing.what();
+    // One missing node: "1 of the 4 nodes ... is not in" (issue #27, item 16: "are not", "first").
+    MeshError one = mesh_error_of([&] { resolve("4,0,0\n6,0,0\n7,0,0\n"); });
+    EXPECT_TRUE(contains(one.what(), "1 of the 4 nodes of marker 'airfoil' is not in")) << one.what();
+    EXPECT_TRUE(contains(one.what(), "(node 5)")) << one.what();
     // A mesh node that is not on the marker (the farfield's node 2), with its line.
     MeshError off = mesh_error_of([&] { resolve("4,0,0\n5,0,0\n6,0,0\n7,0,0\n2,1,1\n"); });
     EXPECT_EQ(off.index(), 2);
@@ -396,6 +400,26 @@ TEST(MotionResolve, MotionLargerThanTheMeshIsAWarning) {
     EXPECT_EQ(f.warnings.size(), 1u);
     const MotionSpec small = spec_of(R"({"markers": {"airfoil": {"translate": [5, 0]}}})");
     EXPECT_TRUE(resolve_boundary(mesh, small).warnings.empty());
+}
+
+TEST(MotionResolve, LargeMotionWarningsOfAMotionGivenNodeByNode) {
+    // Issue #27, item 15: the same warnings for per-node motions (Python's arrays) as for a spec.
+    const Mesh mesh = two_squares();
+    const MotionSpec spec = spec_of(R"({"markers": {"airfoil": {"translate": [6, 0]}}})");
+    const ResolvedBoundary rb = resolve_boundary(mesh, spec);
+    const auto f = resolve_frame(mesh, spec, rb, 0);
+    ASSERT_EQ(f.warnings.size(), 1u);
+    const auto w = large_motion_warnings(mesh, rb, f.motion, "arrays");
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].substr(w[0].find(':')), f.warnings[0].substr(f.warnings[0].find(':'))) << w[0];
+    EXPECT_TRUE(w[0].starts_with("arrays: marker 'airfoil' moves node")) << w[0];
+    BoundaryMotion turn(rb.boundary.nodes.size());
+    for (std::size_t b = 0; b < turn.size(); ++b)
+        if (rb.boundary.moving[b]) turn[b].rotation = {0, 0, 190 * deg};
+    const auto t = large_motion_warnings(mesh, rb, turn, "arrays");
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_TRUE(contains(t[0], "marker 'airfoil' turns by 190 degrees in one step")) << t[0];
+    EXPECT_TRUE(large_motion_warnings(mesh, rb, BoundaryMotion(rb.boundary.nodes.size()), "arrays").empty());
 }
 
 TEST(MotionResolve, SpecBuiltInCodeWithNodeTables) {

@@ -74,6 +74,16 @@ Mesh mesh_from_gmsh(int dim, const std::vector<std::pair<std::string, std::vecto
         if (signed_measure(dim, mesh.points, nodes) < 0) std::swap(nodes[0], nodes[1]);
         mesh.cells.push_back(cell, nodes);
     }
+    if (dim == 2) {  // quadrilaterals (boundary layers), counter-clockwise
+        std::vector<std::size_t> quad_tags, quad_nodes;  // fresh: Gmsh 4.8 may leave earlier contents
+        gmsh::model::mesh::getElementsByType(3, quad_tags, quad_nodes, -1);
+        std::vector<NodeId> quad(4);
+        for (std::size_t e = 0; e < quad_tags.size() && quad_nodes.size() == 4 * quad_tags.size(); ++e) {
+            for (std::size_t k = 0; k < 4; ++k) quad[k] = index.at(quad_nodes[e * 4 + k]);
+            if (signed_measure(2, mesh.points, quad) < 0) std::swap(quad[1], quad[3]);
+            mesh.cells.push_back(CellType::quadrilateral, quad);
+        }
+    }
     for (const auto& [name, entities] : markers) {
         Marker m{name, {}};
         for (int entity : entities) {

@@ -17,7 +17,7 @@ namespace dgwarp::detail {
 void with_gmsh(const std::string& what, int threads, const std::function<void()>& build);
 
 /// The mesh of the current Gmsh model as a dgwarp Mesh of dimension `dim`
-/// (2: triangles, z dropped; 3: tetrahedra). Nodes are renumbered 0.. in
+/// (2: triangles and quadrilaterals, z dropped; 3: tetrahedra). Nodes are renumbered 0.. in
 /// Gmsh's node order; every marker (name, curve/surface entity tags) collects
 /// the line (2D) or triangle (3D) elements of its entities. Cells are made
 /// positively oriented (counter-clockwise in 2D, positive volume in 3D).

@@ -16,14 +16,18 @@ public:
 };
 
 /// A file could not be opened, read or written (missing, permissions, disk full).
+/// `error_number` is the operating system's errno when it said why (ENOENT,
+/// EACCES, ...), else 0.
 class IoError : public Error {
 public:
-    IoError(std::string file, const std::string& what)
-        : Error(file + ": " + what), file_(std::move(file)) {}
+    IoError(std::string file, const std::string& what, int error_number = 0)
+        : Error(file + ": " + what), file_(std::move(file)), error_number_(error_number) {}
     const std::string& file() const { return file_; }
+    int error_number() const { return error_number_; }
 
 private:
     std::string file_;
+    int error_number_;
 };
 
 /// A file's content is malformed: names the file, the 1-based line (0 when

@@ -18,12 +18,22 @@ namespace dgwarp {
 
 namespace {
 
-/// A hidden name in the folder of `path`: ".NAME.TAG.PID.RANDOM".
+/// A hidden name in the folder of `path`: ".NAME.TAG.PID.RANDOM", with NAME
+/// cut short (at a UTF-8 character's start) so that it fits in a file name
+/// of 255 bytes (NAME_MAX) whenever `path`'s own name does.
 std::filesystem::path hidden_sibling(const std::filesystem::path& path, const std::string& name, const char* tag) {
     std::random_device rd;
+    const std::string suffix =
+        std::string(".") + tag + "." + std::to_string(::getpid()) + "." + std::to_string(rd() % 1000000);
+    constexpr std::size_t name_max = 255;
+    const std::size_t room = suffix.size() < name_max - 1 ? name_max - 1 - suffix.size() : 0;  // 1: the '.'
+    std::size_t keep = name.size() < room ? name.size() : room;
+    while (keep > 0 && keep < name.size() && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;
+    std::string hidden = ".";
+    hidden.append(name, 0, keep);
+    hidden += suffix;
     std::filesystem::path p = path;
-    p.replace_filename("." + name + "." + tag + "." + std::to_string(::getpid()) + "." +
-                       std::to_string(rd() % 1000000));
+    p.replace_filename(hidden);
     return p;
 }
 
@@ -42,8 +52,8 @@ void create_new_file(const std::filesystem::path& file, const std::filesystem::p
     const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) {
         const int err = errno;
-        throw IoError(target.string(), "cannot create a file in folder '" + folder_of(target).string() +
-                                           "': " + std::strerror(err));
+        throw IoError(target.string(),
+                      "cannot create a file in folder '" + folder_of(target).string() + "': " + std::strerror(err), err);
     }
     ::close(fd);
 }
@@ -121,15 +131,16 @@ void check_folder_writable(const std::filesystem::path& folder) {
     struct stat st {};
     if (::stat(dir.c_str(), &st) != 0) {
         const int err = errno;
-        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(err));
+        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(err), err);
     }
     if (!S_ISDIR(st.st_mode))
-        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(ENOTDIR));
+        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(ENOTDIR),
+                      ENOTDIR);
     const std::filesystem::path probe = hidden_sibling(dir / "x", "dgwarp", "check");
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
     if (fd < 0) {
         const int err = errno;
-        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(err));
+        throw IoError(dir.string(), std::string("cannot write files into this folder: ") + std::strerror(err), err);
     }
     ::close(fd);
     ::unlink(probe.c_str());

@@ -118,7 +118,9 @@ Header read_header(const PlanSource& source, std::vector<std::byte>& raw) {
     std::size_t at = dg_harmonic_magic.size();
     visit_header(h, [&](auto& v) { get(raw, at, v); });
     if (h.version != format_version)
-        fail(path, version_at, "DG-harmonic plan format version " + std::to_string(format_version), std::to_string(h.version));
+        fail(path, version_at, "DG-harmonic plan format version " + std::to_string(format_version),
+             std::to_string(h.version) + (h.version < format_version ? " (an older dgwarp's" : " (a newer dgwarp's") +
+                 ": run dgwarp prepare again)");
     if (h.dim != 2 && h.dim != 3) fail(path, dim_at, "dim 2 or 3", std::to_string(h.dim));
     for (std::size_t i = 0; i < h.options.size(); ++i)
         if (!std::isfinite(h.options[i])) fail(path, options_at + 8 * i, "a finite option", std::to_string(h.options[i]));

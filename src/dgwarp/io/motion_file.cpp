@@ -224,7 +224,8 @@ Table MotionParser::read_cached(std::map<std::string, Table>& cache, const Json&
         // Keep the reason ("No such file or directory", "is not a regular file").
         std::string reason = e.what();
         if (const std::string prefix = e.file() + ": "; reason.starts_with(prefix)) reason.erase(0, prefix.size());
-        throw IoError(e.file(), "cannot read the file named at " + at.path + " in " + file_ + ": " + reason);
+        throw IoError(e.file(), "cannot read the file named at " + at.path + " in " + file_ + ": " + reason,
+                      e.error_number());
     }
 }
 

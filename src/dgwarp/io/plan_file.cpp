@@ -153,7 +153,8 @@ Header read_header(const PlanSource& source, std::array<std::byte, header_bytes>
     });
     if (h.version != format_version)
         fail(path, 8, "plan format version " + std::to_string(format_version),
-             std::to_string(h.version) + (h.version < format_version ? " (an older dgwarp's: run dgwarp prepare again)" : ""));
+             std::to_string(h.version) + (h.version < format_version ? " (an older dgwarp's: run dgwarp prepare again)"
+                                                                      : " (a newer dgwarp's: run dgwarp prepare again)"));
     if (h.dim != 2 && h.dim != 3) fail(path, 12, "dim 2 or 3", std::to_string(h.dim));
     if (h.weighting > static_cast<std::uint32_t>(DgIdwWeighting::continuous))
         fail(path, 16, "weighting 0 (paper) or 1 (continuous)", std::to_string(h.weighting));

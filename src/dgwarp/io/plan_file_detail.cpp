@@ -9,9 +9,12 @@ namespace dgwarp::plan_detail {
 PlanSource file_source(const std::filesystem::path& path, std::ifstream& in) {
     std::error_code ec;
     const std::uint64_t file_size = std::filesystem::file_size(path, ec);
-    if (ec) throw IoError(path.string(), "cannot read plan file: " + ec.message());
+    if (ec) throw IoError(path.string(), "cannot read plan file: " + ec.message(), ec.value());
     in.open(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), std::string("cannot open plan file for reading: ") + std::strerror(errno));
+    if (!in) {
+        const int err = errno;
+        throw IoError(path.string(), std::string("cannot open plan file for reading: ") + std::strerror(err), err);
+    }
     // Arrays are read straight into the plan's vectors: no copy of the whole file.
     return {path.string(), file_size, [&in, name = path.string()](void* to, std::size_t n, std::uint64_t offset) {
                 in.seekg(static_cast<std::streamoff>(offset));

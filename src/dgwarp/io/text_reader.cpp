@@ -35,12 +35,15 @@ std::string read_file_text(const std::filesystem::path& path) {
     std::error_code ec;
     const auto type = std::filesystem::status(path, ec).type();
     if (type == std::filesystem::file_type::directory)
-        throw IoError(path.string(), std::string("cannot read it: ") + std::strerror(EISDIR));
+        throw IoError(path.string(), std::string("cannot read it: ") + std::strerror(EISDIR), EISDIR);
     if (type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found &&
         type != std::filesystem::file_type::none)
         throw IoError(path.string(), "is not a regular file (a device, a pipe or a socket): dgwarp reads files only");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), std::string("cannot open file for reading: ") + std::strerror(errno));
+    if (!in) {
+        const int err = errno;
+        throw IoError(path.string(), std::string("cannot open file for reading: ") + std::strerror(err), err);
+    }
     std::ostringstream buffer;
     buffer << in.rdbuf();
     if (in.bad()) throw IoError(path.string(), std::string("read error: ") + std::strerror(errno));
@@ -52,7 +55,10 @@ TextReader TextReader::open(const std::filesystem::path& path) {
 }
 
 TextReader::TextReader(std::string file_name, std::string content)
-    : file_(std::move(file_name)), content_(std::move(content)) {}
+    : file_(std::move(file_name)), content_(std::move(content)) {
+    // A UTF-8 byte order mark (editors on Windows write one) is not part of the first line.
+    if (content_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
+}
 
 void TextReader::set_progress(ProgressFn progress) {
     progress_ = std::move(progress);

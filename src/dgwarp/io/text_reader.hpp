@@ -22,6 +22,7 @@ public:
     /// Reads the whole file into memory; throws IoError when it cannot be read.
     static TextReader open(const std::filesystem::path& path);
     /// A reader over `content`, reporting errors as coming from `file_name`.
+    /// A UTF-8 byte order mark at its start is skipped.
     TextReader(std::string file_name, std::string content);
 
     /// Reports the bytes consumed / the content's size to `progress` as

@@ -163,9 +163,11 @@ struct DgHarmonicStepReport {
 /// One step: writes every node's new position to `out` (num_points × dim; may
 /// be `points`). Boundary nodes move exactly as apply_motion says (static
 /// ones are copied). Throws MeshError when an array size does not match the
-/// plan or a motion is not finite.
+/// plan or a motion is not finite. `progress` gets the fraction of the
+/// nodes moved by the pass after the coarse solve, per block of 16384.
 DgHarmonicStepReport deform_dg_harmonic(const DgHarmonicPlan& plan, std::span<const double> points,
-                                        const BoundaryMotion& motion, std::span<double> out);
+                                        const BoundaryMotion& motion, std::span<double> out,
+                                        const ProgressFn& progress = {});
 
 /// Bytes held by the plan's arrays.
 std::size_t plan_bytes(const DgHarmonicPlan& plan);

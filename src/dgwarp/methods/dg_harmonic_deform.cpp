@@ -7,6 +7,7 @@
 
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/prefetch.hpp"
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/core/step_kernel.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
@@ -136,7 +137,7 @@ void solve_interior_split(const HarmonicFactors& f, const HarmonicFactors::Syste
 
 template <int Dim>
 void run(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-         std::span<double> out, StepKernel kernel) {
+         std::span<double> out, StepKernel kernel, const ProgressFn& progress) {
     constexpr int K = Layout<Dim>::size;
     std::vector<double> values(static_cast<std::size_t>(plan.num_vertices()) * K);
     using L = Layout<Dim>;
@@ -155,6 +156,7 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
         if (active.rotation) solve_interior_split<K, L::w, K - Dim>(f, rotation, nb, values.data());
     }
     [[maybe_unused]] const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
+    ProgressCounter moved(progress, plan.num_points());  // the pass: the solve above is the small part
     parallel_for_blocks(plan.num_points(), deform_block, [&](std::int64_t begin, std::int64_t end) {
         auto pass = [&]<bool Rotates>() {
 #if defined(__x86_64__)
@@ -168,21 +170,25 @@ void run(const DgHarmonicPlan& plan, std::span<const double> points, const Bound
         };
         if (active.rotation) pass.template operator()<true>();
         else pass.template operator()<false>();
+        moved.add(end - begin);
     });
+    moved.finish();
 }
 
 }  // namespace
 
 DgHarmonicStepReport deform_dg_harmonic(const DgHarmonicPlan& plan, std::span<const double> points,
-                                        const BoundaryMotion& motion, std::span<double> out) {
-    return deform_dg_harmonic_with(plan, points, motion, out, StepKernel::automatic);
+                                        const BoundaryMotion& motion, std::span<double> out,
+                                        const ProgressFn& progress) {
+    return deform_dg_harmonic_with(plan, points, motion, out, StepKernel::automatic, progress);
 }
 
 DgHarmonicStepReport deform_dg_harmonic_with(const DgHarmonicPlan& plan, std::span<const double> points,
-                                             const BoundaryMotion& motion, std::span<double> out, StepKernel kernel) {
+                                             const BoundaryMotion& motion, std::span<double> out, StepKernel kernel,
+                                             const ProgressFn& progress) {
     check_step_arrays("DG-harmonic", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
-    if (plan.dim == 2) run<2>(plan, points, motion, out, kernel);
-    else run<3>(plan, points, motion, out, kernel);
+    if (plan.dim == 2) run<2>(plan, points, motion, out, kernel, progress);
+    else run<3>(plan, points, motion, out, kernel, progress);
     return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
 }
 

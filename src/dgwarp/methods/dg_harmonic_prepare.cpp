@@ -1,7 +1,4 @@
 // prepare_dg_harmonic: coarse points, coarse graph, location, factorised Laplacian.
-#include <metis.h>
-
-#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -21,39 +18,11 @@
 #include "dgwarp/methods/dgm_detail.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
+#include "dgwarp/methods/metis_ordering.hpp"
 
 namespace dgwarp {
 
 namespace {
-
-// A fill-reducing ordering for SimplicialLDLT: METIS's nested dissection
-// (METIS_NodeND with its default, fixed seed: the same permutation on every
-// run and process), AMD when METIS declines (fewer than 3 unknowns, or an
-// error). Eigen's own MetisOrdering prints to stderr and leaves no
-// permutation on an error. `a`: the full symmetric pattern.
-struct MetisOrAmdOrdering {
-    template <class MatrixType>
-    void operator()(const MatrixType& a, Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& pinv) {
-        idx_t n = static_cast<idx_t>(a.cols());
-        std::vector<idx_t> start{0}, adjacent;
-        start.reserve(static_cast<std::size_t>(n) + 1);
-        adjacent.reserve(static_cast<std::size_t>(a.nonZeros()));
-        for (idx_t j = 0; j < n; ++j) {
-            for (typename MatrixType::InnerIterator it(a, j); it; ++it)
-                if (it.index() != j) adjacent.push_back(static_cast<idx_t>(it.index()));
-            start.push_back(static_cast<idx_t>(adjacent.size()));
-        }
-        std::vector<idx_t> perm(static_cast<std::size_t>(n)), iperm(static_cast<std::size_t>(n));
-        if (n < 3 || METIS_NodeND(&n, start.data(), adjacent.data(), nullptr, nullptr, perm.data(), iperm.data()) !=
-                         METIS_OK) {
-            Eigen::AMDOrdering<int>()(a, pinv);
-            return;
-        }
-        // As Eigen's MetisOrdering does: entry iperm[j] (j's new position) is j.
-        pinv.resize(n);
-        for (idx_t j = 0; j < n; ++j) pinv.indices()(iperm[j]) = static_cast<int>(j);
-    }
-};
 
 // The edges of the coarse graph that touch an unknown, as (u, v) with u < v,
 // sorted; first[u] .. first[u + 1] are the edges whose smaller end is u (so

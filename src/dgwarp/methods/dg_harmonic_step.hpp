@@ -10,6 +10,7 @@
 namespace dgwarp {
 
 DgHarmonicStepReport deform_dg_harmonic_with(const DgHarmonicPlan& plan, std::span<const double> points,
-                                             const BoundaryMotion& motion, std::span<double> out, StepKernel kernel);
+                                             const BoundaryMotion& motion, std::span<double> out, StepKernel kernel,
+                                             const ProgressFn& progress = {});
 
 }  // namespace dgwarp

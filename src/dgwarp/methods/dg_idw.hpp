@@ -186,8 +186,9 @@ struct DgIdwStepReport {
 /// value). No allocation; results do not depend on the thread count. Throws
 /// MeshError when an array size does not match the plan or a motion is not
 /// finite (naming the node), Error for bad options in the plan.
+/// `progress` gets the fraction of the nodes moved, per block of 16384.
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
-                              const BoundaryMotion& motion, std::span<double> out);
+                              const BoundaryMotion& motion, std::span<double> out, const ProgressFn& progress = {});
 
 /// Bytes held by the plan's arrays.
 std::size_t plan_bytes(const DgIdwPlan& plan);

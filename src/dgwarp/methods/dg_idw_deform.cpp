@@ -11,6 +11,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/prefetch.hpp"
+#include "dgwarp/core/progress.hpp"
 #include "dgwarp/core/step_kernel.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
@@ -67,8 +68,9 @@ void check_dg_idw_options(const DgIdwOptions& options) {
 }
 
 DgIdwStepReport deform_dg_idw(const DgIdwPlan& plan, std::span<const double> points,
-                              const BoundaryMotion& motion, std::span<double> out) {
-    return deform_dg_idw_bounded(plan, points, motion, out, max_rotation_angle2(plan, motion));
+                              const BoundaryMotion& motion, std::span<double> out, const ProgressFn& progress) {
+    return deform_dg_idw_bounded(plan, points, motion, out, max_rotation_angle2(plan, motion), StepKernel::automatic,
+                                 progress);
 }
 
 double max_rotation_angle2(const DgIdwPlan& plan, const BoundaryMotion& motion) {
@@ -83,7 +85,7 @@ double max_rotation_angle2(const DgIdwPlan& plan, const BoundaryMotion& motion) 
 
 DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const double> points,
                                       const BoundaryMotion& motion, std::span<double> out, double angle2_max,
-                                      StepKernel kernel) {
+                                      StepKernel kernel, const ProgressFn& progress) {
     const DgIdwOptions& options = plan.options;
     check_dg_idw_options(options);
     check_step_arrays("DG-IDW", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
@@ -99,6 +101,7 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
                                                                : 10;
 
     [[maybe_unused]] const bool avx2 = kernel == StepKernel::automatic && cpu_has_avx2();
+    ProgressCounter moved(progress, plan.num_points());
     auto run = [&]<int Dim, int Terms>() {
         // Blocks handed out as threads free up: the cost per node varies along
         // the node order (boundary nodes, simplices with 0 to 4 moving corners).
@@ -108,11 +111,13 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
                 if (avx2) {
                     avx2::deform_range<3, Terms, Isa::avx2>(plan, points.data(), motion.data(), out.data(), sc, begin,
                                                             end);
+                    moved.add(end - begin);
                     return;
                 }
             }
 #endif
             sse2::deform_range<Dim, Terms, Isa::sse2>(plan, points.data(), motion.data(), out.data(), sc, begin, end);
+            moved.add(end - begin);
         });
     };
     auto run_dim = [&]<int Dim>() {
@@ -126,6 +131,7 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
     };
     if (plan.dim == 2) run_dim.template operator()<2>();
     else run_dim.template operator()<3>();
+    moved.finish();
     return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
 }
 

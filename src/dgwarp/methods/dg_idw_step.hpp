@@ -20,6 +20,7 @@ double max_rotation_angle2(const DgIdwPlan& plan, const BoundaryMotion& motion);
 /// nodes read) in place of the one computed from `motion`.
 DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const double> points,
                                       const BoundaryMotion& motion, std::span<double> out, double angle2_max,
-                                      StepKernel kernel = StepKernel::automatic);  // core/step_kernel.hpp
+                                      StepKernel kernel = StepKernel::automatic,  // core/step_kernel.hpp
+                                      const ProgressFn& progress = {});
 
 }  // namespace dgwarp

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 
 namespace dgwarp {
@@ -32,6 +33,7 @@ std::string_view method_name(Method m) {
         case Method::idw: return "idw";
         case Method::rbf: return "rbf";
         case Method::dg_harmonic: return "dg-harmonic";
+        case Method::laplacian: return "laplacian";
     }
     return "?";
 }
@@ -44,6 +46,14 @@ std::optional<Method> method_from_name(std::string_view name) {
 
 Plan prepare(Method method, int dim, std::span<const double> points, const BoundarySet& boundary,
              const MethodOptions& options, const ProgressFn& progress) {
+    if (method == Method::laplacian)
+        throw Error("laplacian solves on the mesh's cells: call prepare with them (prepare(method, dim, points, "
+                    "cells, boundary, options))");
+    return prepare(method, dim, points, ElementList{}, boundary, options, progress);
+}
+
+Plan prepare(Method method, int dim, std::span<const double> points, const ElementList& cells,
+             const BoundarySet& boundary, const MethodOptions& options, const ProgressFn& progress) {
     switch (method) {
         case Method::dg_idw: return prepare_dg_idw(dim, points, boundary, options.dg_idw, progress);
         case Method::dgm: return prepare_dgm(dim, points, boundary, options.dgm, progress);
@@ -54,6 +64,11 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
         }
         case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf, progress);
         case Method::dg_harmonic: return prepare_dg_harmonic(dim, points, boundary, options.dg_harmonic, progress);
+        case Method::laplacian: {
+            Plan plan = prepare_laplacian(dim, points, cells, boundary, options.laplacian);
+            if (progress) progress(1.0);
+            return plan;
+        }
     }
     return {};
 }
@@ -61,7 +76,7 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
 namespace {
 StepReport deform_unchecked(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
                             std::span<double> out, const MethodOptions& options, const ProgressFn& progress) {
-    // DG-IDW and DGM: one pass over the nodes, milliseconds; only the end is reported.
+    // DGM: one pass over the nodes, milliseconds; only the end is reported.
     const auto done = [&](StepReport r) {
         if (progress) progress(1.0);
         return r;
@@ -69,9 +84,9 @@ StepReport deform_unchecked(const Plan& plan, std::span<const double> points, co
     return std::visit(overloaded{[&](const DgIdwPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_idw(p, points, motion, out)
+                                         deform_dg_idw(p, points, motion, out, progress)
                                              .conflicting_shared_vertices;
-                                     return done(r);
+                                     return r;
                                  },
                                  [&](const DgmPlan& p) {
                                      const DgmStepReport d = deform_dgm(p, points, motion, out, options.dgm);
@@ -96,8 +111,14 @@ StepReport deform_unchecked(const Plan& plan, std::span<const double> points, co
                                  [&](const DgHarmonicPlan& p) {
                                      StepReport r;
                                      r.conflicting_shared_vertices =
-                                         deform_dg_harmonic(p, points, motion, out).conflicting_shared_vertices;
-                                     return done(r);
+                                         deform_dg_harmonic(p, points, motion, out, progress)
+                                             .conflicting_shared_vertices;
+                                     return r;
+                                 },
+                                 [&](const LaplacianPlan& p) {
+                                     StepReport r;
+                                     r.substeps = deform_laplacian(p, points, motion, out, progress).increments;
+                                     return r;
                                  }},
                       plan);
 }
@@ -118,7 +139,8 @@ Method plan_method(const Plan& plan) {
                                  [](const DgmPlan&) { return Method::dgm; },
                                  [](const IdwPlan&) { return Method::idw; },
                                  [](const RbfPlan&) { return Method::rbf; },
-                                 [](const DgHarmonicPlan&) { return Method::dg_harmonic; }},
+                                 [](const DgHarmonicPlan&) { return Method::dg_harmonic; },
+                                 [](const LaplacianPlan&) { return Method::laplacian; }},
                       plan);
 }
 
@@ -166,7 +188,8 @@ PlanSummary plan_summary(const Plan& plan) {
                                                      {"graph", p.stats.graph_seconds},
                                                      {"locate", p.stats.locate_seconds},
                                                      {"factorise", p.stats.factor_seconds}};
-                          }},
+                          },
+                          [&](const LaplacianPlan&) {}},
                plan);
     return s;
 }

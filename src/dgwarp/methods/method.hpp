@@ -27,17 +27,23 @@
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/idw.hpp"
+#include "dgwarp/methods/laplacian.hpp"
 #include "dgwarp/methods/rbf.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
 
-enum class Method { dg_idw, dgm, idw, rbf, dg_harmonic };
+enum class Method { dg_idw, dgm, idw, rbf, dg_harmonic, laplacian };
 
 /// All methods, in the order tools list them.
-inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm, Method::idw, Method::rbf, Method::dg_harmonic};
+inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm,         Method::idw,
+                                         Method::rbf,    Method::dg_harmonic, Method::laplacian};
 
-/// "dg-idw", "dgm", "idw", "rbf", "dg-harmonic".
+/// Whether `m` solves on the mesh's cells (prepare needs them): laplacian
+/// only; the others work on points and a boundary set.
+constexpr bool method_needs_cells(Method m) { return m == Method::laplacian; }
+
+/// "dg-idw", "dgm", "idw", "rbf", "dg-harmonic", "laplacian".
 std::string_view method_name(Method m);
 
 /// The method called `name` (as method_name prints it), or nullopt.
@@ -50,15 +56,16 @@ struct MethodOptions {
     IdwOptions idw;
     RbfOptions rbf;  // acts at prepare time (the plan keeps it)
     DgHarmonicOptions dg_harmonic;  // acts at prepare time (the plan keeps it)
+    LaplacianOptions laplacian;     // acts at prepare time (the plan keeps it)
 };
 
 /// A prepared plan of any method.
-using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan, DgHarmonicPlan>;
+using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan, DgHarmonicPlan, LaplacianPlan>;
 
 /// What one step did, whatever the method (fields a method does not use keep their defaults).
 struct StepReport {
     std::int64_t conflicting_shared_vertices = 0;  // DG-IDW, DGM, RBF: shared graph vertices (RBF centres) with differing motions
-    int substeps = 1;                               // DGM: increments used (1 = one step)
+    int substeps = 1;                               // DGM, laplacian: increments used (1 = one step)
     std::int64_t invalid_graph_simplices = 0;       // DGM: invalid simplices of the graph moved in one step
     std::int64_t rbf_centres = 0;                   // RBF: centres used (all boundary nodes without greedy reduction)
     double rbf_boundary_error = 0;                  // RBF: max |s(x_b) - d_b| over the boundary nodes (mesh units)
@@ -66,12 +73,18 @@ struct StepReport {
 
 /// Builds the plan of `method` for the original `points` and `boundary`.
 /// Throws as the method's own prepare does (MeshError for a bad boundary set
-/// or degenerate geometry, Error for bad options).
+/// or degenerate geometry, Error for bad options). Method::laplacian solves
+/// on the mesh's cells: it needs the overload below (here it throws Error).
 /// `progress` gets the fraction done, ending at 1: per block of located volume
 /// nodes (DG-IDW, DGM), per phase of the factorisation (RBF); IDW has nothing
 /// to prepare.
 Plan prepare(Method method, int dim, std::span<const double> points, const BoundarySet& boundary,
              const MethodOptions& options = {}, const ProgressFn& progress = {});
+
+/// The same, with the mesh's `cells` (as Mesh::cells), which only
+/// Method::laplacian uses: the one call for tools that run every method.
+Plan prepare(Method method, int dim, std::span<const double> points, const ElementList& cells,
+             const BoundarySet& boundary, const MethodOptions& options = {}, const ProgressFn& progress = {});
 
 /// One step: writes the new coordinates of every node to `out`
 /// (num_points × dim; may alias `points`). Throws as the method's deform does
@@ -81,8 +94,8 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Bound
 /// (a motion too large for double arithmetic, or options that make the
 /// weights overflow), `out` then unspecified.
 /// `progress` gets the fraction done, ending at 1: per block of volume nodes
-/// (IDW, RBF's evaluation, after its solve); DG-IDW and DGM, one fast pass,
-/// report only the end.
+/// (IDW, DG-IDW, DG-harmonic's pass after its coarse solve, RBF's evaluation
+/// after its solve), per increment (laplacian); DGM reports only the end.
 StepReport deform(const Plan& plan, std::span<const double> points, const BoundaryMotion& motion,
                   std::span<double> out, const MethodOptions& options = {}, const ProgressFn& progress = {});
 

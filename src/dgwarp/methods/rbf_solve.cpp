@@ -45,8 +45,8 @@ std::string not_positive_definite(const RbfPlan& plan) {
     return "RBF: the " + std::to_string(plan.num_centres()) + " x " + std::to_string(plan.num_centres()) +
            " interpolation matrix is numerically not positive definite (support radius " +
            std::to_string(plan.radius) +
-           " is too large for the spacing of the boundary nodes); use a smaller support radius (RbfOptions::support_radius, "
-           "dgwarp --rbf-radius) or greedy reduction (greedy_tolerance, --rbf-greedy)";
+           " is too large for the spacing of the boundary nodes); use a smaller support radius (rbf_radius in "
+           "Python, --rbf-radius in the CLI) or greedy reduction (rbf_greedy, --rbf-greedy)";
 }
 
 // Shares of prepare_rbf's progress: building M ends at matrix_share, the

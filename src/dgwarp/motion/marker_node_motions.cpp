@@ -102,8 +102,9 @@ void check_table(const Mesh& mesh, const NodeTable<Value>& table, const std::vec
             if (lookup.find(node) == npos && missing++ == 0) first_missing = node;
         if (missing > 0)
             throw MeshError(prefix(where) + std::to_string(missing) + " of the " + std::to_string(marker_nodes[m].size()) +
-                                " nodes of marker '" + mesh.markers[m].name + "' are not in " + table_name(table) +
-                                " (first: node " + std::to_string(first_missing) + ")",
+                                " nodes of marker '" + mesh.markers[m].name + (missing == 1 ? "' is" : "' are") +
+                                " not in " + table_name(table) +
+                                (missing == 1 ? " (node " : " (first: node ") + std::to_string(first_missing) + ")",
                             mesh.markers[m].name, first_missing);
     }
 }

@@ -455,6 +455,21 @@ ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const Reso
     return out;
 }
 
+std::vector<std::string> large_motion_warnings(const Mesh& mesh, const ResolvedBoundary& resolved,
+                                               const BoundaryMotion& motion, const std::string& at) {
+    assert(motion.size() == resolved.boundary.nodes.size());
+    const MotionSpec none;
+    const Context c{mesh, none, resolved.context, resolved.boundary};
+    NodeMotions motions(mesh.markers.size());
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
+        if (!c.series.marker_moving[m]) continue;
+        for (const std::int32_t b : c.series.slots[m]) motions[m].push_back(motion[static_cast<std::size_t>(b)]);
+    }
+    std::vector<std::string> warnings;
+    warn_large_motions(c, motions, at, warnings);
+    return warnings;
+}
+
 std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& boundary,
                                           const BoundaryMotion& motion) {
     assert(motion.size() == boundary.nodes.size());

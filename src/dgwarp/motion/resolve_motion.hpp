@@ -85,6 +85,15 @@ struct ResolvedFrame {
 ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const ResolvedBoundary& resolved,
                             std::size_t frame);
 
+/// The warnings resolve_frame gives about large motions (a moving marker
+/// turning by more than 180 degrees, or moving a node farther than the mesh's
+/// bounding-box diagonal), for a `motion` of the boundary nodes given as it
+/// is (one NodeMotion per node of resolved.boundary, e.g. arrays from Python)
+/// rather than resolved from a motion spec; `at` says where, as "motion
+/// (frame 3)" does.
+std::vector<std::string> large_motion_warnings(const Mesh& mesh, const ResolvedBoundary& resolved,
+                                               const BoundaryMotion& motion, const std::string& at);
+
 /// The new positions of the boundary nodes under `motion` (apply_motion per
 /// node): boundary.nodes.size() × mesh.dim, row-major, in BoundarySet order.
 std::vector<double> moved_boundary_points(const Mesh& mesh, const BoundarySet& boundary,

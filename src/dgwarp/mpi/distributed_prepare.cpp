@@ -166,7 +166,13 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
     p.options = options;
     p.gather_all = gathers_all_motions(method);
     p.num_local_points = static_cast<std::int64_t>(global_ids.size());
-    detail::throw_if_any_failed(comm, check_local_input(dim, points, global_ids, boundary), "its mesh part");
+    // laplacian solves on the whole mesh's cells, which no process holds here.
+    detail::throw_if_any_failed(
+        comm,
+        method == Method::laplacian ? std::string("the laplacian reference method runs on one process (it solves on "
+                                                  "the whole mesh's cells); use another method with MPI")
+                                    : check_local_input(dim, points, global_ids, boundary),
+        "its mesh part");
 
     auto t0 = Clock::now();
     const detail::GatheredBoundary g = detail::gather_boundary(comm, dim, points, global_ids, boundary);
