@@ -319,6 +319,20 @@ std::string write_worst_picture(const RobustnessArgs& a, const std::filesystem::
 
 }  // namespace
 
+void check_bench_outputs(const std::string& markdown, const std::string& json, const std::string& pictures,
+                         const std::string& cache) {
+    if (!markdown.empty()) {
+        require_extension("--markdown", markdown, {".md"}, "Markdown");
+        check_output_file(markdown, {});
+    }
+    if (!json.empty()) {
+        require_extension("--json", json, {".json"}, "JSON");
+        check_output_file(json, {});
+    }
+    if (!pictures.empty()) make_output_folder(pictures);
+    if (!cache.empty()) make_output_folder(cache);
+}
+
 std::string parse_seed_range(const std::string& text, RobustnessArgs& args) {
     const auto dash = text.find('-');
     const auto number = [](std::string_view s, int& v) {
@@ -338,16 +352,7 @@ std::string parse_seed_range(const std::string& text, RobustnessArgs& args) {
 }
 
 void run_robustness(const RobustnessArgs& a) {
-    if (!a.markdown.empty()) {
-        require_extension("--markdown", a.markdown, {".md"}, "Markdown");
-        check_output_file(a.markdown, {});
-    }
-    if (!a.json.empty()) {
-        require_extension("--json", a.json, {".json"}, "JSON");
-        check_output_file(a.json, {});
-    }
-    if (!a.pictures.empty()) make_output_folder(a.pictures);
-    if (!a.cache.empty()) make_output_folder(a.cache);
+    check_bench_outputs(a.markdown, a.json, a.pictures, a.cache);
     Stopwatch total;
     use_threads(1);  // one-thread step times; and Gmsh runs in forked children, before any thread starts
     const std::filesystem::path cache =

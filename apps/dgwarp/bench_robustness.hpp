@@ -15,6 +15,11 @@ struct RobustnessArgs {
     double rbf_max_boundary = 6000;  // RBF: a dense N_b × N_b solve beyond this is skipped
 };
 
+/// The outputs of a bench run, checked before its work (the extensions, that
+/// the files can be written, the folders made); "" skips one.
+void check_bench_outputs(const std::string& markdown, const std::string& json, const std::string& pictures,
+                         const std::string& cache);
+
 /// "A-B" or "A" into args.first_seed, args.last_seed; "" when fine, else why not.
 std::string parse_seed_range(const std::string& text, RobustnessArgs& args);
 

@@ -223,16 +223,7 @@ void run_bench(const BenchArgs& a) {
         return;
     }
     // The outputs, before hours of work.
-    if (!a.markdown.empty()) {
-        require_extension("--markdown", a.markdown, {".md"}, "Markdown");
-        check_output_file(a.markdown, {});
-    }
-    if (!a.json.empty()) {
-        require_extension("--json", a.json, {".json"}, "JSON");
-        check_output_file(a.json, {});
-    }
-    if (!a.pictures.empty()) make_output_folder(a.pictures);
-    if (!a.cache.empty()) make_output_folder(a.cache);
+    check_bench_outputs(a.markdown, a.json, a.pictures, a.cache);
     Stopwatch total;
     use_threads(a.threads);
     std::vector<std::string> names = a.cases.empty() ? case_names() : a.cases;

@@ -180,6 +180,9 @@ def prepare(
     rbf_greedy: float = ...,
     harmonic_wall_spacing: float = ...,
     harmonic_growth: float = ...,
+    laplacian_increments: int = ...,
+    laplacian_exponent: float = ...,
+    laplacian_model: str = ...,
 ) -> Plan: ...
 def load_plan(
     path: Path,

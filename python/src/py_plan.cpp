@@ -346,7 +346,8 @@ void bind_plan(py::module_& m) {
           "          dg-idw: a_translation, a_rotation, length_scale (a number or 'auto'),\n"
           "          dg_idw_weights ('paper' or 'continuous'); dgm: dgm_substep (bool); idw:\n"
           "          idw_moving_exponent, idw_static_exponent; rbf: rbf_radius, rbf_greedy;\n"
-          "          dg-harmonic: harmonic_wall_spacing, harmonic_growth.\n"
+          "          dg-harmonic: harmonic_wall_spacing, harmonic_growth; laplacian: laplacian_increments,\n"
+          "          laplacian_exponent, laplacian_model ('elasticity' or 'laplacian').\n"
           "The GIL is released while the plan is built. Raises MeshError for an unknown marker or a\n"
           "degenerate boundary, InputError (ValueError) for an option out of range, ValueError for an\n"
           "option of another method, TypeError for an unknown keyword.");

@@ -91,6 +91,13 @@ BoundaryMotion affine_motion(const GridCase& g, const double (&a)[3][3], const V
     return motion;
 }
 
+// The paper's rectangle turned 90° (case rect-box, motion rotate-90).
+MotionSpec rect_box_turn_90(const Mesh& mesh) {
+    for (const CaseMotion& m : case_motions("rect-box", mesh))
+        if (m.name == "rotate-90") return m.spec;
+    throw Error("rect-box has no motion rotate-90");
+}
+
 std::vector<double> laplacian_step(const GridCase& g, const BoundaryMotion& motion, const LaplacianOptions& o) {
     const LaplacianPlan plan = prepare_laplacian(g.mesh.dim, g.mesh.points, g.mesh.cells, g.boundary, o);
     std::vector<double> out(g.mesh.points.size(), std::nan(""));
@@ -172,11 +179,8 @@ TEST(Laplacian, ValidOnTheRectangleTurned90WhereOnePassMethodsFold) {
     // stiffened elasticity none. The displacement Laplacian shears the cells
     // at the rectangle's corners (and folds them): why elasticity is the default.
     const Mesh mesh = make_case("rect-box");
-    const auto motions = case_motions("rect-box", mesh);
-    const auto it = std::find_if(motions.begin(), motions.end(), [](const CaseMotion& m) { return m.name == "rotate-90"; });
-    ASSERT_NE(it, motions.end());
-    const ResolvedBoundary b = resolve_boundary(mesh, it->spec);
-    const BoundaryMotion motion = resolve_frame(mesh, it->spec, b, 0).motion;
+    const ResolvedBoundary b = resolve_boundary(mesh, rect_box_turn_90(mesh));
+    const BoundaryMotion motion = resolve_frame(mesh, rect_box_turn_90(mesh), b, 0).motion;
     const auto orientation = cell_orientations(mesh);
     Mesh out = mesh;
     MethodOptions auto_length;
@@ -209,11 +213,8 @@ TEST(Laplacian, FoldsAskForMoreIncrements) {
     // The plain Laplacian folds the rectangle turned 90° in 4 increments; with
     // doubling allowed, the step is solved again with more, and says so.
     const Mesh mesh = make_case("rect-box");
-    const auto motions = case_motions("rect-box", mesh);
-    const auto it = std::find_if(motions.begin(), motions.end(), [](const CaseMotion& m) { return m.name == "rotate-90"; });
-    ASSERT_NE(it, motions.end());
-    const ResolvedBoundary b = resolve_boundary(mesh, it->spec);
-    const BoundaryMotion motion = resolve_frame(mesh, it->spec, b, 0).motion;
+    const ResolvedBoundary b = resolve_boundary(mesh, rect_box_turn_90(mesh));
+    const BoundaryMotion motion = resolve_frame(mesh, rect_box_turn_90(mesh), b, 0).motion;
     MethodOptions o;
     o.laplacian.model = LaplacianModel::laplacian;
     o.laplacian.stiffness_exponent = 1;
