@@ -37,11 +37,12 @@ TEST(CasesCli, BenchWritesEveryMotionWithThePapersValues) {
     EXPECT_EQ(j.at("threads"), 1);
     for (const auto& row : j.at("rows")) {
         ASSERT_FALSE(row.at("paper_tables").is_null()) << row.at("motion");
-        // Five methods; DG-IDW with L auto, with continuous weights, and followed by untangle.
-        ASSERT_EQ(row.at("methods").size(), 8u);
+        // Six methods; DG-IDW with L auto, with continuous weights, and followed by untangle.
+        ASSERT_EQ(row.at("methods").size(), 9u);
         EXPECT_EQ(row.at("methods").at(4).at("label"), "dg-harmonic");
-        EXPECT_EQ(row.at("methods").at(6).at("label"), "dg-idw continuous");
-        EXPECT_EQ(row.at("methods").at(7).at("label"), "dg-idw + untangle");
+        EXPECT_EQ(row.at("methods").at(5).at("label"), "laplacian");
+        EXPECT_EQ(row.at("methods").at(7).at("label"), "dg-idw continuous");
+        EXPECT_EQ(row.at("methods").at(8).at("label"), "dg-idw + untangle");
         for (const auto& m : row.at("methods")) {
             if (!m.at("ran")) continue;
             const double mean = m.at("quality").at("mean"), min = m.at("quality").at("min");
