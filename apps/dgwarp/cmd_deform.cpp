@@ -382,8 +382,10 @@ std::string invalid_result_advice(Method method, const DeformArgs& a) {
             add(given("--rbf-radius"), "a compact support (--rbf-radius)");
             add(a.untangle, untangle);
             break;
-        case Method::laplacian:
-            tries.push_back("--method dg-harmonic");
+        case Method::laplacian:  // its increments already doubled up to 64 (docs/laplacian.md)
+            add(given("--laplacian-exponent"), "another stiffness exponent (--laplacian-exponent 1 or 2)");
+            add(given("--laplacian-model"), "the displacement Laplacian (--laplacian-model laplacian)");
+            add(a.untangle, untangle);
             break;
         case Method::dg_harmonic:
             add(!a.no_untangle, "without --no-untangle (its last resort repairs the cells its step folds)");
