@@ -44,6 +44,7 @@ void run_case(const CaseArgs& a) {
     if (random && a.seed < 0) throw CLI::ValidationError("--seed", "the random case needs --seed N (N >= 0)");
     if (!random && a.seed >= 0) throw CLI::ValidationError("--seed", "is for the random case only");
     if (random && a.size != 0) throw CLI::ValidationError("--size", "the random case has no sizes (--seed, --dim)");
+    if (!random && a.dim != 2) throw CLI::ValidationError("--dim", "is for the random case only");
     const int sizes = random ? 1 : case_size_count(a.name);  // the name is checked by the option
     if (a.size < 0 || a.size >= sizes)
         throw CLI::ValidationError("--size", "case '" + a.name + "' has " +

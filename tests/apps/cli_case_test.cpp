@@ -97,6 +97,7 @@ TEST(CaseRandomCli, WritesTheSceneAndItsMotionAndRefusesMisusedFlags) {
     EXPECT_EQ(run_cli("case random -o " + mesh).exit_code, 1);                 // no --seed
     EXPECT_EQ(run_cli("case naca0012 --seed 3 -o " + mesh).exit_code, 1);      // --seed of another case
     EXPECT_EQ(run_cli("case random --seed 1 --dim 4 -o " + mesh).exit_code, 1);
+    EXPECT_EQ(run_cli("case naca0012 --dim 3 -o " + mesh).exit_code, 1);       // --dim of another case
 }
 
 TEST(BenchRobustnessCli, SummarisesEveryMethodAgainstTheReference) {
