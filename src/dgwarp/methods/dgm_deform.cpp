@@ -1,5 +1,6 @@
 // deform_dgm: move the graph, check it, map the volume nodes; sub-step when asked.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "dgwarp/core/error.hpp"
@@ -202,6 +203,15 @@ DgmStepReport deform_dgm(const DgmPlan& plan, std::span<const double> points, co
     const std::vector<std::int32_t> representative = plan_representatives(plan);
     const std::vector<double> from = vertex_positions(dim, representative, graph_positions(plan, points, motion, source, 0.0));
     const std::vector<double> to = vertex_positions(dim, representative, graph_positions(plan, points, motion, source, 1.0));
+    // A non-finite graph vertex (a NaN in the points given) is an invalid graph; the
+    // orientation predicates must not see it.
+    const auto non_finite = std::count_if(from.begin(), from.end(), [](double v) { return !std::isfinite(v); }) +
+                            std::count_if(to.begin(), to.end(), [](double v) { return !std::isfinite(v); });
+    if (non_finite > 0)
+        throw InvalidResultError("DGM: " + std::to_string(non_finite) +
+                                     " coordinates of the Delaunay graph's vertices, before or after the motion, are not "
+                                     "finite (check the points given to the step)",
+                                 non_finite);
     report.invalid_simplices = count_invalid_moved_simplices(dim, plan.simplices, from, to);
     const auto num_simplices = static_cast<std::int64_t>(plan.simplices.size() / (dim + 1));
     if (report.invalid_simplices == 0) {
