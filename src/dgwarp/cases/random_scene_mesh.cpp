@@ -39,6 +39,27 @@ int distance_field(int dim, const std::vector<int>& entities, int samples) {
     return f;
 }
 
+// Meshes the current model with the scene's size field (size_formula of the
+// distances to the bodies' and the box's entities, of dimension scene.dim - 1,
+// sampled `body_samples` / `box_samples` times per entity) and returns it with
+// a marker per body (`body_entities`, in scene.bodies order) and "walls".
+Mesh generate_sized(const RandomScene& scene, const std::vector<std::vector<int>>& body_entities,
+                    const std::vector<int>& walls, int body_samples, int box_samples) {
+    std::vector<int> all_bodies;
+    for (const auto& e : body_entities) all_bodies.insert(all_bodies.end(), e.begin(), e.end());
+    namespace field = gmsh::model::mesh::field;
+    const int from_bodies = distance_field(scene.dim - 1, all_bodies, body_samples);
+    const int from_box = distance_field(scene.dim - 1, walls, box_samples);
+    const int size = field::add("MathEval");
+    field::setString(size, "F", size_formula(scene, from_bodies, from_box));
+    field::setAsBackgroundMesh(size);
+    gmsh::model::mesh::generate(scene.dim);
+    std::vector<std::pair<std::string, std::vector<int>>> markers;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) markers.push_back({scene.bodies[i].marker, body_entities[i]});
+    markers.push_back({"walls", walls});
+    return detail::mesh_from_gmsh(scene.dim, markers);
+}
+
 // The closed polygon resampled at n points evenly spaced along it, starting at its first point.
 std::vector<double> resampled(const std::vector<double>& polygon, int n) {
     const std::size_t m = polygon.size() / 2;
@@ -125,7 +146,7 @@ Mesh mesh_2d(const RandomScene& scene) {
     for (int k = 0; k < 4; ++k) walls.push_back(geo::addLine(c[k], c[(k + 1) % 4]));
     std::vector<int> loops{geo::addCurveLoop(walls)};
     std::vector<std::vector<int>> body_curves;  // the Gmsh curves of each body (its outer ring with layers)
-    std::vector<int> all_body_curves, single_edges;
+    std::vector<int> single_edges;
     std::vector<BodyLayers> layers;
     // First layer 0.3 h_w, ratio 1.2: the layers end near the wall cell size.
     const double first = 0.3 * scene.wall_size, ratio = 1.2;
@@ -156,23 +177,12 @@ Mesh mesh_2d(const RandomScene& scene) {
         }
         loops.push_back(geo::addCurveLoop(curves));
         body_curves.push_back(curves);
-        all_body_curves.insert(all_body_curves.end(), curves.begin(), curves.end());
     }
     geo::addPlaneSurface(loops);
     geo::synchronize();
     for (int line : single_edges) gmsh::model::mesh::setTransfiniteCurve(line, 2);
 
-    namespace field = gmsh::model::mesh::field;
-    const int from_bodies = distance_field(1, all_body_curves, scene.boundary_layers > 0 ? 4 : 400);
-    const int from_box = distance_field(1, walls, 2000);
-    const int size = field::add("MathEval");
-    field::setString(size, "F", size_formula(scene, from_bodies, from_box));
-    field::setAsBackgroundMesh(size);
-    gmsh::model::mesh::generate(2);
-    std::vector<std::pair<std::string, std::vector<int>>> markers;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i) markers.push_back({scene.bodies[i].marker, body_curves[i]});
-    markers.push_back({"walls", walls});
-    Mesh mesh = detail::mesh_from_gmsh(2, markers);
+    Mesh mesh = generate_sized(scene, body_curves, walls, scene.boundary_layers > 0 ? 4 : 400, 2000);
     if (layers.empty()) return mesh;
 
     // The layers: ring `layers` is Gmsh's (its nodes found by their coordinates,
@@ -307,7 +317,9 @@ Mesh mesh_3d(const RandomScene& scene) {
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
     std::vector<std::vector<int>> body_faces(scene.bodies.size());
-    std::vector<int> walls, body_surfaces;
+    std::vector<int> walls;
+    std::vector<std::vector<double>> outlines;  // per body, points on its surface: which body a surface is
+    for (const SceneBody& b : scene.bodies) outlines.push_back(body_outline(b, 3, 2000));
     for (const auto& [dim, tag] : surfaces) {
         std::vector<double> lo, hi, xyz;
         gmsh::model::getParametrizationBounds(2, tag, lo, hi);
@@ -326,7 +338,7 @@ Mesh mesh_3d(const RandomScene& scene) {
         std::size_t best = 0;
         double best_distance = 1e300;
         for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            const std::vector<double> o = body_outline(scene.bodies[i], 3, 2000);
+            const std::vector<double>& o = outlines[i];
             for (std::size_t k = 0; k < o.size(); k += 3) {
                 const double d = std::hypot(o[k] - xyz[0], o[k + 1] - xyz[1], o[k + 2] - xyz[2]);
                 if (d < best_distance) {
@@ -336,22 +348,12 @@ Mesh mesh_3d(const RandomScene& scene) {
             }
         }
         body_faces[best].push_back(tag);
-        body_surfaces.push_back(tag);
     }
     for (std::size_t i = 0; i < body_faces.size(); ++i)
         if (body_faces[i].empty())
             throw MeshError("random scene: " + scene.bodies[i].marker + " has no surface (OCC gave an unexpected model)");
 
-    namespace field = gmsh::model::mesh::field;
-    const int from_bodies = distance_field(2, body_surfaces, 100), from_box = distance_field(2, walls, 100);
-    const int size = field::add("MathEval");
-    field::setString(size, "F", size_formula(scene, from_bodies, from_box));
-    field::setAsBackgroundMesh(size);
-    gmsh::model::mesh::generate(3);
-    std::vector<std::pair<std::string, std::vector<int>>> markers;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i) markers.push_back({scene.bodies[i].marker, body_faces[i]});
-    markers.push_back({"walls", walls});
-    return detail::mesh_from_gmsh(3, markers);
+    return generate_sized(scene, body_faces, walls, 100, 100);
 }
 
 }  // namespace
