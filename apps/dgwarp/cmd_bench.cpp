@@ -85,6 +85,8 @@ std::string skip_reason(Method method, const BenchArgs& a, std::size_t nodes, st
     if (method == Method::rbf && dim == 3 && a.quick) return "skipped: --quick (dense 3D solve takes minutes)";
     if (method == Method::idw && nv * nb > a.idw_max_work)
         return "skipped: N_v × N_b = " + std::to_string(static_cast<long long>(nv * nb)) + " (too long for one run)";
+    if (method == Method::laplacian && dim == 3 && a.quick)
+        return "skipped: --quick (a 3D sparse factorisation per increment takes minutes)";
     if (method == Method::laplacian && double(nodes) > a.laplacian_max_nodes)
         return "skipped: " + std::to_string(nodes) + " nodes (a 3D sparse factorisation per increment)";
     return "";
@@ -296,7 +298,7 @@ void add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd = app.add_subcommand("bench", "Run the paper's test cases with every method; print our figures "
                                                 "beside the paper's (Tables 1-10)");
-    cmd->add_flag("--quick", args->quick, "Small sizes only, no 3D RBF (a few minutes)");
+    cmd->add_flag("--quick", args->quick, "Small sizes only, no 3D RBF or laplacian (a few minutes)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (the --markdown and --json files are written)");
     add_threads_option(cmd, args->threads, "1, as the paper's single-core figures");
     cmd->add_option("--case", args->cases, "Run only these cases (repeatable)")->check(one_of(case_names(), "a case"));
