@@ -41,6 +41,7 @@ struct SceneRun {
     double near_wall_ratio = 0;      // median over the cells touching a body of quality / original quality
     double prepare_seconds = 0, step_seconds = 0;
     std::int64_t worst_cell = -1;
+    DgHarmonicGuardReport guard;     // dg-harmonic: its guard's measure and whether laplacian's result was kept
     bool valid() const { return ran && inverted == 0; }
 };
 
@@ -119,7 +120,7 @@ SceneResult run_scene(const RobustnessArgs& a, const RandomScene& scene, const M
             Stopwatch sw;
             const Plan plan = prepare(m, mesh.dim, mesh.points, mesh.cells, b.boundary);
             r.prepare_seconds = sw.lap();
-            deform(plan, mesh.points, motion, deformed.points);
+            r.guard = deform(plan, mesh.points, motion, deformed.points).guard;
             r.step_seconds = sw.lap();
             const std::vector<double> q = cell_qualities(deformed, orientation);
             const QualitySummary summary = summarize_quality(q);
@@ -167,6 +168,7 @@ struct MethodSummary {
     double ratio_median = 0, ratio_p5 = 0, ratio_worst = 0;  // min quality / laplacian's, where laplacian is valid
     std::int64_t worst_seed = -1;                            // the seed of ratio_worst (or of a fold)
     double near_wall_median = 0, step_median_ms = 0;
+    int redone = 0;  // dg-harmonic: scenes where its guard kept laplacian's result
 };
 
 std::vector<MethodSummary> summarize(const std::vector<SceneResult>& scenes) {
@@ -183,6 +185,7 @@ std::vector<MethodSummary> summarize(const std::vector<SceneResult>& scenes) {
             if (!r.ran) continue;
             ++s.ran;
             s.valid += r.valid();
+            s.redone += r.guard.kept_redo;
             near.push_back(r.near_wall_ratio);
             steps.push_back(1e3 * r.step_seconds);
             if (!ref.valid() || !(ref.min_quality > 0)) continue;
@@ -208,13 +211,15 @@ std::vector<MethodSummary> summarize(const std::vector<SceneResult>& scenes) {
 std::string summary_markdown(const std::vector<MethodSummary>& summary) {
     std::ostringstream o;
     o << "| method | ran | valid | valid where laplacian is | min / laplacian's: median | 5th percentile | worst "
-         "(seed) | near-wall ratio, median | step ms, median |\n|---|---|---|---|---|---|---|---|---|\n";
+         "(seed) | near-wall ratio, median | step ms, median | laplacian's result kept |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const MethodSummary& s : summary)
         o << "| " << method_name(s.method) << " | " << s.ran << " | " << s.valid << " | "
           << s.valid_where_reference_valid << " of " << s.reference_valid << " | " << fixed(s.ratio_median) << " | "
           << fixed(s.ratio_p5) << " | " << fixed(s.ratio_worst)
           << (s.worst_seed >= 0 ? " (" + std::to_string(s.worst_seed) + ")" : "") << " | "
-          << fixed(s.near_wall_median) << " | " << fixed(s.step_median_ms, 2) << " |\n";
+          << fixed(s.near_wall_median) << " | " << fixed(s.step_median_ms, 2) << " | "
+          << (s.method == Method::dg_harmonic ? std::to_string(s.redone) : "") << " |\n";
     return o.str();
 }
 
@@ -238,6 +243,7 @@ std::string scenes_markdown(const std::vector<SceneResult>& scenes) {
             if (!r.ran) o << (r.status.rfind("skipped", 0) == 0 ? "skipped" : "failed");
             else if (r.inverted) o << "**" << r.inverted << " inv.**";
             else o << fixed(r.min_quality);
+            if (r.guard.kept_redo) o << " (L)";
             o << " |";
         }
         o << " " << s.description << " |\n";
@@ -264,6 +270,12 @@ nlohmann::json robustness_json(const RobustnessArgs& a, const std::vector<SceneR
                 rj["near_wall_ratio"] = std::isnan(r.near_wall_ratio) ? nlohmann::json() : nlohmann::json(r.near_wall_ratio);
                 rj["prepare_seconds"] = r.prepare_seconds;
                 rj["step_seconds"] = r.step_seconds;
+                if (r.guard.checked)
+                    rj["guard"] = {{"one_pass_min_quality", r.guard.one_pass.min_quality},
+                                   {"one_pass_inverted", r.guard.one_pass.inverted},
+                                   {"redone", r.guard.redone},
+                                   {"kept_redo", r.guard.kept_redo},
+                                   {"increments", r.guard.increments}};
             }
             sj["methods"].push_back(rj);
         }
@@ -281,7 +293,8 @@ nlohmann::json robustness_json(const RobustnessArgs& a, const std::vector<SceneR
                                 {"ratio_worst", num(s.ratio_worst)},
                                 {"worst_seed", s.worst_seed},
                                 {"near_wall_median", num(s.near_wall_median)},
-                                {"step_median_ms", num(s.step_median_ms)}});
+                                {"step_median_ms", num(s.step_median_ms)},
+                                {"laplacian_kept", s.redone}});
     }
     return j;
 }

@@ -194,6 +194,8 @@ BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const
             r.ran = true;
             if (step.substeps > 1 && method == Method::dgm)
                 r.status = "ok (" + std::to_string(step.substeps) + " DGM sub-steps)";
+            if (step.guard.kept_redo)
+                r.status = "ok (redone by laplacian, " + std::to_string(step.substeps) + " increments)";
             if (r.quality.inverted > 0) r.status = "invalid: " + std::to_string(r.quality.inverted) + " inverted";
             if (v.label == method_name(method))  // the paper's methods only
                 write_pictures(a, row, mesh, deformed, q, stem + "-" + v.label, name + ", " + cm.name + ", " + v.label);

@@ -104,6 +104,13 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
     return false;
 }
 
+/// The run's options for a frame: DG-harmonic's guard off when the boundary
+/// motion itself turns `folded_faces` faces over (no redo can mend that).
+MethodOptions guard_options(MethodOptions options, std::int64_t folded_faces) {
+    if (folded_faces > 0) options.dg_harmonic.redo_below = -1;
+    return options;
+}
+
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
                      const std::vector<std::string>& foam_times, ProgressLine& progress, WarningPrinter& warnings) {
@@ -138,8 +145,10 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             if (run.planned.distributed)
                 f.step = mpi_deform(*run.planned.distributed, motion.motion, deformed.points, f.process_seconds);
             else
-                f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points, run.planned.options,
-                                progress.reporter(phase));
+                // A frame whose boundary motion turns faces over (warned): no volume
+                // method mends their cells, so DG-harmonic's guard does not try.
+                f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points,
+                                guard_options(run.planned.options, motion.folded_faces), progress.reporter(phase));
         } catch (const InvalidResultError& e) {
             if (!several) throw;
             run.error = e.what();
@@ -197,7 +206,9 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
             double deform_seconds = 0;
             for (const auto& fr : r.frames) deform_seconds += fr.deform_seconds;
             std::string status = r.error.empty() ? "ok" : r.error;
-            if (f.step.substeps > 1)
+            if (f.step.guard.kept_redo)
+                status += " (redone by laplacian, " + std::to_string(f.step.substeps) + " increments)";
+            else if (f.step.substeps > 1)
                 status += " (" + std::to_string(f.step.substeps) +
                           (r.planned.method == Method::dgm ? " DGM sub-steps)" : " increments)");
             if (r.failed) status = "failed: " + status;

@@ -52,6 +52,7 @@ nlohmann::json processor_args_json(const DeformArgs& a, const std::string& given
             {"rbf_greedy", s.rbf_greedy},
             {"harmonic_wall_spacing", s.harmonic_wall_spacing},
             {"harmonic_growth", s.harmonic_growth},
+            {"harmonic_redo_below", s.harmonic_redo_below},
             {"laplacian_increments", s.laplacian_increments},
             {"laplacian_exponent", s.laplacian_exponent},
             {"laplacian_model", s.laplacian_model},
@@ -85,6 +86,7 @@ DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_
     s.rbf_greedy = j.at("rbf_greedy");
     s.harmonic_wall_spacing = j.at("harmonic_wall_spacing");
     s.harmonic_growth = j.at("harmonic_growth");
+    s.harmonic_redo_below = j.at("harmonic_redo_below");
     s.laplacian_increments = j.at("laplacian_increments");
     s.laplacian_exponent = j.at("laplacian_exponent");
     s.laplacian_model = j.at("laplacian_model");

@@ -25,6 +25,23 @@ nlohmann::json untangle_json(const UntangleReport& u) {
             {"min_quality_after", u.min_quality_after}};
 }
 
+nlohmann::json guard_json(const DgHarmonicGuardReport& g) {
+    if (!g.checked) return nullptr;
+    const auto measure = [](const GuardMeasure& m) {
+        return nlohmann::json{
+            {"min_quality", m.min_quality}, {"inverted", m.inverted}, {"inverted_on_boundary", m.inverted_on_boundary}};
+    };
+    return {{"one_pass", measure(g.one_pass)},
+            {"bar", g.bar},
+            {"redone", g.redone},
+            {"boundary_folds", g.boundary_folds},
+            {"redo", g.redone && g.redo_error.empty() ? measure(g.redo) : nlohmann::json(nullptr)},
+            {"redo_error", g.redo_error.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.redo_error)},
+            {"increments", g.redone ? nlohmann::json(g.increments) : nlohmann::json(nullptr)},
+            {"kept_redo", g.kept_redo},
+            {"redo_seconds", g.redo_seconds}};
+}
+
 nlohmann::json frame_json(const FrameResult& f) {
     nlohmann::json j = {{"frame", f.frame},
             {"time", f.time},
@@ -40,6 +57,7 @@ nlohmann::json frame_json(const FrameResult& f) {
             {"rbf_boundary_error", f.step.rbf_boundary_error},
             {"untangle", f.untangled ? untangle_json(*f.untangled) : nlohmann::json(nullptr)},
             {"last_resort", f.last_resort},
+            {"guard", guard_json(f.step.guard)},
             {"seconds",
              {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
               {"write", f.write_seconds}}},
@@ -88,10 +106,11 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
                   << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
                   << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
                   << milliseconds(f.untangle_seconds) << "\n";
+    if (f.step.guard.checked) std::cout << "guard     " << guard_summary(f.step.guard) << "\n";
     if (f.step.substeps > 1 && f.step.invalid_graph_simplices > 0)
         std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
                   << f.step.invalid_graph_simplices << " invalid simplices)\n";
-    else if (f.step.substeps > 1)
+    else if (f.step.substeps > 1 && !f.step.guard.checked)
         std::cout << "increments " << f.step.substeps << " (each solved on the mesh the earlier ones moved)\n";
 }
 
@@ -102,7 +121,8 @@ void print_frame_line(const FrameResult& f, bool timed) {
     std::snprintf(line, sizeof line, "frame %4zu  %smin %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
                   f.frame, time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
                   f.ratio.min, milliseconds(f.deform_seconds).c_str());
-    std::cout << line << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
+    std::cout << line << (f.step.guard.kept_redo ? "  (laplacian, " + std::to_string(f.step.substeps) + " increments)" : "")
+              << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
 }
 
 void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,

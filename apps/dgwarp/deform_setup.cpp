@@ -158,6 +158,13 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str()
         ->check(positive_number())
         ->each(given("--harmonic-growth"));
+    cmd->add_option("--harmonic-redo-below", a.harmonic_redo_below,
+                    "DG-harmonic's guard: a step whose minimum quality falls below this fraction of the original "
+                    "mesh's, or that inverts a cell, is solved again by laplacian and the better result kept (0: only "
+                    "when a cell inverts; -1: never; docs/dg-harmonic.md)")
+        ->capture_default_str()
+        ->check(number_between(-1, 0.99))
+        ->each(given("--harmonic-redo-below"));
     cmd->add_option("--laplacian-increments", a.laplacian_increments,
                     "laplacian: increments per step, each assembled on the mesh the earlier ones moved "
                     "(docs/laplacian.md)")
@@ -197,6 +204,7 @@ MethodOptions method_options(const SetupArgs& args) {
     o.rbf.greedy_tolerance = args.rbf_greedy;
     o.dg_harmonic.wall_spacing = args.harmonic_wall_spacing;
     o.dg_harmonic.growth = args.harmonic_growth;
+    o.dg_harmonic.redo_below = args.harmonic_redo_below;
     o.laplacian.increments = args.laplacian_increments;
     o.laplacian.stiffness_exponent = args.laplacian_exponent;
     o.laplacian.model = args.laplacian_model == "laplacian" ? LaplacianModel::laplacian : LaplacianModel::elasticity;
@@ -308,7 +316,13 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
             refuse_conflict(in.args, plan_file, "--harmonic-growth", asked.dg_harmonic.growth != o.growth,
                             number_text(o.growth));
             p.options.dg_harmonic = o;
+            // The guard acts at step time: the run's value, and the mesh's cells it measures.
+            p.options.dg_harmonic.redo_below = asked.dg_harmonic.redo_below;
         }
+        // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
+        if (auto* h = std::get_if<DgHarmonicPlan>(&loaded); h && !in.mesh.cells.empty())
+            h->guard = make_dg_harmonic_guard(in.mesh.dim, in.mesh.points, in.mesh.cells, in.boundary.boundary,
+                                              guard_laplacian_options(p.options.laplacian, p.options.dg_harmonic));
         refuse_other_methods_options(in.args, p.method);
         p.plan = std::move(loaded);
     } else {
@@ -385,6 +399,7 @@ nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
             {"rbf_greedy_tolerance", o.rbf.greedy_tolerance},
             {"harmonic_wall_spacing", o.dg_harmonic.wall_spacing},
             {"harmonic_growth", o.dg_harmonic.growth},
+            {"harmonic_redo_below", o.dg_harmonic.redo_below},
             {"laplacian_increments", o.laplacian.increments},
             {"laplacian_exponent", o.laplacian.stiffness_exponent},
             {"laplacian_model", o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity"}};

@@ -43,6 +43,7 @@ struct SetupArgs {
     double rbf_greedy = RbfOptions{}.greedy_tolerance;  // 0 = all boundary nodes are centres
     double harmonic_wall_spacing = DgHarmonicOptions{}.wall_spacing;
     double harmonic_growth = DgHarmonicOptions{}.growth;
+    double harmonic_redo_below = DgHarmonicOptions{}.redo_below;
     int laplacian_increments = LaplacianOptions{}.increments;
     double laplacian_exponent = LaplacianOptions{}.stiffness_exponent;
     std::string laplacian_model = "elasticity";

@@ -180,6 +180,7 @@ def prepare(
     rbf_greedy: float = ...,
     harmonic_wall_spacing: float = ...,
     harmonic_growth: float = ...,
+    harmonic_redo_below: float = ...,
     laplacian_increments: int = ...,
     laplacian_exponent: float = ...,
     laplacian_model: str = ...,

@@ -117,6 +117,7 @@ MethodOptions method_options(Method method, const py::kwargs& kwargs, const char
         else if (name == "rbf_greedy") o.rbf.greedy_tolerance = number_option(value, name);
         else if (name == "harmonic_wall_spacing") o.dg_harmonic.wall_spacing = number_option(value, name);
         else if (name == "harmonic_growth") o.dg_harmonic.growth = number_option(value, name);
+        else if (name == "harmonic_redo_below") o.dg_harmonic.redo_below = number_option(value, name);
         else if (name == "laplacian_increments") {
             const double n = number_option(value, name);
             if (!(n >= 1 && n <= 64 && n == std::floor(n)))
@@ -156,6 +157,7 @@ py::dict options_dict(Method method, const MethodOptions& o) {
         case Method::dg_harmonic:
             d["harmonic_wall_spacing"] = o.dg_harmonic.wall_spacing;
             d["harmonic_growth"] = o.dg_harmonic.growth;
+            d["harmonic_redo_below"] = o.dg_harmonic.redo_below;
             break;
         case Method::laplacian:
             d["laplacian_increments"] = o.laplacian.increments;

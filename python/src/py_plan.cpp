@@ -160,8 +160,13 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
     {
         py::gil_scoped_release release;
         if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) check_plan_fits(*d, mesh->mesh.points, p->boundary.boundary);
-        if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan))
+        if (auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
             check_plan_fits(*h, mesh->mesh.points, p->boundary.boundary);
+            // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
+            if (!mesh->mesh.cells.empty())
+                h->guard = make_dg_harmonic_guard(mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells,
+                                                  p->boundary.boundary, guard_laplacian_options(p->options.laplacian, p->options.dg_harmonic));
+        }
     }
     warn_plan(*p);
     return p;
@@ -178,6 +183,7 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
                              "translation= / rotation= / center= arrays");
     BoundaryMotion boundary_motion;
     std::vector<std::string> warnings;
+    std::int64_t folded_faces = 0;  // the boundary motion turns faces over: the guard's redo cannot help
     if (!motion.is_none()) {
         if (py::isinstance<py::array>(motion) && !arrays) {
             boundary_motion = motion_from_arrays(p, motion, py::none(), py::none());  // a translation per node
@@ -191,6 +197,7 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
             ResolvedFrame resolved = resolve_motion_frame(p, m->spec, frame);
             boundary_motion = std::move(resolved.motion);
             warnings = std::move(resolved.warnings);
+            folded_faces = resolved.folded_faces;
         }
     } else {
         if (frame != 0) throw py::value_error("frame is for a motion of several frames, not for arrays");
@@ -209,7 +216,9 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     const std::span<double> xs(result.mutable_data(), static_cast<std::size_t>(result.size()));
     StepReport report;
     ProgressBridge bridge(progress);
-    bridge.run([&] { report = deform(p.plan, mesh.points, boundary_motion, xs, p.options, bridge.function()); });
+    MethodOptions options = p.options;
+    if (folded_faces > 0) options.dg_harmonic.redo_below = -1;  // as the CLI: no volume method mends them
+    bridge.run([&] { report = deform(p.plan, mesh.points, boundary_motion, xs, options, bridge.function()); });
     repair_after_step(p, xs, untangle, untangle_target);
     warn_all(warnings);
     if (report.conflicting_shared_vertices > 0)
@@ -346,7 +355,9 @@ void bind_plan(py::module_& m) {
           "          dg-idw: a_translation, a_rotation, length_scale (a number or 'auto'),\n"
           "          dg_idw_weights ('paper' or 'continuous'); dgm: dgm_substep (bool); idw:\n"
           "          idw_moving_exponent, idw_static_exponent; rbf: rbf_radius, rbf_greedy;\n"
-          "          dg-harmonic: harmonic_wall_spacing, harmonic_growth; laplacian: laplacian_increments,\n"
+          "          dg-harmonic: harmonic_wall_spacing, harmonic_growth, harmonic_redo_below (its guard:\n"
+          "          a step below this fraction of the original minimum quality, or that inverts a cell,\n"
+          "          is solved again by laplacian; -1: never); laplacian: laplacian_increments,\n"
           "          laplacian_exponent, laplacian_model ('elasticity' or 'laplacian').\n"
           "The GIL is released while the plan is built. Raises MeshError for an unknown marker or a\n"
           "degenerate boundary, InputError (ValueError) for an option out of range, ValueError for an\n"

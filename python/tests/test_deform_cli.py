@@ -80,18 +80,19 @@ def test_a_displacement_file_on_su2s_naca0012_equals_the_cli(tmp_path, cli, su2_
 
 def test_dg_harmonic_last_resort_and_untangle_equal_the_cli(tmp_path, cli, su2_meshes):
     # SU2's pyramid brick with its top face turned 10 degrees inside fixed walls: DG-harmonic's
-    # step folds cells, and its last resort repairs them, in the CLI and here alike.
+    # one pass folds cells, and its last resort repairs them, in the CLI and here alike (its
+    # guard off: the guard's laplacian, seconds here, would keep every cell valid).
     mesh_file = su2_meshes / "deformation_brick_pyra_mesh_brick_pyra_ffd.su2"
     motion_file = MOTIONS / "brick_rotate_top.json"
     mesh = dgwarp.read(mesh_file)
     motion = dgwarp.Motion(motion_file)
     with pytest.warns(dgwarp.DgwarpWarning, match="116 boundary nodes are on both a moving and a static marker"):
-        harmonic = dgwarp.prepare(mesh, moving=motion, method="dg-harmonic")  # as the CLI warns
+        harmonic = dgwarp.prepare(mesh, moving=motion, method="dg-harmonic", harmonic_redo_below=-1)  # as the CLI warns
     repaired = harmonic.deform(motion)
     raw = harmonic.deform(motion, untangle=False)
     assert dgwarp.quality(mesh, points=raw).inverted > 0  # the step alone folds cells
     assert dgwarp.quality(mesh, points=repaired).inverted == 0
-    out = cli_points(cli, tmp_path, mesh_file, motion_file, "--method", "dg-harmonic")
+    out = cli_points(cli, tmp_path, mesh_file, motion_file, "--method", "dg-harmonic", "--harmonic-redo-below", "-1")
     assert np.array_equal(repaired, dgwarp.read(out).points)
     # --untangle after DG-IDW.
     with pytest.warns(dgwarp.DgwarpWarning):

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/methods/method.hpp"
@@ -110,6 +112,53 @@ TEST(BenchRobustnessCli, SummarisesEveryMethodAgainstTheReference) {
     for (Method m : all_methods) EXPECT_NE(text.find("| " + std::string(method_name(m)) + " |"), std::string::npos) << method_name(m);
     EXPECT_NE(text.find("| 2 | "), std::string::npos);  // a row per seed
     EXPECT_NE(text.find("| 3 | "), std::string::npos);
+    // Seed 3: dg-harmonic's one pass falls to 0.025 (original 0.726); its guard keeps laplacian's result.
+    EXPECT_NE(text.find(" (L) |"), std::string::npos) << text;
+    EXPECT_NE(text.find("laplacian's result kept"), std::string::npos);
     EXPECT_EQ(run_cli("bench --robustness --seeds 5-2").exit_code, 1);
     EXPECT_EQ(run_cli("bench --seeds 1-2").exit_code, 1);  // --seeds needs --robustness
+}
+
+TEST(DeformGuardCli, AStepBelowTheBarIsSolvedAgainByLaplacianAndTheReportSaysSo) {
+    // Random 2D scene 3: a circle turned 33°; DG-harmonic's one pass keeps
+    // every cell but its minimum falls to 0.025 (the original's is 0.726).
+    const auto dir = scratch_dir();
+    const std::string mesh = (dir / "scene.su2").string(), motion = (dir / "m" / "move.json").string();
+    ASSERT_EQ(run_cli("case random --seed 3 -q -o " + mesh + " --motions " + (dir / "m").string()).exit_code, 0);
+    CommandResult r = run_cli("deform " + mesh + " -m " + motion + " -o " + (dir / "out.su2").string() + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto frame = nlohmann::json::parse(r.out).at("frames").at(0);
+    const auto& guard = frame.at("guard");
+    EXPECT_TRUE(guard.at("redone").get<bool>());
+    EXPECT_TRUE(guard.at("kept_redo").get<bool>());
+    EXPECT_LT(guard.at("one_pass").at("min_quality").get<double>(), guard.at("bar").get<double>());
+    EXPECT_EQ(guard.at("redo").at("min_quality"), frame.at("quality").at("min"));
+    EXPECT_EQ(guard.at("increments"), frame.at("substeps"));
+    EXPECT_FALSE(frame.at("last_resort").get<bool>());
+    // The laplacian reference gives the same mesh (its points in no cell stay; the guard's move with the one pass).
+    r = run_cli("deform " + mesh + " -m " + motion + " -o " + (dir / "ref.su2").string() + " --method laplacian -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Mesh out = read_mesh(dir / "out.su2"), ref = read_mesh(dir / "ref.su2");
+    std::size_t compared = 0;
+    for (NodeId n : out.cells.nodes) {
+        ASSERT_EQ(out.points[2 * n], ref.points[2 * n]) << "node " << n;
+        ASSERT_EQ(out.points[2 * n + 1], ref.points[2 * n + 1]) << "node " << n;
+        ++compared;
+    }
+    EXPECT_GT(compared, 0u);
+    // The text report names it; the guard off gives the one pass.
+    r = run_cli("deform " + mesh + " -m " + motion + " -o " + (dir / "out.su2").string());
+    EXPECT_NE(r.out.find("guard     one pass min 0.0251"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("solved again by laplacian in 4 increments"), std::string::npos) << r.out;
+    r = run_cli("deform " + mesh + " -m " + motion + " -o " + (dir / "raw.su2").string() +
+                " --harmonic-redo-below -1 --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    frame = nlohmann::json::parse(r.out).at("frames").at(0);
+    EXPECT_TRUE(frame.at("guard").is_null());
+    EXPECT_LT(frame.at("quality").at("min").get<double>(), 0.05);
+    // A guard option with another method is a usage error.
+    EXPECT_EQ(run_cli("deform " + mesh + " -m " + motion + " -o " + (dir / "x.su2").string() +
+                      " --method rbf --harmonic-redo-below 0.3")
+                  .exit_code,
+              1);
 }

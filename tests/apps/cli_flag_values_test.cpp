@@ -48,6 +48,8 @@ TEST(CliFlagValues, EveryBadValueIsAUsageErrorWithAReadableMessage) {
         {deform + " --idw-moving-exponent 0", "--idw-moving-exponent"},  // was exit 2
         {deform + " --idw-static-exponent 17", "--idw-static-exponent"},
         {deform + " --harmonic-growth nan", "--harmonic-growth"},
+        {deform + " --harmonic-redo-below 1", "--harmonic-redo-below"},
+        {deform + " --harmonic-redo-below nan", "--harmonic-redo-below"},
         {deform + " --harmonic-wall-spacing 0", "--harmonic-wall-spacing"},
         {deform + " --length-scale inf", "--length-scale"},  // was exit 2
         {deform + " --length-scale -1", "--length-scale"},

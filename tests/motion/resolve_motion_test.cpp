@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "motion/motion_test_meshes.hpp"
 #include "support/degrees.hpp"
@@ -539,4 +542,24 @@ TEST(MotionResolve, NodeDisplacementsAreTheMovedBoundaryMinusTheMeshAndZeroInsid
             const auto n = static_cast<std::size_t>(rb.boundary.nodes[b]);
             EXPECT_EQ(d[2 * n + k], p[2 * b + k] - mesh.points[2 * n + k]) << "node " << n;
         }
+}
+
+TEST(ResolveFrame, CountsTheBoundaryFacesTheMotionItselfTurnsOver) {
+    // SU2's hex brick with its top face turned inside a rim held by
+    // static_wins: 32 of z_p's 741 faces turn over (issue #27), which the
+    // frame reports as a count (DG-harmonic's guard skips such frames) and a
+    // warning; under moving_wins the rim turns too and nothing folds.
+    DGWARP_REQUIRE_SHARED_MESHES();
+    const Mesh mesh = read_mesh(test::su2_meshes_dir() / "deformation_brick_hex_mesh_brick_hex_ffd.su2");
+    std::ifstream in(test::source_dir() / "examples" / "motions" / "brick_rotate_top.json");
+    std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const MotionSpec moving_wins = spec_of(json);
+    json.replace(json.find("\"moving_wins\""), 13, "\"static_wins\"");
+    const MotionSpec static_wins = spec_of(json);
+    const ResolvedFrame folded = resolve_frame(mesh, static_wins, resolve_boundary(mesh, static_wins), 0);
+    EXPECT_EQ(folded.folded_faces, 32);
+    EXPECT_TRUE(std::any_of(folded.warnings.begin(), folded.warnings.end(), [](const std::string& w) {
+        return w.find("folds 32 of marker 'z_p''s 741 faces") != std::string::npos;
+    }));
+    EXPECT_EQ(resolve_frame(mesh, moving_wins, resolve_boundary(mesh, moving_wins), 0).folded_faces, 0);
 }

@@ -32,6 +32,7 @@
 // returns to zero returns every node to its original position, to round-off).
 // Results do not depend on the thread count.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -67,6 +68,17 @@ struct DgHarmonicOptions {
     /// Negative: the dimension's default (0.25 in 2D, 0 in 3D).
     double rigid_zone = -1;
     double rigid_gap = 0.5;
+    /// The guard (dg_harmonic_guard.hpp), at step time, when the plan was
+    /// prepared with the mesh's cells: a step that inverts a cell or whose
+    /// minimum quality falls below redo_below × the original mesh's is solved
+    /// again by the laplacian reference and the better result kept. 0: only
+    /// a step that inverts a cell; negative: never measured (the one pass).
+    /// Not part of the plan's arrays (a plan file does not keep it).
+    double redo_below = 0.25;
+    /// The guard's laplacian doubles its increments while a cell folds up
+    /// to this many (at most laplacian's own max_increments; a step that
+    /// folds even so has cost 4 + 8 + ... + 64 solves). Prepare time.
+    int redo_max_increments = 64;
 };
 
 /// What prepare_dg_harmonic found, and how long its stages took.
@@ -80,6 +92,7 @@ struct DgHarmonicPrepareStats {
     double graph_seconds = 0;              // Delaunay triangulation of the coarse points
     double locate_seconds = 0;             // location of the volume nodes
     double factor_seconds = 0;             // Laplacian assembly, ordering and factorisation
+    double guard_seconds = 0;              // the guard: the cells' orientations and original quality (prepare with cells)
 };
 
 /// The two factorised Laplacians of the coarse graph (translation and
@@ -111,6 +124,8 @@ struct HarmonicFactors {
 };
 
 /// Everything deform_dg_harmonic needs, as plain arrays.
+struct DgHarmonicGuard;
+
 struct DgHarmonicPlan {
     int dim = 3;
     MeshFingerprint mesh;
@@ -141,6 +156,11 @@ struct DgHarmonicPlan {
     /// components (w, |w|, |w| c).
     HarmonicFactors solve;
     DgHarmonicPrepareStats stats;
+    /// The guard: the mesh's cells and the laplacian plan that solves a step
+    /// again (dg_harmonic_guard.hpp); null when prepared without cells (a
+    /// point cloud, a distributed part, a plan file before
+    /// attach_dg_harmonic_guard). Shared, read-only: copies of a plan share it.
+    std::shared_ptr<const DgHarmonicGuard> guard;
 
     std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
     std::int64_t num_volume_nodes() const { return num_points() - static_cast<std::int64_t>(boundary_nodes.size()); }

@@ -15,6 +15,7 @@
 #include "dgwarp/methods/coarse_points.hpp"
 #include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/methods/dgm_detail.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
@@ -286,6 +287,11 @@ void check_dg_harmonic_options(const DgHarmonicOptions& options) {
     for (const auto& [name, value] : {std::pair{"rigid_zone", options.rigid_zone}, std::pair{"rigid_gap", options.rigid_gap}})
         if (!std::isfinite(value))
             throw Error(std::string("DG-harmonic: ") + name + " must be finite, got " + std::to_string(value));
+    if (!(options.redo_max_increments >= 1 && options.redo_max_increments <= 64))
+        throw Error("DG-harmonic: redo_max_increments must be 1 to 64, got " + std::to_string(options.redo_max_increments));
+    if (std::isnan(options.redo_below) || options.redo_below >= 1)
+        throw Error("DG-harmonic: redo_below must be below 1 (a fraction of the original minimum quality; negative: "
+                    "never redo), got " + std::to_string(options.redo_below));
 }
 
 DgHarmonicOptions resolved_options(const DgHarmonicOptions& options, int dim) {
@@ -413,7 +419,8 @@ void check_plan_fits(const DgHarmonicPlan& plan, std::span<const double> points,
 std::size_t plan_bytes(const DgHarmonicPlan& p) {
     return sizeof(DgHarmonicPlan) + bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) +
            bytes_of(p.vertex_motion) + bytes_of(p.shared_offsets) + bytes_of(p.shared_members) +
-           bytes_of(p.simplices) + bytes_of(p.node_simplex) + bytes_of(p.node_barycentric) + factor_bytes(p.solve);
+           bytes_of(p.simplices) + bytes_of(p.node_simplex) + bytes_of(p.node_barycentric) + factor_bytes(p.solve) +
+           (p.guard ? guard_bytes(*p.guard) : 0);
 }
 
 }  // namespace dgwarp

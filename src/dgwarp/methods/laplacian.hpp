@@ -37,6 +37,7 @@
 // count (assembly and solve are serial).
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "dgwarp/core/progress.hpp"
@@ -97,6 +98,13 @@ struct LaplacianStepReport {
     int increments = 0;  // the increments of the solve kept (more than options.increments when folds asked for more)
     std::int64_t unknowns = 0;
 };
+
+/// The checks prepare_laplacian makes before any work (the throws below but
+/// the last: a part no boundary node holds is found while splitting);
+/// returns the number of points. `who` begins the messages ("laplacian").
+std::size_t check_laplacian_inputs(int dim, std::span<const double> points, const ElementList& cells,
+                                   const BoundarySet& boundary, const LaplacianOptions& options,
+                                   std::string_view who);
 
 /// Splits the cells and numbers the unknowns. `points`: num_points × dim,
 /// original coordinates; `cells`: the mesh's cells (of dimension dim);

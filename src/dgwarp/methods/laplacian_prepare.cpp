@@ -87,34 +87,41 @@ void check_every_part_held(const LaplacianPlan& plan) {
 
 }  // namespace
 
-LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const ElementList& cells,
-                                const BoundarySet& boundary, const LaplacianOptions& options) {
-    const std::size_t num_points = check_points_and_boundary("laplacian", dim, points, boundary);
+std::size_t check_laplacian_inputs(int dim, std::span<const double> points, const ElementList& cells,
+                                   const BoundarySet& boundary, const LaplacianOptions& options,
+                                   std::string_view who) {
+    const std::string w(who);
+    const std::size_t num_points = check_points_and_boundary(w, dim, points, boundary);
     if (!(options.increments >= 1 && options.increments <= 64))
-        throw Error("laplacian: increments must be 1 to 64, got " + std::to_string(options.increments));
+        throw Error(w + ": increments must be 1 to 64, got " + std::to_string(options.increments));
     if (!(options.max_increments >= options.increments && options.max_increments <= 64))
-        throw Error("laplacian: max_increments must be increments to 64, got " + std::to_string(options.max_increments));
+        throw Error(w + ": max_increments must be increments to 64, got " + std::to_string(options.max_increments));
     if (!(options.stiffness_exponent >= 0 && options.stiffness_exponent <= 4))
-        throw Error("laplacian: the stiffness exponent must be 0 to 4, got " +
+        throw Error(w + ": the stiffness exponent must be 0 to 4, got " +
                     std::to_string(options.stiffness_exponent));
     if (!(options.poisson_ratio >= 0 && options.poisson_ratio <= 0.45))
-        throw Error("laplacian: Poisson's ratio must be 0 to 0.45, got " + std::to_string(options.poisson_ratio));
+        throw Error(w + ": Poisson's ratio must be 0 to 0.45, got " + std::to_string(options.poisson_ratio));
     if (cells.empty())
-        throw MeshError("laplacian: the mesh has no cells (the method solves on the mesh's cells)");
+        throw MeshError(w + ": the mesh has no cells (the method solves on the mesh's cells)");
     if (cells.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 8))
-        throw MeshError("laplacian: too many cells (" + std::to_string(cells.size()) + ")");
+        throw MeshError(w + ": too many cells (" + std::to_string(cells.size()) + ")");
     for (std::size_t c = 0; c < cells.size(); ++c) {
         if (cell_dimension(cells.types[c]) != dim)
-            throw MeshError("laplacian: cell " + std::to_string(c) + " is a " +
+            throw MeshError(w + ": cell " + std::to_string(c) + " is a " +
                             std::string(cell_type_name(cells.types[c])) + ", not a " + std::to_string(dim) +
                             "D cell");
         for (NodeId n : cells.nodes_of(c))
             if (n < 0 || static_cast<std::size_t>(n) >= num_points)
-                throw MeshError("laplacian: cell " + std::to_string(c) + " has node " + std::to_string(n) +
+                throw MeshError(w + ": cell " + std::to_string(c) + " has node " + std::to_string(n) +
                                     ", out of range (the mesh has " + std::to_string(num_points) + " points)",
                                 {}, n);
     }
+    return num_points;
+}
 
+LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const ElementList& cells,
+                                const BoundarySet& boundary, const LaplacianOptions& options) {
+    const std::size_t num_points = check_laplacian_inputs(dim, points, cells, boundary, options, "laplacian");
     LaplacianPlan plan;
     plan.dim = dim;
     plan.num_points = static_cast<std::int64_t>(num_points);

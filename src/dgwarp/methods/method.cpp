@@ -1,8 +1,11 @@
 #include "dgwarp/methods/method.hpp"
 
+#include "dgwarp/methods/dg_harmonic_guard.hpp"
+
 #include <algorithm>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 
 namespace dgwarp {
@@ -63,7 +66,16 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Eleme
             return plan;
         }
         case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf, progress);
-        case Method::dg_harmonic: return prepare_dg_harmonic(dim, points, boundary, options.dg_harmonic, progress);
+        case Method::dg_harmonic: {
+            DgHarmonicPlan plan = prepare_dg_harmonic(dim, points, boundary, options.dg_harmonic, progress);
+            if (!cells.empty()) {
+                Stopwatch sw;
+                plan.guard = make_dg_harmonic_guard(dim, points, cells, boundary,
+                                                    guard_laplacian_options(options.laplacian, options.dg_harmonic));
+                plan.stats.guard_seconds = sw.lap();
+            }
+            return plan;
+        }
         case Method::laplacian: {
             Plan plan = prepare_laplacian(dim, points, cells, boundary, options.laplacian);
             if (progress) progress(1.0);
@@ -110,9 +122,10 @@ StepReport deform_unchecked(const Plan& plan, std::span<const double> points, co
                                  },
                                  [&](const DgHarmonicPlan& p) {
                                      StepReport r;
-                                     r.conflicting_shared_vertices =
-                                         deform_dg_harmonic(p, points, motion, out, progress)
-                                             .conflicting_shared_vertices;
+                                     r.guard = deform_dg_harmonic_guarded(p, points, motion, out,
+                                                                          options.dg_harmonic.redo_below, progress);
+                                     r.conflicting_shared_vertices = r.guard.conflicting_shared_vertices;
+                                     if (r.guard.kept_redo) r.substeps = r.guard.increments;
                                      return r;
                                  },
                                  [&](const LaplacianPlan& p) {
@@ -188,6 +201,7 @@ PlanSummary plan_summary(const Plan& plan) {
                                                      {"graph", p.stats.graph_seconds},
                                                      {"locate", p.stats.locate_seconds},
                                                      {"factorise", p.stats.factor_seconds}};
+                              if (p.guard) s.phase_seconds.emplace_back("guard", p.stats.guard_seconds);
                           },
                           [&](const LaplacianPlan&) {}},
                plan);

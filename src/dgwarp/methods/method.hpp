@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/idw.hpp"
@@ -65,10 +66,11 @@ using Plan = std::variant<DgIdwPlan, DgmPlan, IdwPlan, RbfPlan, DgHarmonicPlan, 
 /// What one step did, whatever the method (fields a method does not use keep their defaults).
 struct StepReport {
     std::int64_t conflicting_shared_vertices = 0;  // DG-IDW, DGM, RBF: shared graph vertices (RBF centres) with differing motions
-    int substeps = 1;                               // DGM, laplacian: increments used (1 = one step)
+    int substeps = 1;                               // DGM, laplacian (and DG-harmonic's result when laplacian's was kept): increments used (1 = one step)
     std::int64_t invalid_graph_simplices = 0;       // DGM: invalid simplices of the graph moved in one step
     std::int64_t rbf_centres = 0;                   // RBF: centres used (all boundary nodes without greedy reduction)
     double rbf_boundary_error = 0;                  // RBF: max |s(x_b) - d_b| over the boundary nodes (mesh units)
+    DgHarmonicGuardReport guard;                    // DG-harmonic: what its guard measured and whether laplacian solved the step again
 };
 
 /// Builds the plan of `method` for the original `points` and `boundary`.

@@ -22,7 +22,8 @@ inline constexpr MethodOptionName method_option_names[] = {
     {"dgm-substep", Method::dgm},             {"idw-moving-exponent", Method::idw},
     {"idw-static-exponent", Method::idw},     {"rbf-radius", Method::rbf},
     {"rbf-greedy", Method::rbf},              {"harmonic-wall-spacing", Method::dg_harmonic},
-    {"harmonic-growth", Method::dg_harmonic}, {"laplacian-increments", Method::laplacian},
+    {"harmonic-growth", Method::dg_harmonic}, {"harmonic-redo-below", Method::dg_harmonic},
+    {"laplacian-increments", Method::laplacian},
     {"laplacian-exponent", Method::laplacian},   {"laplacian-model", Method::laplacian},
 };
 

@@ -269,11 +269,13 @@ void refuse_unusable_motions(const Context& c, const NodeMotions& motions, const
 /// such a face valid, and none of them is all-boundary, so the step's report
 /// would not say so (issue #27: a face turned inside a rim held by
 /// static_wins).
-void warn_folded_faces(const Context& c, const BoundaryMotion& motion, const std::string& at,
-                       std::vector<std::string>& warnings) {
+/// Returns the number of folded faces.
+std::int64_t warn_folded_faces(const Context& c, const BoundaryMotion& motion, const std::string& at,
+                               std::vector<std::string>& warnings) {
     const Mesh& mesh = c.mesh;
     const BoundarySet& boundary = c.boundary;
-    if (std::none_of(boundary.moving.begin(), boundary.moving.end(), [](std::uint8_t m) { return m != 0; })) return;
+    if (std::none_of(boundary.moving.begin(), boundary.moving.end(), [](std::uint8_t m) { return m != 0; })) return 0;
+    std::int64_t total = 0;
     const auto dim = static_cast<std::size_t>(mesh.dim);
     const std::vector<double> moved = moved_boundary_points(mesh, boundary, motion);
     using P = std::array<double, 3>;
@@ -320,6 +322,7 @@ void warn_folded_faces(const Context& c, const BoundaryMotion& motion, const std
             if (d < 0 && folded++ == 0) example = f;  // turned over; edge-on (0) is not
         }
         if (folded == 0) continue;
+        total += static_cast<std::int64_t>(folded);
         std::ostringstream w;
         w << at << ": the boundary motion itself folds " << folded << " of marker '" << mesh.markers[m].name
           << "''s " << faces.size() << " faces (e.g. its element " << example
@@ -328,11 +331,12 @@ void warn_folded_faces(const Context& c, const BoundaryMotion& motion, const std
              "docs/MOTION.md)";
         warnings.push_back(w.str());
     }
+    return total;
 }
 
 /// Resolves one frame (see the header's rules). Appends warnings.
 BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
-                          std::vector<std::string>& warnings) {
+                          std::vector<std::string>& warnings, std::int64_t* folded_faces = nullptr) {
     const Mesh& mesh = c.mesh;
     std::vector<const MarkerMotion*> marker_motions(mesh.markers.size());
     for (std::size_t m = 0; m < mesh.markers.size(); ++m)
@@ -345,7 +349,8 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
     refuse_disagreements(c, f, motions, at);
     for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b)
         if (!c.boundary.moving[b]) f.motion[b] = NodeMotion{};  // static nodes stay
-    warn_folded_faces(c, f.motion, at, warnings);
+    const std::int64_t folded = warn_folded_faces(c, f.motion, at, warnings);
+    if (folded_faces) *folded_faces = folded;
     return std::move(f.motion);
 }
 
@@ -451,7 +456,8 @@ ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const Reso
     assert(resolved.boundary.nodes.size() == resolved.boundary.moving.size());
     const Context c{mesh, spec, resolved.context, resolved.boundary};
     ResolvedFrame out;
-    out.motion = resolve_at(c, frame_spec(spec, frame), frame_time(spec, frame), where(spec, frame), out.warnings);
+    out.motion = resolve_at(c, frame_spec(spec, frame), frame_time(spec, frame), where(spec, frame), out.warnings,
+                            &out.folded_faces);
     return out;
 }
 

@@ -73,6 +73,10 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec);
 struct ResolvedFrame {
     BoundaryMotion motion;              // one NodeMotion per node of the BoundarySet, in its order
     std::vector<std::string> warnings;  // e.g. a marker moved farther than the mesh's size
+    /// Boundary faces the motion itself turns over (a warning names them):
+    /// no method keeps the cells on them valid, so callers skip work that
+    /// cannot help (DG-harmonic's guard).
+    std::int64_t folded_faces = 0;
 };
 
 /// The motion of every boundary node in frame `frame` (< frame_count(spec)).

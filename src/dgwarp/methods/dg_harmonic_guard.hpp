@@ -1,0 +1,110 @@
+#pragma once
+// DG-harmonic's guard (docs/dg-harmonic.md, "The guard"): when the plan was
+// prepared with the mesh's cells, every step's result is measured (Knupp's
+// shape quality of every cell, as `dgwarp quality` computes it). A step that
+// inverts a cell, or whose minimum quality falls below redo_below × the
+// original mesh's, is solved again by the laplacian reference (stiffened
+// elasticity in increments, methods/laplacian.hpp) and the better of the two
+// results is kept: fewer inverted cells first, then the higher minimum. A
+// step whose boundary motion itself folds cells (every node of an inverted
+// cell on the boundary) is not redone: no volume method can mend it.
+// Frames the one pass handles stay one pass (plus the measurement); the
+// others cost a laplacian solve, and the step's report says so.
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "dgwarp/core/progress.hpp"
+#include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/methods/laplacian.hpp"
+#include "dgwarp/motion/node_motion.hpp"
+
+namespace dgwarp {
+
+struct DgHarmonicPlan;
+struct DgHarmonicOptions;
+
+/// What the guard keeps: the cells and their original orientations and
+/// quality, and what builds the laplacian plan that solves a step again (on
+/// the first step that needs it: prepare stays cheap).
+struct DgHarmonicGuard {
+    Mesh mesh;                               // dim, the original points and the cells (no markers)
+    std::vector<std::int8_t> orientations;   // dominant_orientations(mesh)
+    /// Per cell: 0 not judged (inverted or flat in the original), 1 judged,
+    /// 2 judged and every node a boundary node (the boundary motion alone
+    /// places it: no volume method changes it).
+    std::vector<std::uint8_t> judged;
+    double original_min = 0;                 // the minimum quality of the judged cells in the original
+    BoundarySet boundary;                    // the plan's
+    LaplacianOptions laplacian_options;
+    // Built once, by the first step that is solved again (laplacian_plan_of).
+    mutable std::once_flag laplacian_once;
+    mutable LaplacianPlan laplacian;
+};
+
+/// The guard's laplacian plan, built on the first call (thread-safe).
+const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard);
+
+/// The guard of a mesh: `points` num_points × dim (the original), `cells`
+/// the mesh's cells, `boundary` the plan's boundary set. Throws as
+/// check_laplacian_cells does (MeshError for cells of another dimension or
+/// out of range).
+std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
+                                                              const ElementList& cells, const BoundarySet& boundary,
+                                                              const LaplacianOptions& laplacian = {});
+
+/// The laplacian options of the guard: `laplacian` with its increments
+/// doubled at most up to harmonic.redo_max_increments.
+LaplacianOptions guard_laplacian_options(const LaplacianOptions& laplacian, const DgHarmonicOptions& harmonic);
+
+/// The guard's measure of one result: the judged cells it inverts and the
+/// minimum quality of the judged cells (the value cell_shape_quality gives).
+/// One pass over the cells, threaded; triangles and tetrahedra by a kernel
+/// without the generic dispatch (the minimum is found on the cube of the
+/// metric, with no cube root per cell).
+struct GuardMeasure {
+    std::int64_t inverted = 0;
+    std::int64_t inverted_on_boundary = 0;  // of those, the cells whose every node is a boundary node
+    double min_quality = 0;
+};
+GuardMeasure measure_for_guard(const DgHarmonicGuard& guard, std::span<const double> points);
+
+/// What a guarded step did.
+struct DgHarmonicGuardReport {
+    std::int64_t conflicting_shared_vertices = 0;  // as DgHarmonicStepReport (the one pass)
+    bool checked = false;        // the result was measured (the plan has a guard and redo_below >= 0)
+    GuardMeasure one_pass;       // the one pass's measure (when checked)
+    double bar = 0;              // redo_below × the original minimum quality (when checked)
+    bool redone = false;         // the one pass fell below the bar: laplacian solved the step again
+    /// Not redone although the one pass folds: the boundary motion itself
+    /// folds cells (one_pass.inverted_on_boundary > 0), which no volume
+    /// method can change.
+    bool boundary_folds = false;
+    bool kept_redo = false;      // the laplacian result was better and is the one written
+    int increments = 0;          // laplacian's increments (when redone)
+    GuardMeasure redo;           // laplacian's measure (when redone and its solve succeeded)
+    std::string redo_error;      // why laplacian's solve failed (when it did; the one pass is kept)
+    double redo_seconds = 0;     // the time laplacian's solve and measure took
+};
+
+/// DG-harmonic's step with its guard (deform_dg_harmonic when the plan has
+/// none or `redo_below` is negative). `redo_below`: the bar, a fraction of
+/// the original minimum quality (0: only a step that inverts a cell is
+/// redone; negative: never measured). `out` num_points × dim (may alias
+/// points).
+DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std::span<const double> points,
+                                                 const BoundaryMotion& motion, std::span<double> out,
+                                                 double redo_below, const ProgressFn& progress = {});
+
+/// One line for a report: what the guard measured and did, e.g. "one pass
+/// min 0.0250 (bar 0.363): solved again by laplacian in 4 increments, min
+/// 0.131, kept (102 ms)"; "" when the step was not checked.
+std::string guard_summary(const DgHarmonicGuardReport& report);
+
+/// Bytes held by a guard's arrays.
+std::size_t guard_bytes(const DgHarmonicGuard& guard);
+
+}  // namespace dgwarp
