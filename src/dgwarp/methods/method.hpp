@@ -41,7 +41,8 @@ inline constexpr Method all_methods[] = {Method::dg_idw, Method::dgm,         Me
                                          Method::rbf,    Method::dg_harmonic, Method::laplacian};
 
 /// Whether `m` solves on the mesh's cells (prepare needs them): laplacian
-/// only; the others work on points and a boundary set.
+/// only; the others work on points and a boundary set (DG-harmonic uses the
+/// cells when given, for its guard: dg_harmonic_guard.hpp).
 constexpr bool method_needs_cells(Method m) { return m == Method::laplacian; }
 
 /// "dg-idw", "dgm", "idw", "rbf", "dg-harmonic", "laplacian".
@@ -83,8 +84,9 @@ struct StepReport {
 Plan prepare(Method method, int dim, std::span<const double> points, const BoundarySet& boundary,
              const MethodOptions& options = {}, const ProgressFn& progress = {});
 
-/// The same, with the mesh's `cells` (as Mesh::cells), which only
-/// Method::laplacian uses: the one call for tools that run every method.
+/// The same, with the mesh's `cells` (as Mesh::cells), which Method::laplacian
+/// solves on and Method::dg_harmonic's guard measures its steps with (empty:
+/// no guard): the one call for tools that run every method.
 Plan prepare(Method method, int dim, std::span<const double> points, const ElementList& cells,
              const BoundarySet& boundary, const MethodOptions& options = {}, const ProgressFn& progress = {});
 
