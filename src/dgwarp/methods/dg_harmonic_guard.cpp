@@ -95,23 +95,16 @@ double exact_quality(const DgHarmonicGuard& g, std::span<const double> points, s
 }
 
 /// A tetrahedron's key: q^3 = 54 alpha^2 / den^3 when it is valid (q =
-/// 3 (sqrt 2 alpha)^(2/3) / den, simplex_quality.cpp), else nullopt (the
-/// exact value decides). A monotone function of q for q > 0.
+/// 3 (sqrt 2 alpha)^(2/3) / den, simplex_quality.cpp, from the same corner
+/// Jacobian); false when it is not (the exact value decides). A monotone
+/// function of q for q > 0.
 inline bool tetrahedron_key(const double* x0, const double* x1, const double* x2, const double* x3, int orientation,
                             double& key) {
-    const Point3 a1{x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
-    const Point3 a2{x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
-    const Point3 a3{x3[0] - x0[0], x3[1] - x0[1], x3[2] - x0[2]};
-    const double alpha = orientation * (a3[0] * (a1[1] * a2[2] - a1[2] * a2[1]) +
-                                        a3[1] * (a1[2] * a2[0] - a1[0] * a2[2]) +
-                                        a3[2] * (a1[0] * a2[1] - a1[1] * a2[0]));
-    const double l11 = a1[0] * a1[0] + a1[1] * a1[1] + a1[2] * a1[2];
-    const double l22 = a2[0] * a2[0] + a2[1] * a2[1] + a2[2] * a2[2];
-    const double l33 = a3[0] * a3[0] + a3[1] * a3[1] + a3[2] * a3[2];
-    const double l12 = a1[0] * a2[0] + a1[1] * a2[1] + a1[2] * a2[2];
-    const double l13 = a1[0] * a3[0] + a1[1] * a3[1] + a1[2] * a3[2];
-    const double l23 = a2[0] * a3[0] + a2[1] * a3[1] + a2[2] * a3[2];
-    const double den = 1.5 * (l11 + l22 + l33) - (l12 + l23 + l13);
+    const auto point = [](const double* x) { return Point3{x[0], x[1], x[2]}; };
+    const quality_detail::CornerJacobian j =
+        quality_detail::corner_jacobian(point(x0), point(x1), point(x2), point(x3));
+    const double alpha = orientation * j.alpha;
+    const double den = 1.5 * (j.l11 + j.l22 + j.l33) - (j.l12 + j.l23 + j.l13);
     if (!(alpha > 0) || !(den > 0)) return false;
     const double r = alpha / den;
     key = 54 * r * r / den;
