@@ -33,6 +33,7 @@ nlohmann::json guard_json(const DgHarmonicGuardReport& g) {
     };
     return {{"one_pass", measure(g.one_pass)},
             {"bar", g.bar},
+            {"measure_seconds", g.measure_seconds},
             {"redone", g.redone},
             {"boundary_folds", g.boundary_folds},
             {"redo", g.redone && g.redo_error.empty() ? measure(g.redo) : nlohmann::json(nullptr)},

@@ -109,6 +109,40 @@ TEST(DgHarmonicGuard, MeasureIsTheBruteForceMinimumAndInvertedCount) {
     }
 }
 
+TEST(DgHarmonicGuard, MeasureIsTheBruteForceAtExtremeScalesAndAnyThreadCount) {
+    // The kernel compares a product with the running minimum instead of
+    // dividing: at 2^-168 the denominator's cube is subnormal, at 2^200 it
+    // overflows, at 2^-400 and 2^365 the determinant does too; each must
+    // fall back to dividing or to the exact value.
+    for (const char* name : {"twisted-bar", "rect-box"}) {
+        SCOPED_TRACE(name);
+        const Mesh mesh = make_case(name);
+        const BoundarySet boundary = resolve_boundary(mesh, MotionSpec{}).boundary;
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<double> u(-0.002, 0.002);
+        std::vector<double> shaken = mesh.points;
+        for (double& x : shaken) x += u(rng);
+        for (double scale : {1.0, 0x1p-400, 0x1p-168, 0x1p+200, 0x1p+365}) {
+            SCOPED_TRACE(scale);
+            Mesh scaled = mesh;
+            for (double& x : scaled.points) x *= scale;
+            std::vector<double> moved = shaken;
+            for (double& x : moved) x *= scale;
+            const auto guard = make_dg_harmonic_guard(scaled.dim, scaled.points, scaled.cells, boundary);
+            const GuardMeasure slow = brute_force(scaled, moved);
+            const int before = num_threads();
+            for (int threads : {1, 2}) {
+                set_num_threads(threads);
+                const GuardMeasure fast = measure_for_guard(*guard, moved);
+                EXPECT_EQ(fast.inverted, slow.inverted);
+                EXPECT_EQ(fast.min_quality, slow.min_quality);
+                EXPECT_GT(fast.min_quality, 0);
+            }
+            set_num_threads(before);
+        }
+    }
+}
+
 TEST(DgHarmonicGuard, AMildStepKeepsTheOnePassBitForBit) {
     const Scene s = case_scene("naca0012", "rotate-45");
     const Plan plan = prepare(Method::dg_harmonic, 2, s.mesh.points, s.mesh.cells, s.boundary.boundary);

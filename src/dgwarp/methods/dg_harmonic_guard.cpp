@@ -14,11 +14,17 @@
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
 #include "dgwarp/quality/corner_jacobian.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 
 namespace dgwarp {
+
+namespace {
+/// Fills the guard's measure layout (simplex_nodes, simplex_flags, other_cells) from its judged cells.
+void build_measure_layout(DgHarmonicGuard& g);
+}  // namespace
 
 std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
                                                               const ElementList& cells, const BoundarySet& boundary,
@@ -44,11 +50,13 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
                                      [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
         guard->judged[c] = all ? 2 : 1;
     }
+    build_measure_layout(*guard);
     const GuardMeasure original = measure_for_guard(*guard, points);
     if (original.inverted > 0) {
         const std::vector<double> quality = cell_qualities(guard->mesh, guard->orientations);
         for (std::size_t c = 0; c < quality.size(); ++c)
             if (!(quality[c] > 0)) guard->judged[c] = 0;
+        build_measure_layout(*guard);
         guard->original_min = measure_for_guard(*guard, points).min_quality;
     } else {
         guard->original_min = original.min_quality;
@@ -75,77 +83,172 @@ namespace {
 using quality_detail::Point3;
 
 /// One block's share of the measure: inverted count, and the smallest
-/// "key" with its cell (key: the metric cubed for tetrahedra, the metric
+/// "key" with where it is (key: the metric cubed for tetrahedra, the metric
 /// itself otherwise; an inverted cell's key is its (non-positive) metric).
 struct BlockMeasure {
     std::int64_t inverted = 0, inverted_on_boundary = 0;
     double key = std::numeric_limits<double>::infinity();
-    std::int64_t cell = -1;
+    std::int64_t simplex = -1;  // position in the layout's simplices, or
+    std::int64_t cell = -1;     // a cell of another type
 };
 
-/// The metric's exact value, as cell_shape_quality gives it.
-double exact_quality(const DgHarmonicGuard& g, std::span<const double> points, std::size_t c) {
-    const auto nodes = g.mesh.cells.nodes_of(c);
-    const auto dim = static_cast<std::size_t>(g.mesh.dim);
+/// A cell's metric as cell_shape_quality gives it, from its nodes.
+double exact_quality(int dim, CellType type, std::span<const NodeId> nodes, std::span<const double> points,
+                     int orientation) {
+    const auto d = static_cast<std::size_t>(dim);
     std::array<double, 24> coords{};
     for (std::size_t i = 0; i < nodes.size(); ++i)
-        for (std::size_t d = 0; d < dim; ++d) coords[i * dim + d] = points[static_cast<std::size_t>(nodes[i]) * dim + d];
-    return cell_shape_quality(g.mesh.cells.types[c], std::span<const double>(coords.data(), nodes.size() * dim),
-                              g.mesh.dim, g.orientations[c]);
+        for (std::size_t k = 0; k < d; ++k) coords[i * d + k] = points[static_cast<std::size_t>(nodes[i]) * d + k];
+    return cell_shape_quality(type, std::span<const double>(coords.data(), nodes.size() * d), dim, orientation);
 }
 
-/// A tetrahedron's key: q^3 = 54 alpha^2 / den^3 when it is valid (q =
-/// 3 (sqrt 2 alpha)^(2/3) / den, simplex_quality.cpp, from the same corner
-/// Jacobian); false when it is not (the exact value decides). A monotone
-/// function of q for q > 0.
-inline bool tetrahedron_key(const double* x0, const double* x1, const double* x2, const double* x3, int orientation,
-                            double& key) {
-    const auto point = [](const double* x) { return Point3{x[0], x[1], x[2]}; };
-    const quality_detail::CornerJacobian j =
-        quality_detail::corner_jacobian(point(x0), point(x1), point(x2), point(x3));
-    const double alpha = orientation * j.alpha;
-    const double den = 1.5 * (j.l11 + j.l22 + j.l33) - (j.l12 + j.l23 + j.l13);
-    if (!(alpha > 0) || !(den > 0)) return false;
-    const double r = alpha / den;
-    key = 54 * r * r / den;
-    return std::isfinite(key) && key > 0;
+CellType simplex_type(int dim) { return dim == 3 ? CellType::tetrahedron : CellType::triangle; }
+
+std::span<const NodeId> simplex_at(const DgHarmonicGuard& g, std::int64_t s) {
+    const auto n = static_cast<std::size_t>(g.mesh.dim + 1);
+    return {g.simplex_nodes.data() + static_cast<std::size_t>(s) * n, n};
+}
+
+/// Whether a valid simplex's key, numerator / denominator, is below `key`:
+/// one multiplication instead of a division for the cells that are not a
+/// new minimum (most of them). A denominator too small for the product to
+/// be exact (subnormal) or too large (infinite) says yes: the caller divides.
+inline bool below(double numerator, double denominator, double key) {
+    return !(denominator >= std::numeric_limits<double>::min()) || !std::isfinite(denominator) ||
+           numerator < key * denominator;
+}
+
+/// Updates `m` with simplex `s` of the layout (tetrahedra: the key is q^3 =
+/// 54 alpha^2 / den^3, with q = 3 (sqrt 2 alpha)^(2/3) / den from the same
+/// corner Jacobian as simplex_quality.cpp; triangles: q = sqrt 3 alpha / den).
+/// A simplex that is not plainly valid takes the exact value.
+template <int Dim>
+inline void measure_simplex(const DgHarmonicGuard& g, std::span<const double> points, std::int64_t s,
+                            BlockMeasure& m) {
+    const std::int8_t flag = g.simplex_flags[static_cast<std::size_t>(s)];
+    const NodeId* v = g.simplex_nodes.data() + static_cast<std::size_t>(s) * (Dim + 1);
+    const double* p = points.data();
+    const double orientation = flag > 0 ? 1.0 : -1.0;
+    if constexpr (Dim == 3) {
+        const auto point = [&](NodeId n) {
+            const double* x = p + 3 * static_cast<std::size_t>(n);
+            return Point3{x[0], x[1], x[2]};
+        };
+        const quality_detail::CornerJacobian j =
+            quality_detail::corner_jacobian(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
+        const double alpha = orientation * j.alpha;
+        const double den = 1.5 * (j.l11 + j.l22 + j.l33) - (j.l12 + j.l23 + j.l13);
+        if (alpha > 0 && den > 0) {
+            if (!below(54 * alpha * alpha, den * den * den, m.key)) return;
+            const double r = alpha / den;
+            const double key = 54 * r * r / den;
+            if (std::isfinite(key) && key > 0) {
+                if (key < m.key) m.key = key, m.simplex = s;
+                return;
+            }
+        }
+    } else {
+        const double* x0 = p + 2 * static_cast<std::size_t>(v[0]);
+        const double* x1 = p + 2 * static_cast<std::size_t>(v[1]);
+        const double* x2 = p + 2 * static_cast<std::size_t>(v[2]);
+        const double a1x = x1[0] - x0[0], a1y = x1[1] - x0[1], a2x = x2[0] - x0[0], a2y = x2[1] - x0[1];
+        const double alpha = orientation * (a1x * a2y - a1y * a2x);
+        const double den = (a1x * a1x + a1y * a1y) + (a2x * a2x + a2y * a2y) - (a1x * a2x + a1y * a2y);
+        if (alpha > 0 && den > 0) {
+            const double numerator = std::sqrt(3.0) * alpha;
+            if (!below(numerator, den, m.key)) return;
+            const double key = numerator / den;
+            if (std::isfinite(key) && key > 0) {
+                if (key < m.key) m.key = key, m.simplex = s;
+                return;
+            }
+        }
+    }
+    const double q = exact_quality(Dim, simplex_type(Dim), simplex_at(g, s), points, static_cast<int>(orientation));
+    double key;
+    if (!(q > 0)) {
+        ++m.inverted;
+        m.inverted_on_boundary += flag == 2 || flag == -2;
+        key = std::isnan(q) ? -1.0 : q;
+    } else {
+        key = Dim == 3 ? q * q * q : q;
+    }
+    if (key < m.key) m.key = key, m.simplex = s;
+}
+
+void build_measure_layout(DgHarmonicGuard& g) {
+    const ElementList& cells = g.mesh.cells;
+    const CellType simplex = simplex_type(g.mesh.dim);
+    const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
+    const std::size_t num_points = g.mesh.num_points();
+    // Each node's rank along a Morton curve; each judged simplex goes in the
+    // bucket of its first node's rank (a counting sort: one pass, stable).
+    std::vector<NodeId> all(num_points);
+    for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
+    const std::vector<std::uint32_t> order = morton_order(g.mesh.dim, g.mesh.points, all);
+    std::vector<std::uint32_t> rank(num_points);
+    for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<std::uint32_t>(k);
+    std::vector<std::int64_t> start(num_points + 1, 0);
+    g.other_cells.clear();
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        if (!g.judged[c]) continue;
+        if (cells.types[c] == simplex)
+            ++start[rank[static_cast<std::size_t>(cells.nodes[static_cast<std::size_t>(cells.offsets[c])])] + 1];
+        else
+            g.other_cells.push_back(static_cast<std::int64_t>(c));
+    }
+    for (std::size_t k = 0; k < num_points; ++k) start[k + 1] += start[k];
+    const auto simplices = static_cast<std::size_t>(start[num_points]);
+    g.simplex_nodes.assign(simplices * corners, 0);
+    g.simplex_flags.assign(simplices, 0);
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        if (!g.judged[c] || cells.types[c] != simplex) continue;
+        const auto nodes = cells.nodes_of(c);
+        const auto s = static_cast<std::size_t>(start[rank[static_cast<std::size_t>(nodes[0])]]++);
+        std::copy(nodes.begin(), nodes.end(), g.simplex_nodes.begin() + static_cast<std::ptrdiff_t>(s * corners));
+        g.simplex_flags[s] = static_cast<std::int8_t>(g.orientations[c] * g.judged[c]);
+    }
 }
 
 }  // namespace
 
 GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double> points) {
-    const auto n = static_cast<std::int64_t>(g.mesh.cells.size());
+    const auto simplices = static_cast<std::int64_t>(g.simplex_flags.size());
+    const auto others = static_cast<std::int64_t>(g.other_cells.size());
+    // Fixed blocks (not one per thread): the same minimum whatever the thread count.
     constexpr std::int64_t block = 1 << 14;
-    const std::int64_t blocks = (n + block - 1) / block;
+    const std::int64_t simplex_blocks = (simplices + block - 1) / block;
+    const std::int64_t blocks = simplex_blocks + (others + block - 1) / block;
     std::vector<BlockMeasure> parts(static_cast<std::size_t>(blocks));
-    const bool tetrahedra = g.mesh.dim == 3;
+    const ElementList& cells = g.mesh.cells;
     parallel_for(
         blocks,
         [&](std::int64_t b) {
             BlockMeasure m;
-            const ElementList& cells = g.mesh.cells;
-            for (std::int64_t i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-                const auto c = static_cast<std::size_t>(i);
-                if (!g.judged[c]) continue;
-                double key = 0;
-                bool fast = false;
-                if (tetrahedra && cells.types[c] == CellType::tetrahedron) {
-                    const NodeId* v = cells.nodes.data() + cells.offsets[c];
-                    const double* p = points.data();
-                    fast = tetrahedron_key(p + 3 * v[0], p + 3 * v[1], p + 3 * v[2], p + 3 * v[3], g.orientations[c],
-                                           key);
+            if (b < simplex_blocks) {
+                const std::int64_t end = std::min(simplices, (b + 1) * block);
+                for (std::int64_t s = b * block; s < end; ++s) {
+                    if (g.mesh.dim == 3)
+                        measure_simplex<3>(g, points, s, m);
+                    else
+                        measure_simplex<2>(g, points, s, m);
                 }
-                if (!fast) {
-                    const double q = exact_quality(g, points, c);
+            } else {
+                const std::int64_t first = (b - simplex_blocks) * block;
+                for (std::int64_t i = first; i < std::min(others, first + block); ++i) {
+                    const auto c = static_cast<std::size_t>(g.other_cells[static_cast<std::size_t>(i)]);
+                    const double q = exact_quality(g.mesh.dim, cells.types[c], cells.nodes_of(c), points,
+                                                   g.orientations[c]);
+                    double key;
                     if (!(q > 0)) {
                         ++m.inverted;
                         m.inverted_on_boundary += g.judged[c] == 2;
                         key = std::isnan(q) ? -1.0 : q;
                     } else {
-                        key = tetrahedra ? q * q * q : q;  // 3D: every key on the cube, as the kernel's
+                        key = g.mesh.dim == 3 ? q * q * q : q;  // 3D: every key on the cube, as the kernel's
                     }
+                    if (key < m.key) m.key = key, m.simplex = -1, m.cell = static_cast<std::int64_t>(c);
                 }
-                if (key < m.key) m.key = key, m.cell = i;
             }
             parts[static_cast<std::size_t>(b)] = m;
         },
@@ -154,12 +257,19 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
     for (const BlockMeasure& m : parts) {
         all.inverted += m.inverted;
         all.inverted_on_boundary += m.inverted_on_boundary;
-        if (m.key < all.key) all.key = m.key, all.cell = m.cell;
+        if (m.key < all.key) all = BlockMeasure{all.inverted, all.inverted_on_boundary, m.key, m.simplex, m.cell};
     }
     GuardMeasure out;
     out.inverted = all.inverted;
     out.inverted_on_boundary = all.inverted_on_boundary;
-    out.min_quality = all.cell < 0 ? 0 : exact_quality(g, points, static_cast<std::size_t>(all.cell));
+    if (all.simplex >= 0) {
+        const int orientation = g.simplex_flags[static_cast<std::size_t>(all.simplex)] > 0 ? 1 : -1;
+        out.min_quality = exact_quality(g.mesh.dim, simplex_type(g.mesh.dim), simplex_at(g, all.simplex), points,
+                                        orientation);
+    } else if (all.cell >= 0) {
+        const auto c = static_cast<std::size_t>(all.cell);
+        out.min_quality = exact_quality(g.mesh.dim, cells.types[c], cells.nodes_of(c), points, g.orientations[c]);
+    }
     if (std::isnan(out.min_quality)) out.min_quality = -1;
     return out;
 }
@@ -190,7 +300,9 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
     if (!plan.guard || redo_below < 0) return r;
     const DgHarmonicGuard& guard = *plan.guard;
     r.checked = true;
+    Stopwatch measure_time;
     r.one_pass = measure_for_guard(guard, out);
+    r.measure_seconds = measure_time.lap();
     r.bar = redo_below * guard.original_min;
     if (r.one_pass.inverted == 0 && r.one_pass.min_quality >= r.bar) return r;
     if (r.one_pass.inverted_on_boundary > 0) {
@@ -237,7 +349,9 @@ std::string measure_text(const GuardMeasure& m) {
 std::string guard_summary(const DgHarmonicGuardReport& r) {
     if (!r.checked) return "";
     std::ostringstream s;
-    s << std::setprecision(3) << "one pass " << measure_text(r.one_pass) << " (bar " << r.bar << ")";
+    s << std::setprecision(3) << "one pass " << measure_text(r.one_pass) << " (bar " << r.bar << ", measured in "
+      << std::fixed << std::setprecision(1) << r.measure_seconds * 1e3 << " ms)" << std::defaultfloat
+      << std::setprecision(3);
     if (r.boundary_folds)
         return s.str() + ": kept, not solved again (the boundary motion itself folds " +
                std::to_string(r.one_pass.inverted_on_boundary) + " cell" +
@@ -256,7 +370,8 @@ std::string guard_summary(const DgHarmonicGuardReport& r) {
 
 std::size_t guard_bytes(const DgHarmonicGuard& g) {
     return bytes_of(g.mesh.points) + bytes_of(g.mesh.cells.types) + bytes_of(g.mesh.cells.offsets) +
-           bytes_of(g.mesh.cells.nodes) + bytes_of(g.orientations) + bytes_of(g.judged) + bytes_of(g.boundary.nodes) +
+           bytes_of(g.mesh.cells.nodes) + bytes_of(g.orientations) + bytes_of(g.judged) +
+           bytes_of(g.simplex_nodes) + bytes_of(g.simplex_flags) + bytes_of(g.other_cells) + bytes_of(g.boundary.nodes) +
            bytes_of(g.boundary.moving) + plan_bytes(g.laplacian);
 }
 
