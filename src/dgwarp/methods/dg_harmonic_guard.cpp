@@ -22,8 +22,13 @@
 namespace dgwarp {
 
 namespace {
-/// Fills the guard's measure layout (simplex_nodes, simplex_flags, other_cells) from its judged cells.
-void build_measure_layout(DgHarmonicGuard& g);
+/// Fills the guard's measure layout (simplex_nodes, simplex_flags, other_cells)
+/// from its judged cells, the simplices' flags signed by `simplex_orientation`.
+void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation);
+/// dominant_orientations of the guard's mesh, counted in the layout's order.
+std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g);
+/// The first simplex of the mesh (cells.size() when there is none).
+std::size_t first_simplex(const DgHarmonicGuard& g);
 }  // namespace
 
 std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
@@ -37,10 +42,6 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
     guard->mesh.cells = cells;
     guard->boundary = boundary;
     guard->laplacian_options = laplacian;
-    // Judged as `dgwarp quality` judges a mesh on its own: against the
-    // majority orientation of each cell type. A cell already inverted or
-    // flat in the original is not the step's doing and is not judged.
-    guard->orientations = dominant_orientations(guard->mesh);
     std::vector<std::uint8_t> on_boundary(points.size() / static_cast<std::size_t>(dim), 0);
     for (NodeId n : boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
     guard->judged.resize(cells.size());
@@ -50,13 +51,22 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
                                      [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
         guard->judged[c] = all ? 2 : 1;
     }
-    build_measure_layout(*guard);
+    // Judged as `dgwarp quality` judges a mesh on its own: against the
+    // majority orientation of each cell type (dominant_orientations), here
+    // counted on the layout's Morton order, which gathers far fewer points
+    // from memory than the mesh's. A cell already inverted or flat in the
+    // original is not the step's doing and is not judged.
+    build_measure_layout(*guard, 1);
+    guard->orientations = layout_orientations(*guard);
+    if (guard->simplex_flags.size() > 0 && guard->orientations[first_simplex(*guard)] < 0)
+        for (std::int8_t& f : guard->simplex_flags) f = static_cast<std::int8_t>(-f);
     const GuardMeasure original = measure_for_guard(*guard, points);
     if (original.inverted > 0) {
         const std::vector<double> quality = cell_qualities(guard->mesh, guard->orientations);
         for (std::size_t c = 0; c < quality.size(); ++c)
             if (!(quality[c] > 0)) guard->judged[c] = 0;
-        build_measure_layout(*guard);
+        const std::size_t simplex = first_simplex(*guard);
+        build_measure_layout(*guard, simplex < cells.size() ? guard->orientations[simplex] : 1);
         guard->original_min = measure_for_guard(*guard, points).min_quality;
     } else {
         guard->original_min = original.min_quality;
@@ -176,7 +186,7 @@ inline void measure_simplex(const DgHarmonicGuard& g, std::span<const double> po
     if (key < m.key) m.key = key, m.simplex = s;
 }
 
-void build_measure_layout(DgHarmonicGuard& g) {
+void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation) {
     const ElementList& cells = g.mesh.cells;
     const CellType simplex = simplex_type(g.mesh.dim);
     const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
@@ -206,8 +216,60 @@ void build_measure_layout(DgHarmonicGuard& g) {
         const auto nodes = cells.nodes_of(c);
         const auto s = static_cast<std::size_t>(start[rank[static_cast<std::size_t>(nodes[0])]]++);
         std::copy(nodes.begin(), nodes.end(), g.simplex_nodes.begin() + static_cast<std::ptrdiff_t>(s * corners));
-        g.simplex_flags[s] = static_cast<std::int8_t>(g.orientations[c] * g.judged[c]);
+        g.simplex_flags[s] = static_cast<std::int8_t>(simplex_orientation * g.judged[c]);
     }
+}
+
+std::size_t first_simplex(const DgHarmonicGuard& g) {
+    const CellType simplex = simplex_type(g.mesh.dim);
+    const auto& types = g.mesh.cells.types;
+    return static_cast<std::size_t>(std::find(types.begin(), types.end(), simplex) - types.begin());
+}
+
+std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g) {
+    const ElementList& cells = g.mesh.cells;
+    const CellType simplex = simplex_type(g.mesh.dim);
+    const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
+    const auto d = static_cast<std::size_t>(g.mesh.dim);
+    // Balance of +1 over -1 cells per type, as dominant_orientations counts
+    // it (cell_orientation of each cell), the simplices in fixed blocks.
+    constexpr std::int64_t block = 1 << 14;
+    const auto simplices = static_cast<std::int64_t>(g.simplex_flags.size());
+    const std::int64_t blocks = (simplices + block - 1) / block;
+    std::vector<std::int64_t> parts(static_cast<std::size_t>(blocks), 0);
+    parallel_for(
+        blocks,
+        [&](std::int64_t b) {
+            std::int64_t sum = 0;
+            std::array<double, 12> coords{};
+            for (std::int64_t s = b * block; s < std::min(simplices, (b + 1) * block); ++s) {
+                const NodeId* v = g.simplex_nodes.data() + static_cast<std::size_t>(s) * corners;
+                for (std::size_t i = 0; i < corners; ++i)
+                    for (std::size_t k = 0; k < d; ++k)
+                        coords[i * d + k] = g.mesh.points[static_cast<std::size_t>(v[i]) * d + k];
+                sum += cell_orientation(simplex, std::span<const double>(coords.data(), corners * d), g.mesh.dim);
+            }
+            parts[static_cast<std::size_t>(b)] = sum;
+        },
+        1);
+    std::array<std::int64_t, std::size(all_cell_types)> balance{};
+    for (std::int64_t p : parts) balance[static_cast<std::size_t>(simplex)] += p;
+    // The layout holds the judged cells; the others (all of them, judged or
+    // not, that are not in it) are counted one by one, as dominant_orientations does.
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        if (g.judged[c] && cells.types[c] == simplex) continue;
+        std::array<double, 24> coords{};
+        const auto nodes = cells.nodes_of(c);
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+            for (std::size_t k = 0; k < d; ++k)
+                coords[i * d + k] = g.mesh.points[static_cast<std::size_t>(nodes[i]) * d + k];
+        balance[static_cast<std::size_t>(cells.types[c])] +=
+            cell_orientation(cells.types[c], std::span<const double>(coords.data(), nodes.size() * d), g.mesh.dim);
+    }
+    std::vector<std::int8_t> orientation(cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c)
+        orientation[c] = balance[static_cast<std::size_t>(cells.types[c])] < 0 ? -1 : 1;
+    return orientation;
 }
 
 }  // namespace
