@@ -22,9 +22,15 @@ void with_gmsh(const std::string& what, int threads, const std::function<void()>
     } catch (const std::exception& e) {
         gmsh::finalize();
         throw MeshError(what + ": Gmsh failed: " + e.what());
-    } catch (...) {  // Gmsh 4.8 may throw a plain value
+    } catch (...) {  // Gmsh 4.8 may throw a plain value; its message is its last error
+        std::string error;
+        try {
+            gmsh::logger::getLastError(error);
+        } catch (...) {
+            error.clear();
+        }
         gmsh::finalize();
-        throw MeshError(what + ": Gmsh failed");
+        throw MeshError(what + ": Gmsh failed" + (error.empty() ? std::string() : ": " + error));
     }
     gmsh::finalize();
 }
