@@ -3,6 +3,9 @@
 # Open MPI (libopenmpi-dev, openmpi-bin): the dgwarp_mpi library, `mpirun dgwarp`
 # and the MPI tests (docs/MPI.md); without it they are skipped. strace: the MPI
 # test that each process opens only its own processor folder of an OpenFOAM case.
+# libsuitesparse-dev: CHOLMOD, the laplacian method's 3D factorisation;
+# libopenblas0-serial: its dense blocks (3.5 x the reference BLAS; serial, so
+# results do not depend on a BLAS thread count).
 # Idempotent: prints nothing and touches nothing when everything is present.
 # `install-deps.sh fuzz` also installs what scripts/fuzz.sh needs (clang,
 # libFuzzer and the sanitizer runtimes, LLVM's OpenMP).
@@ -11,7 +14,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3 python3-jsonschema
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libeigen3-dev libmetis-dev libnanoflann-dev libcli11-dev nlohmann-json3-dev
+  libeigen3-dev libmetis-dev libsuitesparse-dev libopenblas0-serial libnanoflann-dev libcli11-dev nlohmann-json3-dev
   libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
   libcgns-dev cgns-convert
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
