@@ -243,3 +243,29 @@ TEST(DgHarmonicGuard, RefusesABarThatIsNotAFractionBelowOne) {
         EXPECT_NE(std::string(e.what()).find("cell 0"), std::string::npos) << e.what();
     }
 }
+
+TEST(DgHarmonicGuard, A3dMeshAboveTheNodeLimitIsNotSolvedAgainAndTheReportSaysWhy) {
+    // The store dropped and pitched 30°: with a bar of 0.9 × the original minimum
+    // the one pass is below it; a node limit under the mesh's nodes keeps the
+    // one pass (no laplacian solve), says why, and redo_max_nodes_3d must not
+    // be negative.
+    const Scene s = case_scene("store", "drop-pitch-30");
+    ASSERT_FALSE(s.motion.empty());
+    MethodOptions small = redo_below(0.9);
+    small.dg_harmonic.redo_max_nodes_3d = static_cast<std::int64_t>(s.mesh.num_points()) - 1;
+    const Plan plan = prepare(Method::dg_harmonic, 3, s.mesh.points, s.mesh.cells, s.boundary.boundary, small);
+    std::vector<double> guarded(s.mesh.points.size()), one_pass(s.mesh.points.size());
+    const StepReport r = deform(plan, s.mesh.points, s.motion, guarded, redo_below(0.9));
+    ASSERT_TRUE(r.guard.checked);
+    EXPECT_LT(r.guard.one_pass.min_quality, r.guard.bar);
+    EXPECT_FALSE(r.guard.redone);
+    EXPECT_FALSE(r.guard.kept_redo);
+    EXPECT_NE(r.guard.redo_error.find(std::to_string(s.mesh.num_points()) + " nodes"), std::string::npos)
+        << r.guard.redo_error;
+    EXPECT_NE(guard_summary(r.guard).find("not solved again"), std::string::npos) << guard_summary(r.guard);
+    deform(plan, s.mesh.points, s.motion, one_pass, redo_below(-1));
+    EXPECT_EQ(guarded, one_pass);
+    MethodOptions negative;
+    negative.dg_harmonic.redo_max_nodes_3d = -1;
+    EXPECT_THROW(prepare(Method::dg_harmonic, 3, s.mesh.points, s.mesh.cells, s.boundary.boundary, negative), Error);
+}

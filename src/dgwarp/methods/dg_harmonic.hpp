@@ -79,6 +79,12 @@ struct DgHarmonicOptions {
     /// to this many (at most laplacian's own max_increments; a step that
     /// folds even so has cost 4 + 8 + ... + 64 solves). Prepare time.
     int redo_max_increments = 64;
+    /// The guard solves a 3D step again only on meshes of at most this many
+    /// nodes: the laplacian factorises the 3D elasticity stiffness at every
+    /// increment, and its cost grows about as the square of the nodes (12 s
+    /// for 4 increments at 21.7k nodes, one thread; hours at 865k). Above it
+    /// the one pass stays and the report says why (redo_error). 2D: no limit.
+    std::int64_t redo_max_nodes_3d = 100000;
 };
 
 /// What prepare_dg_harmonic found, and how long its stages took.

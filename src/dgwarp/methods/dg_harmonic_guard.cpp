@@ -371,6 +371,14 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
         r.boundary_folds = true;
         return r;
     }
+    const auto nodes = static_cast<std::int64_t>(guard.mesh.num_points());
+    if (plan.dim == 3 && nodes > plan.options.redo_max_nodes_3d) {
+        // Not redone (redone stays false): the report says why.
+        r.redo_error = "the mesh has " + std::to_string(nodes) + " nodes, more than the guard solves again in 3D (" +
+                       std::to_string(plan.options.redo_max_nodes_3d) +
+                       "): a laplacian solve of this size would take many minutes";
+        return r;
+    }
     r.redone = true;
     Stopwatch sw;
     std::vector<double> redo(out.size());
@@ -418,6 +426,7 @@ std::string guard_summary(const DgHarmonicGuardReport& r) {
         return s.str() + ": kept, not solved again (the boundary motion itself folds " +
                std::to_string(r.one_pass.inverted_on_boundary) + " cell" +
                (r.one_pass.inverted_on_boundary == 1 ? "" : "s") + ")";
+    if (!r.redone && !r.redo_error.empty()) return s.str() + ": kept, not solved again (" + r.redo_error + ")";
     if (!r.redone) return s.str() + ": kept";
     s << ": solved again by laplacian";
     if (!r.redo_error.empty()) {

@@ -97,7 +97,10 @@ struct DgHarmonicGuardReport {
     bool kept_redo = false;      // the laplacian result was better and is the one written
     int increments = 0;          // laplacian's increments (when redone)
     GuardMeasure redo;           // laplacian's measure (when redone and its solve succeeded)
-    std::string redo_error;      // why laplacian's solve failed (when it did; the one pass is kept)
+    /// Why laplacian's solve failed (redone) or was not tried although the
+    /// step is below the bar (not redone: a 3D mesh above redo_max_nodes_3d);
+    /// the one pass is kept.
+    std::string redo_error;
     double redo_seconds = 0;     // the time laplacian's solve and measure took
 };
 

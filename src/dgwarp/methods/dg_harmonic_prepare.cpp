@@ -287,6 +287,9 @@ void check_dg_harmonic_options(const DgHarmonicOptions& options) {
     for (const auto& [name, value] : {std::pair{"rigid_zone", options.rigid_zone}, std::pair{"rigid_gap", options.rigid_gap}})
         if (!std::isfinite(value))
             throw Error(std::string("DG-harmonic: ") + name + " must be finite, got " + std::to_string(value));
+    if (!(options.redo_max_nodes_3d >= 0))
+        throw Error("DG-harmonic: redo_max_nodes_3d must not be negative, got " +
+                    std::to_string(options.redo_max_nodes_3d));
     if (!(options.redo_max_increments >= 1 && options.redo_max_increments <= 64))
         throw Error("DG-harmonic: redo_max_increments must be 1 to 64, got " + std::to_string(options.redo_max_increments));
     if (std::isnan(options.redo_below) || options.redo_below >= 1)
