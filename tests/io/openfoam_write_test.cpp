@@ -5,10 +5,12 @@
 
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "io/openfoam_test_support.hpp"
 
@@ -266,4 +268,22 @@ TEST(OpenFoamWrite, MeshesAPolyMeshCannotHoldAreRefusedBeforeWriting) {
     Mesh named = mixed;
     named.markers[0].name = "two words";
     refused(named, "cannot name an OpenFOAM patch");
+}
+
+TEST(OpenFoamWrite, RefusesCountsItsThirtyTwoBitLabelsCannotHold) {
+    // owner/neighbour hold cell numbers and a binary faces file the offsets
+    // of its faceCompactList, all 32-bit: the writer narrowed them unchecked.
+    constexpr std::int64_t most = 2147483647;
+    EXPECT_NO_THROW(foam::check_label_size(most, most));
+    for (const auto& [cells, entries, what] :
+         {std::tuple{most + 1, std::int64_t{8}, "2147483648 cells"},
+          std::tuple{std::int64_t{8}, most + 1, "2147483648 face-node entries"}}) {
+        try {
+            foam::check_label_size(cells, entries);
+            FAIL() << "no error for " << what;
+        } catch (const MeshError& e) {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("32-bit"), std::string::npos) << e.what();
+        }
+    }
 }

@@ -1,5 +1,6 @@
 // OpenFOAM's faces from the cells of a mesh (openfoam_poly_mesh.hpp), for the writer.
 #include <algorithm>
+#include <limits>
 #include <span>
 #include <string>
 
@@ -50,6 +51,7 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
                         "OpenFOAM's extrudeMesh)");
     validate(mesh);
     const auto ncells = static_cast<std::int64_t>(mesh.cells.size());
+    check_label_size(ncells, 0);
     std::vector<KeyedFace> all;
     all.reserve(mesh.cells.size() * 6);
     for (std::int64_t c = 0; c < ncells; ++c) {
@@ -108,7 +110,7 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
     const auto add_face = [&pm](std::span<const NodeId> nodes, std::int64_t owner) {
         pm.face_nodes.insert(pm.face_nodes.end(), nodes.begin(), nodes.end());
         pm.face_offsets.push_back(static_cast<std::int64_t>(pm.face_nodes.size()));
-        pm.owner.push_back(static_cast<std::int32_t>(owner));
+        pm.owner.push_back(static_cast<std::int32_t>(owner));  // in range: check_label_size above
     };
     for (const Internal& f : internal) {
         NodeId face[4];
@@ -167,7 +169,18 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
         }
         pm.patches.push_back(std::move(patch));
     }
+    check_label_size(ncells, static_cast<std::int64_t>(pm.face_nodes.size()));
     return pm;
+}
+
+void check_label_size(std::int64_t cells, std::int64_t face_node_entries) {
+    constexpr std::int64_t most = std::numeric_limits<std::int32_t>::max();
+    const auto refuse = [](std::int64_t n, const char* what) {
+        throw MeshError("the mesh has " + std::to_string(n) + " " + what +
+                        ", more than the 32-bit labels of an OpenFOAM polyMesh hold (2147483647)");
+    };
+    if (cells > most) refuse(cells, "cells");
+    if (face_node_entries > most) refuse(face_node_entries, "face-node entries in its faces");
 }
 
 }  // namespace dgwarp::foam

@@ -134,6 +134,13 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
 /// shared by more than two cells, two cells sharing a face with the same
 /// orientation (one of them is inverted), a marker element that is not a
 /// boundary face of the cells, or a boundary face in two markers.
+/// Also throws MeshError when the polyMesh does not fit check_label_size.
 PolyMesh faces_from_cells(const Mesh& mesh);
+
+/// The polyMesh files dgwarp writes hold 32-bit labels (Debian's OpenFOAM,
+/// WM_LABEL_SIZE=32): cell numbers in owner and neighbour, and in a binary
+/// faces file the offsets of its faceCompactList. Throws MeshError, naming
+/// the count, when `cells` or `face_node_entries` exceeds 2^31 - 1.
+void check_label_size(std::int64_t cells, std::int64_t face_node_entries);
 
 }  // namespace dgwarp::foam

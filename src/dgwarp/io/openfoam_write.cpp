@@ -50,6 +50,7 @@ std::string faces_text(const foam::PolyMesh& pm, Format format) {
     if (format == Format::binary) {
         // faceCompactList: the N + 1 offsets, then every face's point labels.
         foam::write_header(out, format, "faceCompactList", poly_mesh_location, "faces");
+        // In range: faces_from_cells checks them (check_label_size).
         std::vector<std::int32_t> offsets(pm.face_offsets.begin(), pm.face_offsets.end());
         write_labels(out, offsets, format);
         out << "\n\n";
