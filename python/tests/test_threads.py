@@ -159,3 +159,30 @@ def test_dg_idw_and_dg_harmonic_steps_report_progress_per_block(grid):
         seen = []
         plan.deform(translation=squeeze(plan), progress=seen.append)
         assert len(seen) > 2 and seen == sorted(seen) and seen[-1] == 1.0, method
+
+
+def test_threads_making_gmsh_cases_and_writing_cgns_at_once_get_what_one_thread_gets(tmp_path):
+    # Gmsh (dgwarp.case) and libcgns keep process-wide state, and these calls release the GIL:
+    # the library runs one Gmsh session and one CGNS file at a time, whatever thread asks.
+    expected = dgwarp.case("naca0012")
+    expected.write(tmp_path / "expected.cgns")
+    reference = dgwarp.read(tmp_path / "expected.cgns")
+    results, errors = [None] * 4, []
+
+    def work(k):
+        try:
+            mesh = dgwarp.case("naca0012")
+            mesh.write(tmp_path / f"thread{k}.cgns")
+            results[k] = (mesh, dgwarp.read(tmp_path / f"thread{k}.cgns"))
+        except Exception as e:  # noqa: BLE001 (reported below)
+            errors.append(e)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert errors == []
+    for mesh, read_back in results:
+        assert np.array_equal(mesh.points, expected.points)
+        assert np.array_equal(read_back.points, reference.points)

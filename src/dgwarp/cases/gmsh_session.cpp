@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <exception>
+#include <mutex>
 #include <unordered_map>
 
 #include "dgwarp/core/error.hpp"
@@ -11,6 +12,10 @@
 namespace dgwarp::detail {
 
 void with_gmsh(const std::string& what, int threads, const std::function<void()>& build) {
+    // Gmsh's model and options are process-wide: one session at a time,
+    // whatever thread asks (Python releases the GIL around dgwarp.case).
+    static std::mutex one_session;
+    const std::lock_guard<std::mutex> lock(one_session);
     gmsh::initialize();
     try {
         gmsh::option::setNumber("General.Terminal", 0);

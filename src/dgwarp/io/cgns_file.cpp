@@ -177,7 +177,15 @@ std::string library_error() {
     return m && *m ? m : "unknown libcgns error";
 }
 
-OpenFile::OpenFile(const std::filesystem::path& path, int mode, std::string shown_name) : name_(std::move(shown_name)) {
+namespace {
+std::recursive_mutex& library_mutex() {
+    static std::recursive_mutex m;
+    return m;
+}
+}  // namespace
+
+OpenFile::OpenFile(const std::filesystem::path& path, int mode, std::string shown_name)
+    : lock_(library_mutex()), name_(std::move(shown_name)) {
     install_quiet_handler();
     if (mode == CG_MODE_READ || mode == CG_MODE_MODIFY) {
         std::error_code ec;

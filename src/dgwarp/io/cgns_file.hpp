@@ -3,6 +3,7 @@
 // closed on every path, and the checks that turn libcgns's failures into
 // dgwarp's errors naming the file.
 #include <filesystem>
+#include <mutex>
 #include <string>
 
 #include "dgwarp/mesh/cell_type.hpp"
@@ -31,6 +32,11 @@ public:
     void close();
 
 private:
+    /// libcgns keeps process-wide state (its table of open files, its last
+    /// error): one file is open at a time in the process, whatever thread
+    /// opens it (recursive: one thread may open a second, e.g. the input of
+    /// an output it copies). Held from before the open to after the close.
+    std::unique_lock<std::recursive_mutex> lock_;
     int fn_ = -1;
     std::string name_;
 };
