@@ -19,6 +19,7 @@
 #include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/vtu.hpp"
 
 namespace dgwarp::fuzz {
 
@@ -88,6 +89,17 @@ void check_gmsh(std::span<const std::uint8_t> data) {
         }
         require(read_gmsh_text("fuzz-written.msh", out.str()) == mesh, "Gmsh write then read changed the mesh");
     }
+}
+
+void check_vtu(std::span<const std::uint8_t> data) {
+    const Mesh mesh = read_vtu_text("fuzz.vtu", as_text(data));
+    std::ostringstream out;
+    try {
+        write_vtu(out, mesh);
+    } catch (const Error&) {
+        return;  // a mesh the writer cannot store
+    }
+    require(read_vtu_text("fuzz-written.vtu", out.str()) == mesh, "VTU write then read changed the mesh");
 }
 
 void check_openfoam(std::span<const std::uint8_t> data) {

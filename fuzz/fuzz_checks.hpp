@@ -26,6 +26,10 @@ struct PropertyViolation : std::logic_error {
 /// must survive write_su2 then read_su2_text unchanged.
 void check_su2(std::span<const std::uint8_t> data);
 
+/// read_vtu_text; a mesh read must survive write_vtu then read_vtu_text
+/// unchanged (unless the writer refuses it with a dgwarp::Error).
+void check_vtu(std::span<const std::uint8_t> data);
+
 /// read_gmsh_text; a mesh read must survive write_gmsh (4.1 and 2.2) then
 /// read_gmsh_text unchanged (unless the writer refuses it with a dgwarp::Error).
 void check_gmsh(std::span<const std::uint8_t> data);

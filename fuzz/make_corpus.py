@@ -263,6 +263,28 @@ def main():
         subprocess.run([cli, "convert", "-q", tmp / "base_2d.su2", tmp / "base_2d.cgns"], check=True)
         write("cgns", "base_2d.cgns", (tmp / "base_2d.cgns").read_bytes())
 
+    # VTU: dgwarp's writer (binary, markers in FieldData) and meshio's (ascii,
+    # and binary with zlib; markers as gmsh:physical cell data).
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = pathlib.Path(tmp)
+        for stem in ("quad_grid_2d", "mixed_3d"):
+            out = tmp / f"{stem}.vtu"
+            subprocess.run([cli, "convert", "-q", CORPUS / "su2" / f"{stem}.su2", out], check=True)
+            write("vtu", out.name, out.read_bytes())
+        import meshio  # Debian's python3-meshio
+        import numpy as np
+
+        tet = meshio.Mesh(
+            np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]]),
+            [("tetra", np.array([[0, 1, 2, 3], [1, 2, 3, 4]])), ("triangle", np.array([[0, 1, 2]]))],
+            cell_data={"gmsh:physical": [np.array([1, 1]), np.array([7])]},
+            field_data={"bottom": np.array([7, 2])},
+        )
+        for name, options in {"tet_ascii.vtu": {"binary": False},
+                              "tet_zlib.vtu": {"binary": True, "compression": "zlib"}}.items():
+            meshio.write(tmp / name, tet, file_format="vtu", **options)
+            write("vtu", name, (tmp / name).read_bytes())
+
     total = sum(p.stat().st_size for p in CORPUS.rglob("*") if p.is_file())
     print(f"wrote {sum(1 for p in CORPUS.rglob('*') if p.is_file())} seeds, {total} bytes, in {CORPUS}")
 

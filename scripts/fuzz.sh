@@ -3,7 +3,7 @@
 #
 #   scripts/fuzz.sh [SECONDS] [TARGETS...]
 #
-# SECONDS per target (default 60); TARGETS among su2 gmsh openfoam cgns motion plan (default:
+# SECONDS per target (default 60); TARGETS among su2 gmsh vtu openfoam cgns motion plan (default:
 # all). FUZZ_JOBS=2 runs two targets at a time (each fuzzer uses one core).
 # Builds in build-fuzz/ (DGWARP_FUZZ=ON, clang++). Each target starts from its
 # seed corpus fuzz/corpus/<target>/ and the inputs found in earlier runs
@@ -18,17 +18,17 @@ root=$(pwd)
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(su2 gmsh openfoam cgns motion plan)
+[ ${#targets[@]} -eq 0 ] && targets=(su2 gmsh vtu openfoam cgns motion plan)
 jobs=${FUZZ_JOBS:-1}
 build=build-fuzz
 
 case "$seconds" in
-  ''|*[!0-9]*) echo "usage: scripts/fuzz.sh [SECONDS] [su2|gmsh|openfoam|cgns|motion|plan ...]" >&2; exit 2 ;;
+  ''|*[!0-9]*) echo "usage: scripts/fuzz.sh [SECONDS] [su2|gmsh|vtu|openfoam|cgns|motion|plan ...]" >&2; exit 2 ;;
 esac
 for t in "${targets[@]}"; do
   case "$t" in
-    su2|gmsh|openfoam|cgns|motion|plan) ;;
-    *) echo "fuzz.sh: unknown target '$t' (su2, gmsh, openfoam, cgns, motion, plan)" >&2; exit 2 ;;
+    su2|gmsh|vtu|openfoam|cgns|motion|plan) ;;
+    *) echo "fuzz.sh: unknown target '$t' (su2, gmsh, vtu, openfoam, cgns, motion, plan)" >&2; exit 2 ;;
   esac
 done
 
@@ -49,6 +49,7 @@ cmake --build "$build" -j "${FUZZ_BUILD_JOBS:-2}" --target "${targets[@]/#/fuzz_
 max_len() {
   case "$1" in
     su2|gmsh) echo 16384 ;;
+    vtu) echo 32768 ;;
     openfoam) echo 32768 ;;
     cgns) echo 65536 ;;  # HDF5 files are large: the seeds are 12-33 KB
     motion) echo 4096 ;;
@@ -59,6 +60,7 @@ dict() {
   case "$1" in
     su2) echo fuzz/dict/su2.dict ;;
     gmsh) echo fuzz/dict/gmsh.dict ;;
+    vtu) echo fuzz/dict/vtu.dict ;;
     openfoam) echo fuzz/dict/openfoam.dict ;;
     cgns) echo fuzz/dict/cgns.dict ;;
     motion) echo fuzz/dict/json.dict ;;

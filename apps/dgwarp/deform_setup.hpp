@@ -101,8 +101,8 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
 /// in the input (in.original_quality, its worst cell named), if any.
 void warn_already_inverted(Inputs& in);
 
-/// A method's plan for the inputs: built, or loaded from `plan_file` (DG-IDW
-/// only) and checked to fit the mesh and boundary.
+/// A method's plan for the inputs: built, or loaded from `plan_file` (a DG-IDW
+/// or DG-harmonic plan file) and checked to fit the mesh and boundary.
 struct PlannedMethod {
     Method method = Method::dg_idw;
     MethodOptions options;

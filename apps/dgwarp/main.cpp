@@ -47,8 +47,9 @@ int main(int argc, char** argv) {
     struct StopTheOtherRanks {
         ~StopTheOtherRanks() { mpi_stop(); }
     } stop_the_other_ranks;
-    CLI::App app{"dgwarp: deform CFD volume meshes to follow moving and deforming boundaries\n"
-                 "(Delaunay-graph inverse distance weighting, Wang, Qin & Zhao)."};
+    CLI::App app{"dgwarp: deform CFD volume meshes to follow moving and deforming boundaries.\n"
+                 "Methods: dg-harmonic (the default, with its guard), the paper's DG-IDW (Delaunay-graph\n"
+                 "inverse distance weighting, Wang, Qin & Zhao), DGM, IDW, RBF and the laplacian reference."};
     app.name("dgwarp");
     app.require_subcommand(1);
     app.set_version_flag("--version", "dgwarp 0.1.0");

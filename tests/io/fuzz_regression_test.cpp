@@ -71,6 +71,12 @@ TEST(FuzzRegression, Gmsh) {
     EXPECT_EQ(replay(seeds("gmsh"), fuzz::check_gmsh), 0u);
 }
 
+TEST(FuzzRegression, Vtu) {
+    // Every seed (dgwarp's and meshio's writers: binary, ascii, zlib) is read
+    // and survives write_vtu then read_vtu_text.
+    EXPECT_EQ(replay(seeds("vtu"), fuzz::check_vtu), 0u);
+}
+
 TEST(FuzzRegression, OpenFoam) {
     // Every hand-made hostile input fails cleanly; every seed is read.
     const std::size_t hostile = files_in(regressions("openfoam")).size();
