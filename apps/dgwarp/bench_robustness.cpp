@@ -16,9 +16,9 @@
 
 #include "dgwarp/cases/child_process.hpp"
 #include "dgwarp/cases/random_scene.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"

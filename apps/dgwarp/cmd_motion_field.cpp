@@ -6,8 +6,8 @@
 
 #include "commands.hpp"
 #include "deform_setup.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/openfoam.hpp"
 #include "output_files.hpp"

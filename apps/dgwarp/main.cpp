@@ -4,8 +4,8 @@
 #include <new>
 
 #include "commands.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "flag_values.hpp"
 #include "mpi_session.hpp"
 #include "report.hpp"

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <variant>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 
 namespace dgwarp::cli {

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "mpi_session.hpp"
 
 namespace dgwarp::cli {

@@ -54,7 +54,7 @@ std::vector<std::string> words(const std::string& line) {
 }
 
 /// read_vtu.py's JSON summary of a VTU file (fails the test when the file is not valid).
-nlohmann::json read_vtu(const std::filesystem::path& file) {
+nlohmann::json vtu_summary(const std::filesystem::path& file) {
     const CommandResult py = run_command(std::string(DGWARP_PYTHON) + " " +
                                          quoted(source_dir() / "tests/tools/read_vtu.py") + " " + quoted(file));
     EXPECT_EQ(py.exit_code, 0) << py.err;
@@ -133,7 +133,7 @@ TEST(Examples, DeformOnceWritesTheLibrarysResultAsAValidVtu) {
     EXPECT_TRUE(has_line(r.out, "wrote deformed.vtu")) << r.out;
 
     const std::vector<double> expected = rect_box_turned(30);
-    nlohmann::json vtu = read_vtu(dir / "deformed.vtu");
+    nlohmann::json vtu = vtu_summary(dir / "deformed.vtu");
     ASSERT_FALSE(vtu.empty());
     EXPECT_EQ(vtu.at("points"), 2340);
     EXPECT_EQ(vtu.at("cells"), 2262);
@@ -153,7 +153,7 @@ TEST(Examples, DeformOnceWritesTheLibrarysResultAsAValidVtu) {
     std::filesystem::remove(dir / "deformed.vtu");
     r = run_example("02_deform_once", dir, "rect_box.su2 turn.json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    vtu = read_vtu(dir / "deformed.vtu");
+    vtu = vtu_summary(dir / "deformed.vtu");
     ASSERT_FALSE(vtu.empty());
     expect_coordinate_sums(vtu, expected);
 
@@ -172,7 +172,7 @@ TEST(Examples, SolverTimeLoopRunsEveryStepAndWritesEveryKthFrame) {
     EXPECT_EQ(lines_starting_with(r.out, "steps 8,").size(), 1u) << r.out;
     EXPECT_TRUE(has_line(r.out, "inverted 0")) << r.out;
     for (const char* written : {"pitch_plunge_0000.vtu", "pitch_plunge_0004.vtu"}) {
-        const nlohmann::json vtu = read_vtu(dir / written);
+        const nlohmann::json vtu = vtu_summary(dir / written);
         ASSERT_FALSE(vtu.empty()) << written;
         EXPECT_EQ(vtu.at("points"), 2340);
     }

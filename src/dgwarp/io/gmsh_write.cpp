@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/gmsh_element_types.hpp"
 #include "dgwarp/io/number_text.hpp"

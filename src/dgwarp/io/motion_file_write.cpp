@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "dgwarp/io/atomic_write.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/io/json_fields.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/number_text.hpp"

@@ -9,8 +9,8 @@
 #include <system_error>
 #include <vector>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
 #include "dgwarp/io/text_reader.hpp"

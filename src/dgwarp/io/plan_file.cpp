@@ -9,9 +9,9 @@
 #include <functional>
 #include <string>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/plan_file_detail.hpp"
 
 namespace dgwarp {

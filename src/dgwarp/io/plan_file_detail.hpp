@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 
 namespace dgwarp::plan_detail {

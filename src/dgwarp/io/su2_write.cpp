@@ -5,8 +5,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/text_reader.hpp"

@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/io/base64.hpp"
 #include "dgwarp/io/vtu.hpp"
 

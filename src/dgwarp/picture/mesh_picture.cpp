@@ -4,8 +4,8 @@
 #include <ostream>
 #include <string>
 
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/atomic_write.hpp"
 #include "dgwarp/picture/cairo_handles.hpp"
 #include "dgwarp/picture/picture_layout.hpp"
 #include "dgwarp/picture/picture_parts.hpp"

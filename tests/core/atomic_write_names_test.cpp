@@ -7,7 +7,7 @@
 #include <iterator>
 #include <string>
 
-#include "dgwarp/io/atomic_write.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;

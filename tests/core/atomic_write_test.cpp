@@ -1,6 +1,6 @@
 // write_file_atomically: a crash, an error or a full disk in the middle of a
 // write never leaves a half-written file where a good one was.
-#include "dgwarp/io/atomic_write.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "dgwarp/io/atomic_write.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
