@@ -119,13 +119,16 @@ std::span<const NodeId> simplex_at(const DgHarmonicGuard& g, std::int64_t s) {
     return {g.simplex_nodes.data() + static_cast<std::size_t>(s) * n, n};
 }
 
-/// Whether a valid simplex's key, numerator / denominator, is below `key`:
-/// one multiplication instead of a division for the cells that are not a
-/// new minimum (most of them). A denominator too small for the product to
-/// be exact (subnormal) or too large (infinite) says yes: the caller divides.
+/// Whether a valid simplex's key, numerator / denominator, may be below
+/// `key`: one multiplication instead of a division for the cells that are
+/// plainly not a new minimum (most of them). A margin of 1e-12 (far above
+/// the few roundings between this product and the caller's quotient) sends
+/// near-ties to the caller, which divides and compares as before, so the
+/// minimum found is the quotient's. A denominator too small for the product
+/// to be exact (subnormal) or too large (infinite) says yes too.
 inline bool below(double numerator, double denominator, double key) {
     return !(denominator >= std::numeric_limits<double>::min()) || !std::isfinite(denominator) ||
-           numerator < key * denominator;
+           numerator < key * denominator * (1 + 1e-12);
 }
 
 /// Updates `m` with simplex `s` of the layout (tetrahedra: the key is q^3 =
