@@ -20,22 +20,12 @@
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
+#include "bench_timing.hpp"
 
 using namespace dgwarp;
+using bench::median_seconds;
 
 namespace {
-
-template <class F>
-double median_seconds(int repeats, F&& f) {
-    std::vector<double> t;
-    for (int r = 0; r < repeats; ++r) {
-        const auto t0 = Clock::now();
-        f();
-        t.push_back(seconds_since(t0));
-    }
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
-}
 
 void run(const Mesh& mesh, const BoundarySet& boundary, const BoundaryMotion& motion, int threads, int steps) {
     set_num_threads(threads);

@@ -24,32 +24,15 @@
 #include "dgwarp/io/plan_file.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
+#include "bench_timing.hpp"
 #include "sphere_box_mesh.hpp"
 
 using namespace dgwarp;
+using bench::median_seconds;
+using bench::time_repeats;
+using bench::Timing;
 
 namespace {
-
-struct Timing {
-    double median = 0, min = 0;  // seconds
-};
-
-template <class F>
-Timing time_repeats(int repeats, F&& f) {
-    std::vector<double> t;
-    for (int r = 0; r < repeats; ++r) {
-        const auto t0 = Clock::now();
-        f();
-        t.push_back(seconds_since(t0));
-    }
-    std::sort(t.begin(), t.end());
-    return {t[t.size() / 2], t[0]};
-}
-
-template <class F>
-double median_seconds(int repeats, F&& f) {
-    return time_repeats(repeats, f).median;
-}
 
 // The least any one-pass method must do: read the plan's per-node arrays and
 // the original coordinates, write every output coordinate.

@@ -21,10 +21,20 @@ double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] 
 
 // The scene's mesh, made by Gmsh in a child process with a time limit (a Gmsh
 // hang or crash fails the test instead of stopping the suite).
-Mesh random_scene_test_mesh(const RandomScene& scene) {
+Mesh random_scene_test_mesh(const RandomScene& scene, int timeout_seconds = 300) {
     const auto file = test::scratch_dir() / ("scene-" + std::to_string(scene.dim) + "-" + std::to_string(scene.seed) + ".msh");
-    run_in_child_process([&] { write_mesh(file, make_random_scene_mesh(scene)); }, 300, "random scene");
+    run_in_child_process([&] { write_mesh(file, make_random_scene_mesh(scene)); }, timeout_seconds, "random scene");
     return read_mesh(file);
+}
+
+// A 3D scene's mesh: the node range, no inverted cell, a non-empty
+// marker per body and the walls.
+void expect_valid_3d_scene_mesh(const RandomScene& scene, const Mesh& m) {
+    EXPECT_GE(m.num_points(), 10000u);
+    EXPECT_LE(m.num_points(), 150000u);
+    EXPECT_EQ(summarize_quality(cell_qualities(m, cell_orientations(m))).inverted, 0);
+    ASSERT_EQ(m.markers.size(), scene.bodies.size() + 1);
+    for (const Marker& marker : m.markers) EXPECT_FALSE(marker.elements.empty()) << marker.name;
 }
 
 // Smallest distance from the moved nodes of `moving` to the nodes of every other marker, brute force.
@@ -142,12 +152,7 @@ TEST(RandomScene, MeshedSceneIsValidWithItsMarkersAndKeepsItsClearance) {
 
 TEST(RandomScene, Meshed3dSceneIsValid) {
     const RandomScene scene = random_scene(3, 2);  // two capsules and a rounded box
-    const Mesh m = random_scene_test_mesh(scene);
-    EXPECT_GE(m.num_points(), 10000u);
-    EXPECT_LE(m.num_points(), 150000u);
-    EXPECT_EQ(summarize_quality(cell_qualities(m, cell_orientations(m))).inverted, 0);
-    ASSERT_EQ(m.markers.size(), scene.bodies.size() + 1);
-    for (const Marker& marker : m.markers) EXPECT_FALSE(marker.elements.empty()) << marker.name;
+    expect_valid_3d_scene_mesh(scene, random_scene_test_mesh(scene));
 }
 
 TEST(RandomScene, Meshed3dWingSceneIsValid) {
@@ -159,12 +164,5 @@ TEST(RandomScene, Meshed3dWingSceneIsValid) {
     const RandomScene scene = random_scene(3, 5);
     ASSERT_TRUE(std::any_of(scene.bodies.begin(), scene.bodies.end(),
                             [](const SceneBody& b) { return b.shape == SceneShape::wing; }));
-    const auto file = test::scratch_dir() / "scene-3-5-wing.msh";
-    run_in_child_process([&] { write_mesh(file, make_random_scene_mesh(scene)); }, 60, "random scene with a wing");
-    const Mesh m = read_mesh(file);
-    EXPECT_GE(m.num_points(), 10000u);
-    EXPECT_LE(m.num_points(), 150000u);
-    EXPECT_EQ(summarize_quality(cell_qualities(m, cell_orientations(m))).inverted, 0);
-    ASSERT_EQ(m.markers.size(), scene.bodies.size() + 1);
-    for (const Marker& marker : m.markers) EXPECT_FALSE(marker.elements.empty()) << marker.name;
+    expect_valid_3d_scene_mesh(scene, random_scene_test_mesh(scene, 60));
 }
