@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
         // plan), then the motion of each boundary node in frame 0.
         const ResolvedBoundary rb = resolve_boundary(mesh, spec);
         const ResolvedFrame frame = resolve_frame(mesh, spec, rb, 0);
-        for (const auto& w : rb.warnings) std::cerr << "warning: " << w << "\n";
-        for (const auto& w : frame.warnings) std::cerr << "warning: " << w << "\n";
+        for (const auto& w : rb.warnings) std::cerr << "warning: " << w.text << "\n";
+        for (const auto& w : frame.warnings) std::cerr << "warning: " << w.text << "\n";
         std::cout << "boundary " << rb.boundary.nodes.size() << " nodes; moving markers:";
         for (const auto& name : rb.moving_markers) std::cout << " " << name;
         std::cout << "\n";

@@ -31,16 +31,17 @@ void run_check(const CheckArgs& a) {
     const std::size_t frames = frame_count(in.spec);
     WarningPrinter printer(text);
     if (text) print_inputs(std::cout, in, frames, printer);
-    std::vector<std::string> warnings = in.boundary.warnings;
+    std::vector<Warning> warnings = in.boundary.warnings;
     // resolve_boundary has already given the warnings of the frames it
     // resolved (a frame list's, step 0 of a periodic motion): once is enough.
-    std::set<std::string> seen(warnings.begin(), warnings.end());
+    std::set<std::string> seen;
+    for (const Warning& w : warnings) seen.insert(w.text);
     Stopwatch sw;
     for (std::size_t k = 0; k < frames; ++k) {
         progress.fraction("checking the frames", static_cast<double>(k) / static_cast<double>(frames));
-        for (const std::string& w : resolve_frame(in.mesh, in.spec, in.boundary, k).warnings) {
-            if (!seen.insert(w).second) continue;
-            printer.print(w, "frame " + std::to_string(k) + ": ");
+        for (const Warning& w : resolve_frame(in.mesh, in.spec, in.boundary, k).warnings) {
+            if (!seen.insert(w.text).second) continue;
+            printer.print(w.text, "frame " + std::to_string(k) + ": ");
             warnings.push_back(w);
         }
     }
@@ -58,7 +59,8 @@ void run_check(const CheckArgs& a) {
                                    {{"read", in.read_seconds},
                                     {"resolve", in.resolve_seconds},
                                     {"frames", frames_seconds}}},
-                                  {"warnings", warnings}};
+                                  {"warnings", warning_texts_json(warnings)},
+                                  {"warning_items", warning_items_json(warnings)}};
         std::cout << j.dump(2) << "\n";
     } else if (text) {
         std::cout << "check     ok: " << frames << " frame" << (frames == 1 ? "" : "s") << " resolved, "

@@ -14,9 +14,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
-#include "dgwarp/repair/last_resort.hpp"
-#include "dgwarp/repair/unrepairable_cells.hpp"
-#include "dgwarp/repair/untangle.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
 #include "frame_output.hpp"
@@ -33,56 +31,6 @@ std::filesystem::path method_output(const std::filesystem::path& out, Method met
     std::filesystem::path p = out;
     p.replace_filename(out.stem().string() + "_" + std::string(method_name(method)) + out.extension().string());
     return p;
-}
-
-/// A frame's per-cell quality and ratio to the original (the output's fields).
-struct FrameQuality {
-    std::vector<double> quality, ratio;
-};
-
-/// After a frame's step: --untangle, or dg-harmonic's last resort, then the
-/// frame's quality. Fills f's repair, quality and timing fields.
-FrameQuality repair_and_measure(const Inputs& in, Method method, const DeformArgs& a, Mesh& deformed, FrameResult& f,
-                                Stopwatch& sw, ProgressLine& progress) {
-    if (a.untangle) {
-        progress.phase(std::string(method_name(method)) + ": untangling");
-        UntangleOptions options;
-        options.target_quality = a.untangle_target;
-        const UntangleReport u =
-            untangle(deformed.dim, deformed.cells, in.own_orientation, in.boundary.boundary.nodes, deformed.points, options);
-        if (u.below_target_before > 0) f.untangled = u;
-        f.untangle_seconds = sw.lap();
-    }
-    FrameQuality q;
-    q.quality = cell_qualities(deformed, in.orientation);
-    const auto& fixed = in.boundary.boundary.nodes;
-    if (method == Method::dg_harmonic && !a.untangle && !a.no_untangle) {
-        // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
-        // folded cells (a moving face bounded by fixed walls), repair them
-        // locally, and say so in the report; not where the boundary motion
-        // itself folds a cell (every node on the boundary: tested).
-        const std::vector<std::int64_t> step_folded = newly_inverted_cells(q.quality, in.original_cell_quality);
-        f.quality_seconds = sw.lap();  // the first measure; the second counts with the repair
-        if (!step_folded.empty()) progress.phase(std::string(method_name(method)) + ": untangling (last resort)");
-        f.untangled = run_last_resort(deformed.dim, deformed.cells, in.own_orientation, fixed, step_folded, deformed.points);
-        if (f.untangled) {
-            f.last_resort = true;
-            q.quality = cell_qualities(deformed, in.orientation);
-        }
-        f.untangle_seconds = sw.lap();
-    }
-    q.ratio = quality_ratios(q.quality, in.original_cell_quality);
-    f.quality = summarize_quality(q.quality);
-    f.ratio = summarize_ratios(q.ratio);
-    // Cells already inverted or degenerate in the input are not the motion's doing.
-    const std::vector<std::int64_t> folded = newly_inverted_cells(q.quality, in.original_cell_quality);
-    f.inverted_by_motion = static_cast<std::int64_t>(folded.size());
-    f.worst_inverted = worst_cells(folded, q.quality, 10);
-    const std::vector<std::int64_t> on_boundary = cells_with_only_fixed_nodes(deformed.cells, fixed, folded);
-    f.inverted_on_boundary = static_cast<std::int64_t>(on_boundary.size());
-    f.worst_on_boundary = worst_cells(on_boundary, q.quality, 10);
-    f.quality_seconds += sw.lap();
-    return q;
 }
 
 /// The run's plan (built or loaded); false, with the run's error set, when
@@ -104,13 +52,6 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
     return false;
 }
 
-/// The run's options for a frame: DG-harmonic's guard off when the boundary
-/// motion itself turns `folded_faces` faces over (no redo can mend that).
-MethodOptions guard_options(MethodOptions options, std::int64_t folded_faces) {
-    if (folded_faces > 0) options.dg_harmonic.redo_below = -1;
-    return options;
-}
-
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
                      const std::vector<std::string>& foam_times, ProgressLine& progress, WarningPrinter& warnings) {
@@ -119,7 +60,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
     if (!plan_run(in, method, a, several, progress, run)) return run;
     if (text && !several) print_plan(std::cout, in, run.planned, warnings);
     if (text && several)
-        for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w);
+        for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w.text);
     const auto out = method_output(a.output, method, several);
     const bool foam = !foam_times.empty();
     bool foam_base_written = false;
@@ -128,60 +69,76 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
     WriteOptions write_options;
     write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
     Mesh deformed = in.mesh;
-    for (std::size_t k = 0; k < frames; ++k) {
-        FrameResult f;
-        f.frame = k;
-        f.time = frame_time(in.spec, k);
+    RunOptions options;
+    options.frame.repair = a.untangle ? Repair::untangle : a.no_untangle ? Repair::none : Repair::method_default;
+    options.frame.untangle_target = a.untangle_target;
+    options.stop_at_invalid = false;  // add_frame decides, with --allow-invalid
+    RunCallbacks on;
+    const std::string name(method_name(method));
+    on.frame_started = [&](std::size_t k) {
         // Frame k as in the rows, the JSON and the file names (0-based), and how far the series is.
-        const std::string phase = std::string(method_name(method)) + ": deforming" +
+        const std::string phase = name + ": deforming" +
                                   (frames > 1 ? " frame " + std::to_string(k) + " (" + std::to_string(k + 1) + " of " +
                                                     std::to_string(frames) + ")"
                                               : "");
         progress.phase(phase);
-        const ResolvedFrame motion = resolve_frame(in.mesh, in.spec, in.boundary, k);
-        f.warnings = motion.warnings;
-        Stopwatch sw;  // the deform time is the method's step alone
-        try {
-            if (run.planned.distributed)
-                f.step = mpi_deform(*run.planned.distributed, motion.motion, deformed.points, f.process_seconds);
-            else
+        return progress.reporter(phase);
+    };
+    on.repair_started = [&](std::size_t) { progress.phase(name + ": untangling" + (a.untangle ? "" : " (last resort)")); };
+    // Errors of a step end this method's run (the others go on with --method
+    // all); errors anywhere else (reading a frame's motion, writing) end the command.
+    bool in_step = false;
+    std::vector<double> process_seconds;
+    on.step = [&](const ResolvedFrame& motion, std::span<double> out, const ProgressFn& report) {
+        in_step = true;
+        const StepReport step =
+            run.planned.distributed
+                ? mpi_deform(*run.planned.distributed, motion.motion, out, process_seconds)
                 // A frame whose boundary motion turns faces over (warned): no volume
                 // method mends their cells, so DG-harmonic's guard does not try.
-                f.step = deform(run.planned.plan, in.mesh.points, motion.motion, deformed.points,
-                                guard_options(run.planned.options, motion.folded_faces), progress.reporter(phase));
-        } catch (const InvalidResultError& e) {
-            if (!several) throw;
-            run.error = e.what();
-            run.invalid = true;
-            break;
-        } catch (const Error& e) {
-            if (!several) throw;
-            run.error = e.what();
-            run.invalid = run.failed = true;
-            break;
-        }
-        f.deform_seconds = sw.lap();
-        const std::vector<std::string> step_warning_texts = step_warnings(f.step);
-        f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
-        const FrameQuality measured = repair_and_measure(in, method, a, deformed, f, sw, progress);
-        const bool invalid = f.inverted_by_motion > 0;
+                : deform(run.planned.plan, in.mesh.points, motion.motion, out,
+                         step_options(run.planned.options, motion.folded_faces), report);
+        in_step = false;
+        return step;
+    };
+    on.frame_done = [&](const FrameView& v) {
+        FrameResult f;
+        static_cast<FrameReport&>(f) = v.report;
+        f.frame = v.frame;
+        f.time = v.time;
+        f.process_seconds = process_seconds;
+        Stopwatch sw;
+        const bool invalid = !f.valid();
         if ((!invalid || a.allow_invalid) && foam) {
-            if (!foam_base_written) write_foam_base(in, out, foam_times[k]);
+            if (!foam_base_written) write_foam_base(in, out, foam_times[v.frame]);
             foam_base_written = true;
-            f.output = write_foam_points(in, out, foam_times[k], deformed.points).string();
+            f.output = write_foam_points(in, out, foam_times[v.frame], v.points).string();
             f.write_seconds = sw.lap();
         } else if (!invalid || a.allow_invalid) {
-            const auto path = frame_path(out, k, frames);
-            write_mesh(path, deformed, deformation_fields(in.mesh, deformed.points, measured.quality, measured.ratio),
+            const auto path = frame_path(out, v.frame, frames);
+            std::copy(v.points.begin(), v.points.end(), deformed.points.begin());
+            write_mesh(path, deformed, deformation_fields(in.mesh, v.points, v.cells.quality, v.cells.ratio),
                        write_options);
             f.output = path.string();
             f.write_seconds = sw.lap();
         }
         if (text && !several) {
             progress.clear();
-            print_frame(in, f, motion.warnings, step_warning_texts, frames, warnings);
+            print_frame(in, f, frames, warnings);
         }
-        if (!add_frame(run, std::move(f), a.allow_invalid)) break;
+        return add_frame(run, std::move(f), a.allow_invalid);
+    };
+    try {
+        run_frames(RunContext{in.mesh, in.spec, in.boundary, in.original, run.planned.plan, run.planned.options}, options,
+                   on);
+    } catch (const InvalidResultError& e) {
+        if (!several || !in_step) throw;
+        run.error = e.what();
+        run.invalid = true;
+    } catch (const Error& e) {
+        if (!several || !in_step) throw;
+        run.error = e.what();
+        run.invalid = run.failed = true;
     }
     progress.clear();
     return run;
@@ -191,8 +148,8 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
     std::cout << "\nmethod       prepare     deform     min quality  mean quality  inverted  ratio min   status\n";
     char line[256];
     std::snprintf(line, sizeof line, "%-11s  %9s  %9s  %11.4f  %12.4f  %8lld  %9s   %s\n", "original", "", "",
-                  in.original_quality.min, in.original_quality.mean,
-                  static_cast<long long>(in.original_quality.inverted), "", "");
+                  in.original.summary.min, in.original.summary.mean,
+                  static_cast<long long>(in.original.summary.inverted), "", "");
     std::cout << line;
     for (const MethodRun& r : runs) {
         const std::string name(method_name(r.planned.method));
@@ -204,7 +161,7 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
         } else {
             const FrameResult& f = r.frames.back();
             double deform_seconds = 0;
-            for (const auto& fr : r.frames) deform_seconds += fr.deform_seconds;
+            for (const auto& fr : r.frames) deform_seconds += fr.step_seconds;
             std::string status = r.error.empty() ? "ok" : r.error;
             if (f.step.guard.kept_redo)
                 status += " (redone by laplacian, " + std::to_string(f.step.substeps) + " increments)";
@@ -317,8 +274,11 @@ void run_deform(const DeformArgs& given) {
         j["output"] = given.output;
         j["processes"] = mpi_processes();
         for (const auto& r : runs)
-            for (const auto& w : plan_warnings(r.planned))
-                j["warnings"].push_back(several ? std::string(method_name(r.planned.method)) + ": " + w : w);
+            for (const auto& w : plan_warnings(r.planned)) {
+                const std::string name = several ? std::string(method_name(r.planned.method)) : std::string();
+                j["warnings"].push_back(several ? name + ": " + w.text : w.text);
+                j["warning_items"].push_back(warning_json(w, name));
+            }
         if (several) {
             j["methods"] = nlohmann::json::array();
             for (const auto& r : runs) j["methods"].push_back(run_json(in, r));
@@ -326,7 +286,10 @@ void run_deform(const DeformArgs& given) {
             const nlohmann::json run = run_json(in, runs[0]);
             for (const auto& [key, value] : run.items()) j[key] = value;
         }
-        for (const auto& w : stale_warnings) j["warnings"].push_back(w);
+        for (const auto& w : stale_warnings) {
+            j["warnings"].push_back(w);
+            j["warning_items"].push_back(warning_json({WarningCode::other, w}));
+        }
         j["valid"] = std::none_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.invalid; });
         std::cout << j.dump(2) << "\n";
     }

@@ -71,8 +71,8 @@ void run_motion_field(const MotionFieldArgs& a) {
                           a.setup.mesh + " CASE/; a decomposed case: reconstructPar first)");
     const ResolvedFrame frame = resolve_frame(in.mesh, in.spec, in.boundary, static_cast<std::size_t>(a.frame));
     WarningPrinter warnings(!a.quiet);
-    for (const auto& w : in.boundary.warnings) warnings.print(w);
-    for (const auto& w : frame.warnings) warnings.print(w);
+    for (const auto& w : in.boundary.warnings) warnings.print(w.text);
+    for (const auto& w : frame.warnings) warnings.print(w.text);
     const std::vector<double> displacement = node_displacements(in.mesh, in.boundary.boundary, frame.motion);
     if (csv) {
         write_csv(file, in.mesh, in.boundary.boundary, displacement);

@@ -41,7 +41,10 @@ void run_prepare(const PrepareArgs& a) {
         nlohmann::json j = inputs_json(in, "prepare");
         j["method"] = method_name(method);
         j["plan"] = plan_json(in, p);
-        for (const auto& w : plan_warnings(p)) j["warnings"].push_back(w);
+        for (const auto& w : plan_warnings(p)) {
+            j["warnings"].push_back(w.text);
+            j["warning_items"].push_back(warning_json(w));
+        }
         j["output"] = a.output;
         j["seconds"]["write"] = write_seconds;
         std::cout << j.dump(2) << "\n";

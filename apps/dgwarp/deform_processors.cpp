@@ -16,7 +16,6 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/openfoam.hpp"
-#include "dgwarp/repair/unrepairable_cells.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
 #include "frame_output.hpp"
@@ -192,19 +191,19 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
 
     // The original quality, judged by the whole case's majority orientation per cell type.
     progress.phase("measuring the original mesh's quality");
-    in.own_orientation = cell_orientations(in.mesh);
+    std::vector<std::int8_t> own = cell_orientations(in.mesh);
     std::vector<std::int64_t> balance(std::size(all_cell_types), 0);
-    for (std::size_t c = 0; c < in.own_orientation.size(); ++c)
-        balance[static_cast<std::size_t>(in.mesh.cells.types[c])] += in.own_orientation[c];
+    for (std::size_t c = 0; c < own.size(); ++c) balance[static_cast<std::size_t>(in.mesh.cells.types[c])] += own[c];
     balance = mpi_sum(balance);
-    in.orientation.resize(in.own_orientation.size());
-    for (std::size_t c = 0; c < in.orientation.size(); ++c)
-        in.orientation[c] = balance[static_cast<std::size_t>(in.mesh.cells.types[c])] < 0 ? -1 : 1;
-    in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
-    in.original_quality = case_quality(in.original_cell_quality, part.cell_ids);
+    std::vector<std::int8_t> orientation(own.size());
+    for (std::size_t c = 0; c < orientation.size(); ++c)
+        orientation[c] = balance[static_cast<std::size_t>(in.mesh.cells.types[c])] < 0 ? -1 : 1;
+    in.original = measure_original(in.mesh, std::move(own), std::move(orientation));
+    in.original.summary = case_quality(in.original.quality, part.cell_ids);
     warn_already_inverted(in);
     in.boundary.warnings =
-        case_warnings(in.boundary.warnings, mpi_sum(owned_moving_and_static(in.mesh, in.boundary, part.owned)));
+        case_warnings(in.boundary.warnings, mpi_sum(owned_moving_and_static(in.mesh, in.boundary, part.owned)),
+                      in.spec.shared_nodes);
     in.quality_seconds = sw.lap();
     progress.clear();
     const std::size_t frames = frame_count(in.spec);
@@ -215,7 +214,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
                   << "; moving: " << processor_name_list(in.boundary.moving_markers)
                   << "; static: " << processor_name_list(in.boundary.static_markers) << "\n";
         std::cout << "boundary  " << boundary_nodes << " nodes (" << moving_nodes << " moving)\n";
-        for (const auto& w : in.boundary.warnings) warnings.print(w);
+        for (const auto& w : in.boundary.warnings) warnings.print(w.text);
     }
 
     // The plan, on every process over its own nodes.
@@ -246,24 +245,19 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
                                    : ""));
         ResolvedFrame motion;
         mpi_collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
-        const std::vector<std::string> motion_warnings = case_warnings(motion.warnings);
-        f.warnings = motion_warnings;
+        f.warnings = case_warnings(motion.warnings);
         Stopwatch step_sw;
         f.step = mpi_deform_own(*run.planned.distributed, in.mesh.points, motion.motion, deformed, f.process_seconds);
-        f.deform_seconds = step_sw.lap();
-        const std::vector<std::string> step_warning_texts = step_warnings(f.step);
-        f.warnings.insert(f.warnings.end(), step_warning_texts.begin(), step_warning_texts.end());
+        f.step_seconds = step_sw.lap();
+        for (Warning& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
 
         // The frame's quality, reduced over the processes.
-        const std::vector<double> quality = cell_qualities(in.mesh, deformed, in.orientation);
-        const std::vector<double> ratio = quality_ratios(quality, in.original_cell_quality);
-        const std::vector<std::int64_t> folded = newly_inverted_cells(quality, in.original_cell_quality);
-        const std::vector<std::int64_t> on_boundary =
-            cells_with_only_fixed_nodes(in.mesh.cells, in.boundary.boundary.nodes, folded);
-        f.quality = case_quality(quality, part.cell_ids);
-        f.ratio = case_ratios(ratio, part.cell_ids);
-        std::tie(f.worst_inverted, f.inverted_by_motion) = case_worst(folded, quality, part.cell_ids, 10);
-        std::tie(f.worst_on_boundary, f.inverted_on_boundary) = case_worst(on_boundary, quality, part.cell_ids, 10);
+        const FrameCells cells = measure_frame(in.mesh, deformed, in.original, in.boundary.boundary.nodes);
+        f.quality = case_quality(cells.quality, part.cell_ids);
+        f.ratio = case_ratios(cells.ratio, part.cell_ids);
+        std::tie(f.worst_inverted, f.inverted_by_motion) = case_worst(cells.inverted, cells.quality, part.cell_ids, 10);
+        std::tie(f.worst_on_boundary, f.inverted_on_boundary) =
+            case_worst(cells.inverted_on_boundary, cells.quality, part.cell_ids, 10);
         f.quality_seconds = step_sw.lap();
         if (method == Method::dg_harmonic && !a.no_untangle && f.inverted_by_motion > 0 && f.inverted_on_boundary == 0)
             // One process would repair them (the last resort); it moves nodes
@@ -284,7 +278,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         }
         if (text) {
             progress.clear();
-            print_frame(in, f, motion_warnings, step_warning_texts, frames, warnings);
+            print_frame(in, f, frames, warnings);
         }
         if (!add_frame(run, std::move(f), a.allow_invalid)) break;
     }
@@ -297,7 +291,10 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         j["boundary"]["moving_nodes"] = moving_nodes;
         j["output"] = given_output;
         j["processes"] = processes;
-        for (const auto& w : plan_warnings(run.planned)) j["warnings"].push_back(w);
+        for (const auto& w : plan_warnings(run.planned)) {
+            j["warnings"].push_back(w.text);
+            j["warning_items"].push_back(warning_json(w));
+        }
         const nlohmann::json method_run = run_json(in, run);
         for (const auto& [key, value] : method_run.items()) j[key] = value;
         j["valid"] = !run.invalid;

@@ -14,55 +14,12 @@ std::string cell_list(const std::vector<std::int64_t>& cells) {
     return s;
 }
 
-nlohmann::json untangle_json(const UntangleReport& u) {
-    return {{"inverted_before", u.inverted_before},
-            {"inverted_after", u.inverted_after},
-            {"below_target_before", u.below_target_before},
-            {"below_target_after", u.below_target_after},
-            {"nodes_moved", u.nodes_moved},
-            {"max_move", u.max_move},
-            {"rounds", u.rounds},
-            {"min_quality_after", u.min_quality_after}};
-}
-
-nlohmann::json guard_json(const DgHarmonicGuardReport& g) {
-    if (!g.checked) return nullptr;
-    const auto measure = [](const GuardMeasure& m) {
-        return nlohmann::json{
-            {"min_quality", m.min_quality}, {"inverted", m.inverted}, {"inverted_on_boundary", m.inverted_on_boundary}};
-    };
-    return {{"one_pass", measure(g.one_pass)},
-            {"bar", g.bar},
-            {"measure_seconds", g.measure_seconds},
-            {"redone", g.redone},
-            {"boundary_folds", g.boundary_folds},
-            {"redo", g.redone && g.redo_error.empty() ? measure(g.redo) : nlohmann::json(nullptr)},
-            {"redo_error", g.redo_error.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.redo_error)},
-            {"increments", g.redone ? nlohmann::json(g.increments) : nlohmann::json(nullptr)},
-            {"kept_redo", g.kept_redo},
-            {"redo_seconds", g.redo_seconds}};
-}
-
 nlohmann::json frame_json(const FrameResult& f) {
     nlohmann::json j = {{"frame", f.frame},
-            {"time", f.time},
-            {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)},
-            {"quality", quality_json(f.quality)},
-            {"ratio", ratio_json(f.ratio)},
-            {"inverted_by_motion", f.inverted_by_motion},
-            {"worst_inverted_cells", f.worst_inverted},
-            {"inverted_on_boundary", f.inverted_on_boundary},
-            {"substeps", f.step.substeps},
-            {"invalid_graph_simplices", f.step.invalid_graph_simplices},
-            {"rbf_centres", f.step.rbf_centres},
-            {"rbf_boundary_error", f.step.rbf_boundary_error},
-            {"untangle", f.untangled ? untangle_json(*f.untangled) : nlohmann::json(nullptr)},
-            {"last_resort", f.last_resort},
-            {"guard", guard_json(f.step.guard)},
-            {"seconds",
-             {{"deform", f.deform_seconds}, {"untangle", f.untangle_seconds}, {"quality", f.quality_seconds},
-              {"write", f.write_seconds}}},
-            {"warnings", f.warnings}};
+                        {"time", f.time},
+                        {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)}};
+    j.update(frame_report_json(f));
+    j["seconds"]["write"] = f.write_seconds;
     if (!f.process_seconds.empty()) j["process_seconds"] = f.process_seconds;
     return j;
 }
@@ -77,13 +34,13 @@ nlohmann::json run_json(const Inputs& in, const MethodRun& r) {
 
 void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout << "quality (Knupp shape)   before      after\n" << std::fixed << std::setprecision(6);
-    std::cout << "  min               " << std::setw(10) << in.original_quality.min << "  " << std::setw(10)
+    std::cout << "  min               " << std::setw(10) << in.original.summary.min << "  " << std::setw(10)
               << f.quality.min << "  (cell " << f.quality.worst_cell << ")\n";
-    std::cout << "  mean              " << std::setw(10) << in.original_quality.mean << "  " << std::setw(10)
+    std::cout << "  mean              " << std::setw(10) << in.original.summary.mean << "  " << std::setw(10)
               << f.quality.mean << "\n";
-    std::cout << "  inverted          " << std::setw(10) << in.original_quality.inverted << "  " << std::setw(10)
+    std::cout << "  inverted          " << std::setw(10) << in.original.summary.inverted << "  " << std::setw(10)
               << f.quality.inverted << "\n";
-    if (in.original_quality.inverted > 0)
+    if (in.original.summary.inverted > 0)
         std::cout << "  inverted by the motion " << f.inverted_by_motion << " (the other "
                   << f.quality.inverted - f.inverted_by_motion << " were already inverted or degenerate in the input)\n";
     if (f.inverted_on_boundary > 0)
@@ -93,7 +50,7 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
     std::cout << "ratio after/before, per cell: min " << f.ratio.min << " (cell " << f.ratio.worst_cell
               << "), mean " << f.ratio.mean << "\n";
     std::cout.unsetf(std::ios::floatfield);
-    std::cout << "time      deform " << milliseconds(f.deform_seconds) << ", quality " << milliseconds(f.quality_seconds)
+    std::cout << "time      deform " << milliseconds(f.step_seconds) << ", quality " << milliseconds(f.quality_seconds)
               << (f.output.empty() ? std::string() : ", write " + milliseconds(f.write_seconds)) << "\n";
     if (!f.process_seconds.empty()) {
         std::cout << "processes " << f.process_seconds.size() << ", step on each:";
@@ -106,7 +63,7 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
                   << u->inverted_before << " -> " << u->inverted_after
                   << ", cells at or below the target " << u->below_target_before << " -> " << u->below_target_after
                   << ", " << u->nodes_moved << " volume nodes moved (at most " << u->max_move << "), "
-                  << milliseconds(f.untangle_seconds) << "\n";
+                  << milliseconds(f.repair_seconds) << "\n";
     if (f.step.guard.checked) std::cout << "guard     " << guard_summary(f.step.guard) << "\n";
     if (f.step.substeps > 1 && f.step.invalid_graph_simplices > 0)
         std::cout << "DGM       " << f.step.substeps << " sub-steps (the moved graph had "
@@ -121,15 +78,15 @@ void print_frame_line(const FrameResult& f, bool timed) {
     char line[200];
     std::snprintf(line, sizeof line, "frame %4zu  %smin %.6f  mean %.6f  inverted %lld  ratio min %.4f  deform %s",
                   f.frame, time, f.quality.min, f.quality.mean, static_cast<long long>(f.quality.inverted),
-                  f.ratio.min, milliseconds(f.deform_seconds).c_str());
+                  f.ratio.min, milliseconds(f.step_seconds).c_str());
     std::cout << line << (f.step.guard.kept_redo ? "  (laplacian, " + std::to_string(f.step.substeps) + " increments)" : "")
               << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
 }
 
-void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,
-                 const std::vector<std::string>& step_warning_texts, std::size_t frames, WarningPrinter& warnings) {
-    for (const auto& w : motion_warnings) warnings.print(w);  // they name the frame
-    for (const auto& w : step_warning_texts) warnings.print(w, "frame " + std::to_string(f.frame) + ": ");
+void print_frame(const Inputs& in, const FrameResult& f, std::size_t frames, WarningPrinter& warnings) {
+    for (const Warning& w : f.warnings)  // the motion's name the frame; the step's do not
+        warnings.print(w.text, w.code == WarningCode::conflicting_shared_motions ? "frame " + std::to_string(f.frame) + ": "
+                                                                                 : std::string());
     if (frames == 1) {
         print_single_frame(in, f);
         if (!f.output.empty()) std::cout << "wrote " << f.output << "\n";

@@ -27,25 +27,15 @@ struct DeformArgs {
     bool quiet = false;
 };
 
-struct FrameResult {
+/// A frame as the CLI reports it: the run layer's report (run/deform_frame.hpp)
+/// and what the CLI adds (where it was written, MPI's per-process times).
+struct FrameResult : FrameReport {
     std::size_t frame = 0;
     double time = 0;
     std::string output;  // empty when not written
-    QualitySummary quality;
-    RatioSummary ratio;
-    StepReport step;
-    std::int64_t inverted_by_motion = 0;       // cells valid in the input and inverted now (what makes a frame invalid)
-    std::vector<std::int64_t> worst_inverted;  // the worst of those
-    // Of those, the cells whose every node is on the boundary: the boundary
-    // motion alone inverts them, and nothing that moves volume nodes can help.
-    std::int64_t inverted_on_boundary = 0;
-    std::vector<std::int64_t> worst_on_boundary;  // the worst of those
-    std::optional<UntangleReport> untangled;  // when --untangle (or dg-harmonic's last resort) found cells to repair
-    bool last_resort = false;                 // the repair was dg-harmonic's last resort, not --untangle
-    double deform_seconds = 0, untangle_seconds = 0, quality_seconds = 0, write_seconds = 0;
+    double write_seconds = 0;
     std::vector<double> process_seconds;  // under mpirun: each process's step
     bool own_parts = false;  // under mpirun, each process read its own processor folder (no scatter, no gather)
-    std::vector<std::string> warnings;
 };
 
 /// One method's run over every frame.
@@ -68,7 +58,6 @@ std::string invalid_frame_error(const FrameResult& bad);
 /// an invalid frame unless `allow_invalid` (nothing more is written then).
 bool add_frame(MethodRun& run, FrameResult f, bool allow_invalid);
 
-nlohmann::json untangle_json(const UntangleReport& u);
 nlohmann::json frame_json(const FrameResult& f);
 nlohmann::json run_json(const Inputs& in, const MethodRun& r);
 
@@ -78,7 +67,6 @@ void print_single_frame(const Inputs& in, const FrameResult& f);
 /// line shows the frame's (a frames list has none).
 void print_frame_line(const FrameResult& f, bool timed);
 /// A frame's text report: its warnings, then the single-frame table or the frame's line.
-void print_frame(const Inputs& in, const FrameResult& f, const std::vector<std::string>& motion_warnings,
-                 const std::vector<std::string>& step_warning_texts, std::size_t frames, WarningPrinter& warnings);
+void print_frame(const Inputs& in, const FrameResult& f, std::size_t frames, WarningPrinter& warnings);
 
 }  // namespace dgwarp::cli

@@ -226,20 +226,24 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     in.boundary = resolve_boundary(in.mesh, in.spec);
     if (const std::string zone = zone_notice(in.extras, args.mesh, args.zone); !zone.empty())
         in.boundary.warnings.insert(in.boundary.warnings.begin(),
-                                    zone + "; an .su2 output keeps the other zones as they are");
+                                    {WarningCode::other, zone + "; an .su2 output keeps the other zones as they are"});
     in.resolve_seconds = sw.lap();
     progress.clear();
     return in;
 }
 
 void warn_already_inverted(Inputs& in) {
-    if (const std::int64_t bad = in.original_quality.inverted; bad > 0)
-        in.boundary.warnings.push_back(
-            std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
-            " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
-            std::to_string(in.original_quality.worst_cell) +
-            "): they are counted as inverted before and after, but not blamed on the motion, and do not make a "
-            "step invalid");
+    const std::int64_t bad = in.original.summary.inverted;
+    if (bad == 0) return;
+    Warning w{WarningCode::already_inverted,
+              std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
+                  " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
+                  std::to_string(in.original.summary.worst_cell) +
+                  "): they are counted as inverted before and after, but not blamed on the motion, and do not "
+                  "make a step invalid",
+              "", bad};
+    w.element = in.original.summary.worst_cell;
+    in.boundary.warnings.push_back(std::move(w));
 }
 
 Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
@@ -247,10 +251,7 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
     Inputs in = read_motion_inputs(args, progress, check_outputs);
     Stopwatch sw;
     progress.phase("measuring the original mesh's quality");
-    in.own_orientation = cell_orientations(in.mesh);
-    in.orientation = dominant_orientations(in.mesh, in.own_orientation);
-    in.original_cell_quality = cell_qualities(in.mesh, in.orientation);
-    in.original_quality = summarize_quality(in.original_cell_quality);
+    in.original = measure_original(in.mesh);
     warn_already_inverted(in);
 
     in.quality_seconds = sw.lap();
@@ -337,23 +338,14 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
     return p;
 }
 
-std::vector<std::string> plan_warnings(const PlannedMethod& p) {
+std::vector<Warning> plan_warnings(const PlannedMethod& p) {
     const PlanSummary s = planned_summary(p);
     if (s.outside_hull == 0) return {};
-    return {std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
+    return {{WarningCode::outside_hull, std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
             " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
             std::string(method_name(p.method)) +
             " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary "
-            "(far field, walls), it should be a marker of the mesh"};
-}
-
-std::vector<std::string> step_warnings(const StepReport& step) {
-    if (step.conflicting_shared_vertices == 0) return {};
-    return {std::to_string(step.conflicting_shared_vertices) + " group" +
-            (step.conflicting_shared_vertices == 1 ? " of boundary nodes at the same coordinates was"
-                                                    : "s of boundary nodes at the same coordinates were") +
-            " given different motions: the nodes separate, and the "
-            "volume nodes follow the first moving node of each group"};
+            "(far field, walls), it should be a marker of the mesh", "", s.outside_hull}};
 }
 
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings) {
@@ -363,7 +355,7 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
         << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers)
         << "\n";
     out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving)\n";
-    for (const auto& w : in.boundary.warnings) warnings.print(w);
+    for (const auto& w : in.boundary.warnings) warnings.print(w.text);
 }
 
 void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
@@ -384,7 +376,7 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, War
         out << ")";
     }
     out << "\n";
-    for (const auto& w : plan_warnings(p)) warnings.print(w);
+    for (const auto& w : plan_warnings(p)) warnings.print(w.text);
 }
 
 nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
@@ -422,8 +414,9 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
             {"boundary", boundary_json(in)},
             {"options", options_json(method_options(in.args), !in.args.weights.empty())},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
-            {"original_quality", quality_json(in.original_quality)},
-            {"warnings", in.boundary.warnings}};
+            {"original_quality", quality_json(in.original.summary)},
+            {"warnings", warning_texts_json(in.boundary.warnings)},
+            {"warning_items", warning_items_json(in.boundary.warnings)}};
 }
 
 nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
@@ -439,6 +432,7 @@ nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
             {"outside_hull", s.outside_hull},
             {"shared_graph_vertices", s.shared_vertices},
             {"coarse_points", s.coarse_points},
+            {"floored_weights", s.floored_weights},
             {"bytes", plan_memory_bytes(p.plan)},
             {"seconds", p.prepare_seconds},
             {"phase_seconds", phases}};

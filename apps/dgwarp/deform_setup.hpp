@@ -17,6 +17,7 @@
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 #include "mpi_session.hpp"
 #include "progress_line.hpp"
 #include "warning_printer.hpp"
@@ -74,14 +75,9 @@ struct Inputs {
     MeshExtras extras;  // what the mesh file holds besides the mesh (SU2: other zones, FFD boxes)
     MotionSpec spec;
     ResolvedBoundary boundary;
-    /// Per cell: the orientation cells are judged by, the majority of the
-    /// original's per cell type (dominant_orientations, as `dgwarp info`
-    /// judges a mesh), so that a cell flipped in the input counts as inverted
-    /// before and after, reported as already inverted, never as the motion's.
-    std::vector<std::int8_t> orientation;
-    std::vector<std::int8_t> own_orientation;   // per cell, its own in the original (untangle keeps it)
-    std::vector<double> original_cell_quality;  // per cell
-    QualitySummary original_quality;
+    /// The original cells every frame is judged against (run/original_cells.hpp):
+    /// a cell flipped in the input counts as inverted before and after.
+    OriginalCells original;
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
 
@@ -98,7 +94,7 @@ Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
                    const std::function<void(const MotionSpec&)>& check_outputs);
 
 /// Adds the boundary warning about the cells already inverted or degenerate
-/// in the input (in.original_quality, its worst cell named), if any.
+/// in the input (in.original.summary, its worst cell named), if any.
 void warn_already_inverted(Inputs& in);
 
 /// A method's plan for the inputs: built, or loaded from `plan_file` (a DG-IDW
@@ -125,11 +121,7 @@ PlanSummary planned_summary(const PlannedMethod& p);
 
 /// Warnings about a plan: volume nodes outside the Delaunay graph's hull
 /// (DG-IDW and DGM extrapolate there).
-std::vector<std::string> plan_warnings(const PlannedMethod& p);
-
-/// Warnings about one step: boundary nodes at the same coordinates that were
-/// given different motions.
-std::vector<std::string> step_warnings(const StepReport& step);
+std::vector<Warning> plan_warnings(const PlannedMethod& p);
 
 /// Lines about the mesh, motion and boundary; the boundary's warnings through `warnings`.
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings);

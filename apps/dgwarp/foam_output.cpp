@@ -122,7 +122,7 @@ void write_foam_base(const Inputs& in, const std::filesystem::path& out, const s
 }
 
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
-                                        const std::vector<double>& points) {
+                                        std::span<const double> points) {
     if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
         // Each processor's points, in its own numbering and format.
         const auto& processors = in.extras.openfoam->processors;

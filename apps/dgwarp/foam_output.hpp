@@ -7,6 +7,7 @@
 // of another format). A decomposed input: the same in each processorN folder,
 // with the processor's own points. docs/OPENFOAM.md.
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,6 @@ void write_foam_base(const Inputs& in, const std::filesystem::path& out, const s
 /// format of the OpenFOAM input (ascii for another format); returns its path
 /// (OUT/processor*/<time>/polyMesh/points for a decomposed input).
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
-                                        const std::vector<double>& points);
+                                        std::span<const double> points);
 
 }  // namespace dgwarp::cli

@@ -42,12 +42,4 @@ MeshFields deformation_fields(const Mesh& original, std::span<const double> new_
     return fields;
 }
 
-std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, const std::vector<double>& quality,
-                                      std::size_t count) {
-    const auto q = [&](std::int64_t c) { return quality[static_cast<std::size_t>(c)]; };
-    std::stable_sort(cells.begin(), cells.end(), [&](auto a, auto b) { return q(a) < q(b); });
-    if (cells.size() > count) cells.resize(count);
-    return cells;
-}
-
 }  // namespace dgwarp::cli

@@ -24,8 +24,4 @@ std::vector<std::filesystem::path> stale_frames(const std::filesystem::path& out
 MeshFields deformation_fields(const Mesh& original, std::span<const double> new_points,
                               const std::vector<double>& quality, const std::vector<double>& ratio);
 
-/// Up to `count` of `cells` (ids), those with the smallest quality first (stable).
-std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, const std::vector<double>& quality,
-                                      std::size_t count);
-
 }  // namespace dgwarp::cli

@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <limits>
 #include <unordered_map>
+
+#include <nlohmann/json.hpp>
 
 #include "dgwarp/core/ordered_sum.hpp"
 #include "mpi_session.hpp"
@@ -77,33 +80,42 @@ std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<
     return {ids, mpi_sum(static_cast<std::int64_t>(cells.size()))};
 }
 
-std::vector<std::string> case_warnings(const std::vector<std::string>& mine, std::int64_t shared_nodes) {
-    std::string joined;
-    for (const auto& w : mine) joined += w + '\x1f';
-    const std::vector<std::string> all = mpi_gather_text(joined);
-    const std::string shared_text = " on both a moving and a static marker; ";
-    std::vector<std::vector<std::string>> by_rank(all.size());
+std::vector<Warning> case_warnings(const std::vector<Warning>& mine, std::int64_t shared_nodes, SharedNodeRule rule) {
+    // Each process's warnings as JSON (code, text and data), gathered on rank 0.
+    nlohmann::json sent = nlohmann::json::array();
+    for (const Warning& w : mine)
+        sent.push_back({static_cast<int>(w.code), w.text, w.marker, w.count, w.node, w.element,
+                        std::isnan(w.value) ? nlohmann::json(nullptr) : nlohmann::json(w.value)});
+    const std::vector<std::string> all = mpi_gather_text(sent.dump());
+    const auto text_of = [](const Warning& w) { return std::to_string(static_cast<int>(w.code)) + ':' + w.text; };
+    std::vector<std::vector<Warning>> by_rank(all.size());
     std::unordered_map<std::string, std::size_t> given_by;
-    for (std::size_t r = 0; r < all.size(); ++r) {
-        std::size_t start = 0;
-        for (std::size_t end; (end = all[r].find('\x1f', start)) != std::string::npos; start = end + 1) {
-            std::string w = all[r].substr(start, end - start);
-            if (const auto at = w.find(shared_text); at != std::string::npos && shared_nodes >= 0)
-                w = std::to_string(shared_nodes) + " boundary node" + (shared_nodes == 1 ? " is" : "s are") + w.substr(at);
-            if (std::find(by_rank[r].begin(), by_rank[r].end(), w) != by_rank[r].end()) continue;
+    for (std::size_t r = 0; r < all.size(); ++r)
+        for (const auto& item : nlohmann::json::parse(all[r])) {
+            Warning w{static_cast<WarningCode>(item[0].get<int>()), item[1].get<std::string>(),
+                      item[2].get<std::string>(), item[3].get<std::int64_t>()};
+            w.node = item[4].get<std::int64_t>();
+            w.element = item[5].get<std::int64_t>();
+            if (!item[6].is_null()) w.value = item[6].get<double>();
+            // The whole mesh's count of nodes on a moving and a static marker, not each process's.
+            if (w.code == WarningCode::shared_moving_static && shared_nodes >= 0) w = shared_nodes_warning(shared_nodes, rule);
+            const std::string key = text_of(w);
+            if (std::any_of(by_rank[r].begin(), by_rank[r].end(), [&](const Warning& o) { return text_of(o) == key; }))
+                continue;
             by_rank[r].push_back(w);
-            ++given_by[w];
+            ++given_by[key];
         }
-    }
-    std::vector<std::string> out;
+    std::vector<Warning> out;
     std::unordered_map<std::string, bool> done;
     for (std::size_t r = 0; r < by_rank.size(); ++r)
-        for (const std::string& w : by_rank[r]) {
-            if (given_by[w] == all.size()) {
-                if (!done[w]) out.push_back(w);
-                done[w] = true;
-            } else if (w.find("which has no elements") == std::string::npos) {
-                out.push_back("process " + std::to_string(r) + ": " + w);
+        for (Warning& w : by_rank[r]) {
+            const std::string key = text_of(w);
+            if (given_by[key] == all.size()) {
+                if (!done[key]) out.push_back(w);
+                done[key] = true;
+            } else if (w.code != WarningCode::empty_named_marker) {  // it has elements on another process
+                w.text = "process " + std::to_string(r) + ": " + w.text;
+                out.push_back(std::move(w));
             }
         }
     return out;

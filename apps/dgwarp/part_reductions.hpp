@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "dgwarp/core/warning.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 
 namespace dgwarp::cli {
@@ -31,12 +33,15 @@ std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<
                                                                const std::vector<std::int64_t>& cell_ids,
                                                                std::size_t count);
 
-/// Every process's warnings, on rank 0 (empty elsewhere): a text every process
-/// gives, once; one that only some give, prefixed by "process r: " (its counts
-/// and node numbers are that process's), except a marker "with no elements" on
-/// some processes (it has elements on another), dropped. `shared_nodes` (when
-/// >= 0): the whole mesh's count of boundary nodes on a moving and a static
-/// marker, which replaces each process's in that warning of resolve_boundary.
-std::vector<std::string> case_warnings(const std::vector<std::string>& mine, std::int64_t shared_nodes = -1);
+/// Every process's warnings, on rank 0 (empty elsewhere): one every process
+/// gives (same code and text), once; one that only some give, its text
+/// prefixed by "process r: " (its counts and node numbers are that
+/// process's), except a marker without elements on some processes
+/// (WarningCode::empty_named_marker: it has elements on another), dropped.
+/// `shared_nodes` (when >= 0): the whole mesh's count of boundary nodes on a
+/// moving and a static marker, which replaces each process's warning of
+/// resolve_boundary about them (shared_nodes_warning with `rule`).
+std::vector<Warning> case_warnings(const std::vector<Warning>& mine, std::int64_t shared_nodes = -1,
+                                   SharedNodeRule rule = SharedNodeRule::moving_wins);
 
 }  // namespace dgwarp::cli

@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include <cmath>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -49,19 +51,6 @@ nlohmann::json mesh_json(const MeshCounts& c) {
     nlohmann::json markers = nlohmann::json::array();
     for (const auto& m : c.markers) markers.push_back({{"name", m.name}, {"elements", m.elements}, {"nodes", m.nodes}});
     return {{"dim", c.dim}, {"nodes", c.nodes}, {"cells", c.cells}, {"cell_types", types}, {"markers", markers}};
-}
-
-nlohmann::json quality_json(const QualitySummary& q) {
-    return {{"cells", q.cells},
-            {"min", q.min},
-            {"mean", q.mean},
-            {"inverted", q.inverted},
-            {"worst_cell", q.worst_cell},
-            {"histogram", {{"edges", q.histogram.edges}, {"counts", q.histogram.counts}}}};
-}
-
-nlohmann::json ratio_json(const RatioSummary& r) {
-    return {{"min", r.min}, {"mean", r.mean}, {"worst_cell", r.worst_cell}};
 }
 
 void print_quality(std::ostream& out, const QualitySummary& q, bool histogram) {

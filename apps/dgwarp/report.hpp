@@ -9,6 +9,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/run/report_json.hpp"
 
 namespace dgwarp::cli {
 
@@ -36,11 +37,6 @@ std::string describe_mesh(const MeshCounts& counts);
 /// {"dim", "nodes", "cells", "cell_types": {"triangle": n, ...}, "markers": [{"name", "elements", "nodes"}]}
 nlohmann::json mesh_json(const Mesh& mesh);
 nlohmann::json mesh_json(const MeshCounts& counts);
-
-/// {"cells", "min", "mean", "inverted", "worst_cell", "histogram": {"edges", "counts"}}
-nlohmann::json quality_json(const QualitySummary& q);
-/// {"min", "mean", "worst_cell"}
-nlohmann::json ratio_json(const RatioSummary& r);
 
 /// Indented text lines: min (and its cell), mean, inverted; the histogram when asked.
 void print_quality(std::ostream& out, const QualitySummary& q, bool histogram);

@@ -142,8 +142,8 @@ void warn(const std::string& message) {
     if (PyErr_WarnEx(classes.warning, message.c_str(), 1) != 0) throw py::error_already_set();
 }
 
-void warn_all(const std::vector<std::string>& messages) {
-    for (const auto& w : messages) warn(w);
+void warn_all(const std::vector<Warning>& warnings) {
+    for (const Warning& w : warnings) warn(w.text);
 }
 
 }  // namespace dgwarp::python

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "dgwarp/core/warning.hpp"
+
 namespace dgwarp::python {
 
 /// Creates the exception and warning classes in `m` and registers the translator.
@@ -25,6 +27,6 @@ void bind_errors(pybind11::module_& m);
 /// (error_already_set) when the warnings filter turns it into an error.
 /// Needs the GIL.
 void warn(const std::string& message);
-void warn_all(const std::vector<std::string>& messages);
+void warn_all(const std::vector<Warning>& warnings);  // their texts
 
 }  // namespace dgwarp::python

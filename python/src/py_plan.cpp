@@ -17,6 +17,8 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/run/report_json.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
 #include "py_motion.hpp"
@@ -174,7 +176,7 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
 
 py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, py::handle translation,
                        py::handle rotation, py::handle center, py::handle out, const py::object& untangle,
-                       double untangle_target, py::object progress) {
+                       double untangle_target, py::object progress, bool want_report) {
     if (frame_arg < 0) throw py::index_error("frame " + std::to_string(frame_arg) + ": frames are numbered from 0");
     const auto frame = static_cast<std::size_t>(frame_arg);
     const bool arrays = !translation.is_none() || !rotation.is_none() || !center.is_none();
@@ -182,7 +184,7 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
         throw py::type_error("deform() needs a motion (a dict in the motion-file form, a dgwarp.Motion) or "
                              "translation= / rotation= / center= arrays");
     BoundaryMotion boundary_motion;
-    std::vector<std::string> warnings;
+    std::vector<Warning> warnings;
     std::int64_t folded_faces = 0;  // the boundary motion turns faces over: the guard's redo cannot help
     if (!motion.is_none()) {
         if (py::isinstance<py::array>(motion) && !arrays) {
@@ -214,20 +216,21 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     py::array_t<double> result = out.is_none() ? py::array_t<double>({rows, static_cast<py::ssize_t>(mesh.dim)})
                                                : output_matrix(out, "out", rows, mesh.dim);
     const std::span<double> xs(result.mutable_data(), static_cast<std::size_t>(result.size()));
-    StepReport report;
+    FrameReport report;
     ProgressBridge bridge(progress);
-    MethodOptions options = p.options;
-    if (folded_faces > 0) options.dg_harmonic.redo_below = -1;  // as the CLI: no volume method mends them
-    bridge.run([&] { report = deform(p.plan, mesh.points, boundary_motion, xs, options, bridge.function()); });
-    repair_after_step(p, xs, untangle, untangle_target);
-    warn_all(warnings);
-    if (report.conflicting_shared_vertices > 0)
-        warn(std::to_string(report.conflicting_shared_vertices) + " group" +
-             (report.conflicting_shared_vertices == 1 ? " of boundary nodes at the same coordinates was"
-                                                      : "s of boundary nodes at the same coordinates were") +
-             " given different motions: the nodes separate, and the volume nodes follow the first moving node of "
-             "each group");
-    return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+    // As the CLI's frames (run/deform_frame.hpp): no guard where the boundary motion folds faces.
+    const MethodOptions options = step_options(p.options, folded_faces);
+    Stopwatch sw;
+    bridge.run([&] { report.step = deform(p.plan, mesh.points, boundary_motion, xs, options, bridge.function()); });
+    report.step_seconds = sw.lap();
+    report.warnings = std::move(warnings);
+    for (Warning& w : step_warnings(report.step)) report.warnings.push_back(std::move(w));
+    finish_step(p, xs, untangle, untangle_target, want_report, report);
+    warn_all(report.warnings);
+    py::object points = out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+    if (!want_report) return points;
+    // The CLI's frame report (docs/JSON.md), as a dict.
+    return py::make_tuple(points, py::module_::import("json").attr("loads")(frame_report_json(report).dump()));
 }
 
 }  // namespace
@@ -241,9 +244,9 @@ void bind_plan(py::module_& m) {
         .def("deform", &deform_step, py::arg("motion") = py::none(), py::kw_only(), py::arg("frame") = 0,
              py::arg("translation") = py::none(), py::arg("rotation") = py::none(), py::arg("center") = py::none(),
              py::arg("out") = py::none(), py::arg("untangle") = py::none(), py::arg("untangle_target") = 0.0,
-             py::arg("progress") = py::none(),
+             py::arg("progress") = py::none(), py::arg("report") = false,
              "One step: the new coordinates of every node, (num_points, dim) float64, measured from the\n"
-             "original mesh (not from the previous step).\n"
+             "original mesh (not from the previous step); with report=True, (coordinates, report).\n"
              "The motion, either:\n"
              "  motion:  a dict in the motion-file form (docs/MOTION.md) or a dgwarp.Motion, and `frame`\n"
              "           (0-based) for a motion of several frames; markers it does not name stay fixed;\n"
@@ -258,6 +261,10 @@ void bind_plan(py::module_& m) {
              "           the other methods do nothing), True (repair cells at or below untangle_target\n"
              "           by moving volume nodes, as `dgwarp deform --untangle`), False (no repair).\n"
              "  progress: a callable taking the fraction done.\n"
+             "  report:  also return the step's report, a dict as a frame of `dgwarp deform --json`\n"
+             "           (docs/JSON.md): quality, ratio, inverted_by_motion, substeps, untangle and\n"
+             "           last_resort, guard, seconds, warnings (texts) and warning_items (code, text, and\n"
+             "           marker, count, node, element, value where they apply). It measures every cell.\n"
              "The GIL is released while the step runs. Raises InvalidResultError (ValueError) when the\n"
              "method cannot move the mesh validly (DGM without dgm_substep).")
         .def("save", [](const PyPlan& p, const std::filesystem::path& path) {
@@ -323,6 +330,7 @@ void bind_plan(py::module_& m) {
                 d["outside_hull"] = s.outside_hull;
                 d["shared_vertices"] = s.shared_vertices;
                 d["coarse_points"] = s.coarse_points;
+                d["floored_weights"] = s.floored_weights;
                 py::dict phases;
                 for (const auto& [name, seconds] : s.phase_seconds) phases[py::str(name)] = seconds;
                 d["phase_seconds"] = phases;

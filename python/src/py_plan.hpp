@@ -10,17 +10,10 @@
 
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
+#include "dgwarp/run/original_cells.hpp"
 #include "py_mesh.hpp"
 
 namespace dgwarp::python {
-
-/// What the untangle step needs of the original mesh, computed on first use
-/// (as the CLI's deform computes it: deform_setup.cpp, read_inputs).
-struct RepairReference {
-    std::vector<std::int8_t> own_orientation;  // cell_orientations: what untangle keeps
-    std::vector<std::int8_t> orientation;      // dominant_orientations: how cells are judged
-    std::vector<double> quality;               // the original's per-cell quality
-};
 
 struct PyPlan {
     MeshPtr mesh;                // the mesh it was prepared for (immutable, shared)
@@ -29,12 +22,14 @@ struct PyPlan {
     MethodOptions options;       // as used (a loaded plan's own)
     Plan plan;
 
-    /// The repair reference, computed once (thread-safe; call without the GIL).
-    const RepairReference& repair_reference() const;
+    /// The original cells a step is repaired and judged against
+    /// (measure_original, as `dgwarp deform`), computed on first use, once
+    /// (thread-safe; call without the GIL).
+    const OriginalCells& original() const;
 
 private:
-    mutable std::once_flag repair_once_;
-    mutable RepairReference repair_;
+    mutable std::once_flag original_once_;
+    mutable OriginalCells original_;
 };
 
 }  // namespace dgwarp::python

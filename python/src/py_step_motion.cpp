@@ -5,21 +5,15 @@
 #include "arrays.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
-#include "dgwarp/repair/last_resort.hpp"
-#include "dgwarp/repair/untangle.hpp"
 #include "py_options.hpp"
 
 namespace py = pybind11;
 
 namespace dgwarp::python {
 
-const RepairReference& PyPlan::repair_reference() const {
-    std::call_once(repair_once_, [this] {
-        repair_.own_orientation = cell_orientations(mesh->mesh);
-        repair_.orientation = dominant_orientations(mesh->mesh, repair_.own_orientation);
-        repair_.quality = cell_qualities(mesh->mesh, repair_.orientation);
-    });
-    return repair_;
+const OriginalCells& PyPlan::original() const {
+    std::call_once(original_once_, [this] { original_ = measure_original(mesh->mesh); });
+    return original_;
 }
 
 ResolvedFrame resolve_motion_frame(const PyPlan& p, const MotionSpec& spec, std::size_t frame) {
@@ -88,23 +82,19 @@ BoundaryMotion motion_from_arrays(const PyPlan& p, py::handle t, py::handle w, p
     return motion;
 }
 
-// As cmd_deform.cpp's repair_and_measure.
-void repair_after_step(const PyPlan& p, std::span<double> points, const py::object& untangle, double target) {
-    const bool asked = !untangle.is_none() && untangle.cast<bool>();
-    const bool last_resort = untangle.is_none() && plan_method(p.plan) == Method::dg_harmonic;
-    if (!asked && !last_resort) return;
+bool finish_step(const PyPlan& p, std::span<double> points, const py::object& untangle, double target, bool measure,
+                 FrameReport& report) {
+    FrameOptions options;
+    options.untangle_target = target;
+    if (!untangle.is_none()) options.repair = untangle.cast<bool>() ? Repair::untangle : Repair::none;
+    const Method method = plan_method(p.plan);
+    const bool repairs = options.repair == Repair::untangle ||
+                         (options.repair == Repair::method_default && method == Method::dg_harmonic);
+    if (!repairs && !measure) return false;
     const Mesh& mesh = p.mesh->mesh;
     py::gil_scoped_release release;
-    const RepairReference& ref = p.repair_reference();
-    if (asked) {
-        UntangleOptions options;
-        options.target_quality = target;
-        dgwarp::untangle(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, points, options);
-        return;
-    }
-    const std::vector<double> q = cell_qualities(mesh, points, ref.orientation);
-    run_last_resort(mesh.dim, mesh.cells, ref.own_orientation, p.boundary.boundary.nodes, newly_inverted_cells(q, ref.quality),
-                    points);
+    finish_frame(method, mesh, p.original(), p.boundary.boundary.nodes, options, points, report);
+    return true;
 }
 
 }  // namespace dgwarp::python

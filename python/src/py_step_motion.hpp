@@ -8,6 +8,7 @@
 
 #include "dgwarp/motion/motion_spec.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
+#include "dgwarp/run/deform_frame.hpp"
 #include "py_plan.hpp"
 
 namespace dgwarp::python {
@@ -26,7 +27,10 @@ BoundaryMotion motion_from_arrays(const PyPlan& p, pybind11::handle translation,
 
 /// After a step that wrote `points`: untangle when `untangle` is True (cells
 /// at or below `target`), DG-harmonic's last resort when it is None, nothing
-/// when False, as `dgwarp deform` does. Releases the GIL.
-void repair_after_step(const PyPlan& p, std::span<double> points, const pybind11::object& untangle, double target);
+/// when False, as `dgwarp deform` does (finish_frame), and the frame's
+/// quality in `report`. Nothing when there is no repair to run and not
+/// `measure`; returns whether it ran. Releases the GIL.
+bool finish_step(const PyPlan& p, std::span<double> points, const pybind11::object& untangle, double target,
+                 bool measure, FrameReport& report);
 
 }  // namespace dgwarp::python

@@ -120,3 +120,31 @@ def test_plans_go_between_python_and_the_cli(tmp_path, cli, naca_file):
         loaded = dgwarp.load_plan(cli_plan, mesh)
         assert loaded.method == method and loaded.moving_markers == ["airfoil"]
         assert np.array_equal(loaded.deform(ROTATE_10), plan.deform(ROTATE_10))
+
+
+def test_a_step_report_is_the_cli_json_frame(tmp_path, cli, su2_meshes):
+    # Issue #32 item 4: deform(report=True) gives what a frame of `dgwarp deform --json` has,
+    # the last resort's repair and the warnings as coded items included.
+    mesh_file = su2_meshes / "deformation_brick_pyra_mesh_brick_pyra_ffd.su2"
+    motion_file = MOTIONS / "brick_rotate_top.json"
+    mesh = dgwarp.read(mesh_file)
+    motion = dgwarp.Motion(motion_file)
+    with pytest.warns(dgwarp.DgwarpWarning):
+        plan = dgwarp.prepare(mesh, moving=motion, method="dg-harmonic", harmonic_redo_below=-1)
+    points, report = plan.deform(motion, report=True)
+    assert np.array_equal(points, plan.deform(motion))
+    result = cli("deform", mesh_file, "-m", motion_file, "-o", tmp_path / "out.su2", "--method", "dg-harmonic",
+                 "--harmonic-redo-below", "-1", "--json")
+    frame = json.loads(result.stdout)["frames"][0]
+    assert report["last_resort"] is True and report["untangle"]["inverted_before"] > 0
+    for key in ("quality", "ratio", "inverted_by_motion", "worst_inverted_cells", "inverted_on_boundary",
+                "substeps", "untangle", "last_resort", "guard", "warnings", "warning_items"):
+        assert report[key] == frame[key], key
+    assert set(report["seconds"]) == {"deform", "untangle", "quality"}
+    # Arrays give a report too, with their warnings as items; untangle=False: the step alone, measured.
+    with pytest.warns(dgwarp.DgwarpWarning, match="more than the diagonal"):
+        points, report = plan.deform(translation=[0.0, 0.0, 1e3], untangle=False, report=True)
+    large = [w for w in report["warning_items"] if w["code"] == "large-displacement"]
+    assert large and large[0]["value"] == pytest.approx(1e3) and large[0]["marker"]
+    assert report["untangle"] is None and report["last_resort"] is False
+    assert report["quality"]["inverted"] == dgwarp.quality(mesh, points=points).inverted

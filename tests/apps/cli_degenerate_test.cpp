@@ -132,6 +132,11 @@ TEST(CliDegenerate, AnEmptySu2MarkerIsListedAndAMotionNamingItWarnsAndMovesNothi
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_TRUE(has_warning(j.at("warnings"), "names marker 'slat', which has no elements")) << j.at("warnings");
+    // The same warning as an item a program tests: its code and marker.
+    const auto& items = j.at("warning_items");
+    EXPECT_TRUE(std::any_of(items.begin(), items.end(), [](const nlohmann::json& w) {
+        return w.at("code") == "empty-named-marker" && w.at("marker") == "slat";
+    })) << items;
     EXPECT_EQ(j.at("boundary").at("moving_nodes"), 0);
     for (const auto& run : j.at("methods")) {
         EXPECT_TRUE(run.at("valid").get<bool>()) << run.at("method") << run.at("error");
@@ -187,6 +192,11 @@ TEST(CliDegenerate, AZeroLengthBoundaryEdgeWorksWithEveryMethodAndWarns) {
     EXPECT_TRUE(has_warning(j.at("warnings"),
                             "nodes " + std::to_string(node) + " and " + std::to_string(copy)))
         << j.at("warnings");
+    const auto& items = j.at("warning_items");
+    const auto example = node;  // not the structured binding: older clang cannot capture one
+    EXPECT_TRUE(std::any_of(items.begin(), items.end(), [&](const nlohmann::json& w) {
+        return w.at("code") == "coincident-boundary-nodes" && w.at("count") == 2 && w.at("node") == example;
+    })) << items;
     for (const auto& run : j.at("methods")) {
         SCOPED_TRACE(run.at("method").get<std::string>());
         EXPECT_TRUE(run.at("valid").get<bool>()) << run.at("error");
@@ -212,6 +222,11 @@ TEST(CliDegenerate, CoincidentNodesOnAMovingAndAStaticMarkerSeparateWithAWarning
         EXPECT_EQ(has_warning(frame.at("warnings"), "1 group of boundary nodes at the same coordinates was given different motions"),
                   method != "idw" && method != "laplacian")
             << frame.at("warnings");
+        EXPECT_EQ(frame.at("warning_items").size(), frame.at("warnings").size());
+        for (const auto& w : frame.at("warning_items")) {
+            EXPECT_EQ(w.at("code"), "conflicting-shared-motions") << w;
+            EXPECT_EQ(w.at("count"), 1) << w;
+        }
         const Mesh out = read_mesh(frame.at("output").get<std::string>());
         EXPECT_EQ(out.points[2 * copy], mesh.points[2 * copy]);  // static
         EXPECT_NE(out.points[2 * node], mesh.points[2 * node]);  // moved

@@ -17,6 +17,7 @@
 #include "dgwarp/io/plan_file.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -224,3 +225,38 @@ TEST(Examples, CompareMethodsListsEveryMethodAndReportsDgmsInvalidGraph) {
         }
     }
 }
+
+TEST(Examples, RunFramesWritesEveryValidFrameAsTheRunLayerMeasuredIt) {
+    const auto dir = scratch_dir();
+    CommandResult r = run_example("06_run_frames", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto frames = lines_starting_with(r.out, "frame ");
+    ASSERT_EQ(frames.size(), 8u) << r.out;
+    EXPECT_TRUE(has_line(r.out, "frames 8, valid: yes")) << r.out;
+    const Mesh box = make_rect_box();
+    for (int k = 0; k < 8; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.vtu", k);
+        const Mesh frame = read_mesh(dir / name);
+        ASSERT_EQ(frame.points.size(), box.points.size()) << name;
+        // The printed min quality is the written frame's own.
+        const double printed = std::stod(words(frames[static_cast<std::size_t>(k)]).at(8));
+        const double measured = summarize_quality(cell_qualities(frame, cell_orientations(box))).min;
+        EXPECT_NEAR(printed, measured, 1e-4) << frames[static_cast<std::size_t>(k)];
+    }
+    // Frame 0 of the pitch (sin 0) does not move anything.
+    EXPECT_EQ(read_mesh(dir / "frame_0000.vtu").points, box.points);
+
+    // A motion that pushes the rectangle through the farfield: an invalid frame, exit 3, not written.
+    write_mesh(dir / "rect_box.su2", box);
+    std::ofstream(dir / "far.json") << R"({"markers": {"rectangle": {"translate": [0, 25]}}})";
+    const auto quiet = dir / "far";
+    std::filesystem::create_directories(quiet);
+    r = run_example("06_run_frames", quiet, "../rect_box.su2 ../far.json dg-idw");
+    EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+    EXPECT_TRUE(has_line(r.out, "frames 1, valid: no")) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(quiet / "frame_0000.vtu"));
+    // An unknown method: an error, exit 2.
+    EXPECT_EQ(run_example("06_run_frames", quiet, "../rect_box.su2 ../far.json nomethod").exit_code, 2);
+}
+

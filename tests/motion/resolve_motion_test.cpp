@@ -233,7 +233,10 @@ TEST(MotionResolve, NodeMotionFileTwistsIn3D) {
     EXPECT_EQ(rb.boundary.moving[4], 1);
     EXPECT_EQ(rb.boundary.moving[6], 1);
     ASSERT_EQ(rb.warnings.size(), 1u);
-    EXPECT_TRUE(contains(rb.warnings[0], "2 boundary nodes are on both a moving and a static marker")) << rb.warnings[0];
+    EXPECT_TRUE(contains(rb.warnings[0].text, "2 boundary nodes are on both a moving and a static marker"))
+        << rb.warnings[0].text;
+    EXPECT_EQ(rb.warnings[0].code, WarningCode::shared_moving_static);
+    EXPECT_EQ(rb.warnings[0].count, 2);
 }
 
 TEST(MotionResolve, FramesListGivesOneMotionPerFrame) {
@@ -340,14 +343,16 @@ TEST(MotionResolve, MovingAndStaticMarkerRules) {
     const MotionSpec moving = spec_of(R"({"markers": {)" + motion + "}}");
     const ResolvedBoundary rm = resolve_boundary(mesh, moving);
     EXPECT_EQ(rm.boundary.moving, (std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1}));
-    EXPECT_TRUE(contains(rm.warnings.at(0), "follow the moving markers")) << rm.warnings[0];
+    EXPECT_TRUE(contains(rm.warnings.at(0).text, "follow the moving markers")) << rm.warnings[0].text;
     const auto fm = resolve_frame(mesh, moving, rm, 0);
     EXPECT_NEAR(motion_of(rm.boundary, fm.motion, 4).rotation[2], 10 * deg, 1e-15);
 
     const MotionSpec fixed_edges = spec_of(R"({"markers": {)" + motion + R"(}, "shared_nodes": "static_wins"})");
     const ResolvedBoundary rs = resolve_boundary(mesh, fixed_edges);
     EXPECT_EQ(rs.boundary.moving, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0, 1}));
-    EXPECT_TRUE(contains(rs.warnings.at(0), "stay fixed")) << rs.warnings[0];
+    EXPECT_TRUE(contains(rs.warnings.at(0).text, "stay fixed")) << rs.warnings[0].text;
+    // The same text as shared_nodes_warning gives for a count over a decomposed mesh's parts.
+    EXPECT_EQ(rs.warnings[0].text, shared_nodes_warning(rs.warnings[0].count, SharedNodeRule::static_wins).text);
     const auto fs = resolve_frame(mesh, fixed_edges, rs, 0);
     EXPECT_EQ(motion_of(rs.boundary, fs.motion, 4), NodeMotion{});
     EXPECT_EQ(motion_of(rs.boundary, fs.motion, 6), NodeMotion{});
@@ -398,7 +403,11 @@ TEST(MotionResolve, MotionLargerThanTheMeshIsAWarning) {
     const MotionSpec spec = spec_of(R"({"markers": {"airfoil": {"translate": [6, 0]}}})");
     const ResolvedBoundary rb = resolve_boundary(mesh, spec);
     ASSERT_EQ(rb.warnings.size(), 1u);
-    EXPECT_TRUE(contains(rb.warnings[0], "marker 'airfoil' moves node")) << rb.warnings[0];
+    EXPECT_TRUE(contains(rb.warnings[0].text, "marker 'airfoil' moves node")) << rb.warnings[0].text;
+    EXPECT_EQ(rb.warnings[0].code, WarningCode::large_displacement);
+    EXPECT_EQ(rb.warnings[0].marker, "airfoil");
+    EXPECT_GE(rb.warnings[0].node, 0);
+    EXPECT_NEAR(rb.warnings[0].value, 6, 1e-12);  // every airfoil node moves by 6
     const auto f = resolve_frame(mesh, spec, rb, 0);
     EXPECT_EQ(f.warnings.size(), 1u);
     const MotionSpec small = spec_of(R"({"markers": {"airfoil": {"translate": [5, 0]}}})");
@@ -414,14 +423,17 @@ TEST(MotionResolve, LargeMotionWarningsOfAMotionGivenNodeByNode) {
     ASSERT_EQ(f.warnings.size(), 1u);
     const auto w = large_motion_warnings(mesh, rb, f.motion, "arrays");
     ASSERT_EQ(w.size(), 1u);
-    EXPECT_EQ(w[0].substr(w[0].find(':')), f.warnings[0].substr(f.warnings[0].find(':'))) << w[0];
-    EXPECT_TRUE(w[0].starts_with("arrays: marker 'airfoil' moves node")) << w[0];
+    EXPECT_EQ(w[0].text.substr(w[0].text.find(':')), f.warnings[0].text.substr(f.warnings[0].text.find(':')))
+        << w[0].text;
+    EXPECT_TRUE(w[0].text.starts_with("arrays: marker 'airfoil' moves node")) << w[0].text;
     BoundaryMotion turn(rb.boundary.nodes.size());
     for (std::size_t b = 0; b < turn.size(); ++b)
         if (rb.boundary.moving[b]) turn[b].rotation = {0, 0, 190 * deg};
     const auto t = large_motion_warnings(mesh, rb, turn, "arrays");
     ASSERT_EQ(t.size(), 1u);
-    EXPECT_TRUE(contains(t[0], "marker 'airfoil' turns by 190 degrees in one step")) << t[0];
+    EXPECT_TRUE(contains(t[0].text, "marker 'airfoil' turns by 190 degrees in one step")) << t[0].text;
+    EXPECT_EQ(t[0].code, WarningCode::large_rotation);
+    EXPECT_NEAR(t[0].value, 190, 1e-9);
     EXPECT_TRUE(large_motion_warnings(mesh, rb, BoundaryMotion(rb.boundary.nodes.size()), "arrays").empty());
 }
 
@@ -449,7 +461,9 @@ TEST(MotionResolve, AMotionForAnEmptyMarkerIsAWarningAndMovesNothing) {
     EXPECT_EQ(rb.boundary.moving, std::vector<std::uint8_t>(8, 0));
     EXPECT_EQ(rb.moving_markers, std::vector<std::string>{"slat"});
     ASSERT_EQ(rb.warnings.size(), 1u);
-    EXPECT_TRUE(contains(rb.warnings[0], "names marker 'slat', which has no elements")) << rb.warnings[0];
+    EXPECT_TRUE(contains(rb.warnings[0].text, "names marker 'slat', which has no elements")) << rb.warnings[0].text;
+    EXPECT_EQ(rb.warnings[0].code, WarningCode::empty_named_marker);
+    EXPECT_EQ(rb.warnings[0].marker, "slat");
     // An empty marker the motion does not name: no warning.
     EXPECT_TRUE(resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})")).warnings.empty());
     // A node file for it: its nodes are not on the marker, an error naming the marker and node.
@@ -467,7 +481,8 @@ TEST(MotionResolve, AnEmptyOrAllFixedMotionWarnsThatNothingMoves) {
                              R"({"frames": [{"markers": {}}, {"markers": {"airfoil": "fixed"}}]})"}) {
         const ResolvedBoundary rb = resolve_boundary(mesh, spec_of(json));
         ASSERT_EQ(rb.warnings.size(), 1u) << json;
-        EXPECT_TRUE(contains(rb.warnings[0], "m.json: nothing moves")) << rb.warnings[0];
+        EXPECT_TRUE(contains(rb.warnings[0].text, "m.json: nothing moves")) << rb.warnings[0].text;
+        EXPECT_EQ(rb.warnings[0].code, WarningCode::nothing_moves);
     }
     // A marker given a motion, even zero, moves: no warning.
     EXPECT_TRUE(resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0, 0]}}})")).warnings.empty());
@@ -482,8 +497,11 @@ TEST(MotionResolve, BoundaryNodesAtTheSameCoordinatesAreAWarning) {
     const ResolvedBoundary rb = resolve_boundary(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})"));
     EXPECT_EQ(rb.boundary.nodes.size(), 9u);
     ASSERT_EQ(rb.warnings.size(), 1u);
-    EXPECT_TRUE(contains(rb.warnings[0], "2 boundary nodes are at the same coordinates")) << rb.warnings[0];
-    EXPECT_TRUE(contains(rb.warnings[0], "nodes 6 and 9 at (0.5, 0.5)")) << rb.warnings[0];
+    EXPECT_TRUE(contains(rb.warnings[0].text, "2 boundary nodes are at the same coordinates")) << rb.warnings[0].text;
+    EXPECT_TRUE(contains(rb.warnings[0].text, "nodes 6 and 9 at (0.5, 0.5)")) << rb.warnings[0].text;
+    EXPECT_EQ(rb.warnings[0].code, WarningCode::coincident_boundary_nodes);
+    EXPECT_EQ(rb.warnings[0].count, 2);
+    EXPECT_EQ(rb.warnings[0].node, 6);
     // Both move with the marker.
     const auto f = resolve_frame(mesh, spec_of(R"({"markers": {"airfoil": {"translate": [0.1, 0]}}})"), rb, 0);
     EXPECT_EQ(motion_of(rb.boundary, f.motion, 6), motion_of(rb.boundary, f.motion, 9));
@@ -504,7 +522,7 @@ TEST(MotionResolve, ATurnOver180DegreesInOneStepIsAWarning) {
     };
     const auto w = turn(270);
     ASSERT_EQ(w.size(), 1u);
-    EXPECT_TRUE(contains(w[0], "marker 'airfoil' turns by 270 degrees")) << w[0];
+    EXPECT_TRUE(contains(w[0].text, "marker 'airfoil' turns by 270 degrees")) << w[0].text;
     EXPECT_TRUE(turn(180).empty());
     EXPECT_TRUE(turn(-90).empty());
 }
@@ -558,8 +576,9 @@ TEST(ResolveFrame, CountsTheBoundaryFacesTheMotionItselfTurnsOver) {
     const MotionSpec static_wins = spec_of(json);
     const ResolvedFrame folded = resolve_frame(mesh, static_wins, resolve_boundary(mesh, static_wins), 0);
     EXPECT_EQ(folded.folded_faces, 32);
-    EXPECT_TRUE(std::any_of(folded.warnings.begin(), folded.warnings.end(), [](const std::string& w) {
-        return w.find("folds 32 of marker 'z_p''s 741 faces") != std::string::npos;
+    EXPECT_TRUE(std::any_of(folded.warnings.begin(), folded.warnings.end(), [](const Warning& w) {
+        return w.text.find("folds 32 of marker 'z_p''s 741 faces") != std::string::npos &&
+               w.code == WarningCode::boundary_folds_faces && w.marker == "z_p" && w.count == 32 && w.element >= 0;
     }));
     EXPECT_EQ(resolve_frame(mesh, moving_wins, resolve_boundary(mesh, moving_wins), 0).folded_faces, 0);
 }

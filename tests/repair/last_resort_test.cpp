@@ -5,39 +5,14 @@
 #include <vector>
 
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "support/split_grid.hpp"
 
 using namespace dgwarp;
 
-namespace {
-
-// A 3 × 3 grid of unit squares split into triangles (node (i, j) = 4 j + i)
-// and its outer ring of 12 nodes, the fixed ones.
-struct SplitGrid {
-    Mesh mesh;
-    std::vector<NodeId> ring;
-};
-
-SplitGrid last_resort_grid() {
-    SplitGrid g;
-    g.mesh.dim = 2;
-    for (int n = 0; n < 16; ++n) {
-        g.mesh.points.push_back(n % 4);
-        g.mesh.points.push_back(n / 4);
-        if (n % 4 == 0 || n % 4 == 3 || n / 4 == 0 || n / 4 == 3) g.ring.push_back(n);
-    }
-    for (NodeId j = 0; j < 3; ++j)
-        for (NodeId i = 0; i < 3; ++i) {
-            const NodeId a = 4 * j + i, t1[] = {a, a + 1, a + 5}, t2[] = {a, a + 5, a + 4};
-            g.mesh.cells.push_back(CellType::triangle, t1);
-            g.mesh.cells.push_back(CellType::triangle, t2);
-        }
-    return g;
-}
-
-}  // namespace
+using test::SplitGrid;
 
 TEST(LastResort, RepairsCellsAVolumeNodeFoldedAndNothingElse) {
-    SplitGrid g = last_resort_grid();
+    SplitGrid g = test::split_grid();
     const std::vector<std::int8_t> orient = cell_orientations(g.mesh);
     const std::vector<double> before = cell_qualities(g.mesh, orient);
     // Nothing folded: nothing runs.
@@ -55,7 +30,7 @@ TEST(LastResort, RepairsCellsAVolumeNodeFoldedAndNothingElse) {
 }
 
 TEST(LastResort, DoesNotRunWhenTheBoundaryItselfFoldsACell) {
-    SplitGrid g = last_resort_grid();
+    SplitGrid g = test::split_grid();
     const std::vector<std::int8_t> orient = cell_orientations(g.mesh);
     const std::vector<double> before = cell_qualities(g.mesh, orient);
     // Corner node 12 (0, 3) moved to (2.5, 3): the all-boundary triangle (8, 13, 12) folds.

@@ -94,6 +94,7 @@ struct DgHarmonicPrepareStats {
     std::int64_t outside_count = 0;        // volume nodes outside the coarse graph's hull
     std::int64_t shared_vertex_count = 0;  // coarse graph vertices standing for several boundary nodes
     std::int64_t factor_nonzeros = 0;      // nonzeros of the Cholesky factor L
+    std::int64_t floored_weights = 0;      // edge weights raised to the floor after a zero pivot (coarse_laplacian.hpp); 0 normally
     double select_seconds = 0;             // wall distances and coarse point selection
     double graph_seconds = 0;              // Delaunay triangulation of the coarse points
     double locate_seconds = 0;             // location of the volume nodes

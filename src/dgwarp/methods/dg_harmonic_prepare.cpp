@@ -1,6 +1,4 @@
 // prepare_dg_harmonic: coarse points, coarse graph, location, factorised Laplacian.
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,6 +10,7 @@
 #include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/graph/nearest_node.hpp"
 #include "dgwarp/methods/boundary_set_tools.hpp"
+#include "dgwarp/methods/coarse_laplacian.hpp"
 #include "dgwarp/methods/coarse_points.hpp"
 #include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
@@ -19,7 +18,6 @@
 #include "dgwarp/methods/dgm_detail.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
-#include "dgwarp/methods/metis_ordering.hpp"
 
 namespace dgwarp {
 
@@ -70,72 +68,6 @@ UnknownEdges unknown_edges(int dim, std::span<const std::int32_t> simplices, std
         e.first[u + 1] = static_cast<std::int64_t>(e.list.size());
     }
     return e;
-}
-
-// Assembles the Laplacians of the coarse graph with the two weights per edge
-// (edges as unknown_edges gives them) and factorises their unknown blocks:
-// one ordering and symbolic analysis, two numeric factorisations. METIS's
-// nested dissection: on the 826k squeezed sphere's 9,877 unknowns the factor
-// has 1.11M non-zeros against AMD's 1.50M, and factorises in half the time.
-HarmonicFactors factorise(std::span<const std::pair<std::int32_t, std::int32_t>> edges,
-                          std::span<const double> translation_weight, std::span<const double> rotation_weight,
-                          std::int32_t first_unknown, std::int32_t num_unknowns) {
-    const std::int32_t nb = first_unknown, n = num_unknowns;
-    HarmonicFactors f;
-    using Ldlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, MetisOrAmdOrdering>;
-    Ldlt ldlt;
-    // B's entries grouped by unknown: the edges (to a boundary vertex) of each.
-    std::vector<std::vector<std::size_t>> coupling(n);
-    for (std::size_t k = 0; k < edges.size(); ++k)
-        if (edges[k].first < nb) coupling[edges[k].second - nb].push_back(k);
-    std::vector<std::size_t> coupling_edge;
-    for (const auto& row : coupling) {
-        for (std::size_t k : row) {
-            f.coupling_vertex.push_back(edges[k].first);
-            coupling_edge.push_back(k);
-        }
-        f.coupling_start.push_back(static_cast<std::int64_t>(f.coupling_vertex.size()));
-    }
-    bool analysed = false;
-    f.shared = std::equal(translation_weight.begin(), translation_weight.end(), rotation_weight.begin(),
-                          rotation_weight.end());
-    for (auto [weight, sys] : {std::pair{translation_weight, &f.translation}, std::pair{rotation_weight, &f.rotation}}) {
-        if (f.shared && sys == &f.rotation) break;
-        std::vector<Eigen::Triplet<double, int>> a;
-        a.reserve(edges.size() + static_cast<std::size_t>(n));
-        std::vector<double> diagonal(n, 0.0);
-        for (std::size_t k = 0; k < edges.size(); ++k) {
-            const auto [u, v] = edges[k];
-            const double w = weight[k];
-            diagonal[v - nb] += w;
-            if (u >= nb) {
-                diagonal[u - nb] += w;
-                a.emplace_back(v - nb, u - nb, -w);  // lower triangle; zeros kept, so both share one pattern
-            }
-        }
-        for (std::size_t k : coupling_edge) sys->coupling_weight.push_back(weight[k]);
-        for (std::int32_t i = 0; i < n; ++i) a.emplace_back(i, i, diagonal[i]);
-        Eigen::SparseMatrix<double> m(n, n);
-        m.setFromTriplets(a.begin(), a.end());
-        if (!analysed) {
-            ldlt.analyzePattern(m);
-            analysed = true;
-        }
-        ldlt.factorize(m);
-        if (ldlt.info() != Eigen::Success)
-            throw Error("DG-harmonic: the coarse Laplacian could not be factorised (" + std::to_string(n) + " unknowns)");
-        const Eigen::SparseMatrix<double>& l = ldlt.matrixL().nestedExpression();
-        if (f.perm.empty()) {
-            const auto& p = ldlt.permutationP().indices();
-            f.perm.assign(p.data(), p.data() + p.size());
-            f.l_start.assign(l.outerIndexPtr(), l.outerIndexPtr() + n + 1);
-            f.l_row.assign(l.innerIndexPtr(), l.innerIndexPtr() + l.nonZeros());
-        }
-        sys->l_value.assign(l.valuePtr(), l.valuePtr() + l.nonZeros());
-        const Eigen::VectorXd d = ldlt.vectorD();  // a copy: vectorD() returns by value
-        sys->d.assign(d.data(), d.data() + n);
-    }
-    return f;
 }
 
 // Per coarse graph vertex, its distances to the nearest moving and the nearest
@@ -398,7 +330,8 @@ DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> po
         std::vector<double> wt, wr;
         edge_weights(plan, edges, vertex_xyz, wall, boundary_diagonal(dim, points, boundary, true), wt, wr);
         const auto n = static_cast<std::int32_t>(plan.num_vertices() - plan.num_boundary_vertices);
-        plan.solve = factorise(edges.list, wt, wr, plan.num_boundary_vertices, n);
+        plan.solve = factorise_coarse_laplacian(edges.list, wt, wr, plan.num_boundary_vertices, n,
+                                                &plan.stats.floored_weights);
         plan.stats.factor_nonzeros = static_cast<std::int64_t>(plan.solve.l_row.size());
     }
     plan.stats.factor_seconds = seconds_since(t0);

@@ -196,6 +196,7 @@ PlanSummary plan_summary(const Plan& plan) {
                               s.outside_hull = p.stats.outside_count;
                               s.shared_vertices = p.stats.shared_vertex_count;
                               s.coarse_points = p.stats.coarse_interior;
+                              s.floored_weights = p.stats.floored_weights;
                               if (p.stats.graph_seconds > 0 || p.stats.locate_seconds > 0)
                                   s.phase_seconds = {{"coarse points", p.stats.select_seconds},
                                                      {"graph", p.stats.graph_seconds},

@@ -122,6 +122,7 @@ struct PlanSummary {
     std::int64_t outside_hull = 0;      // DG-IDW, DGM: volume nodes outside the graph's hull
     std::int64_t shared_vertices = 0;   // DG-IDW, DGM, DG-harmonic: graph vertices standing for several boundary nodes
     std::int64_t coarse_points = 0;     // DG-harmonic: volume nodes on the coarse level
+    std::int64_t floored_weights = 0;   // DG-harmonic: coarse edge weights raised after a zero pivot (0 normally)
     /// Prepare phases in order, e.g. {"graph", 0.01}, {"locate", 0.02}; empty for a loaded plan.
     std::vector<std::pair<std::string, double>> phase_seconds;
 };

@@ -157,7 +157,7 @@ FirstMotions first_motions(const Context& c, const NodeMotions& motions) {
 /// Warnings for the moving markers that turn by more than 180 degrees in one
 /// step, or move a node farther than the mesh's bounding-box diagonal.
 void warn_large_motions(const Context& c, const NodeMotions& motions, const std::string& at,
-                        std::vector<std::string>& warnings) {
+                        std::vector<Warning>& warnings) {
     const Mesh& mesh = c.mesh;
     for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
         if (!c.series.marker_moving[m]) continue;
@@ -182,13 +182,18 @@ void warn_large_motions(const Context& c, const NodeMotions& motions, const std:
             w << at << ": marker '" << mesh.markers[m].name << "' turns by " << largest_angle * 180 / std::numbers::pi
               << " degrees in one step; the methods interpolate the rotation vector (axis x angle), so a turn over "
                  "180 degrees is not the same as the shorter turn the other way: split it into frames";
-            warnings.push_back(w.str());
+            Warning warning{WarningCode::large_rotation, w.str(), mesh.markers[m].name};
+            warning.value = largest_angle * 180 / std::numbers::pi;
+            warnings.push_back(std::move(warning));
         }
         if (largest > c.series.diagonal && largest_node >= 0) {
             std::ostringstream w;
             w << at << ": marker '" << mesh.markers[m].name << "' moves node " << largest_node << " by " << largest
               << ", more than the diagonal of the mesh's bounding box (" << c.series.diagonal << ")";
-            warnings.push_back(w.str());
+            Warning warning{WarningCode::large_displacement, w.str(), mesh.markers[m].name};
+            warning.node = largest_node;
+            warning.value = largest;
+            warnings.push_back(std::move(warning));
         }
     }
 }
@@ -271,7 +276,7 @@ void refuse_unusable_motions(const Context& c, const NodeMotions& motions, const
 /// static_wins).
 /// Returns the number of folded faces.
 std::int64_t warn_folded_faces(const Context& c, const BoundaryMotion& motion, const std::string& at,
-                               std::vector<std::string>& warnings) {
+                               std::vector<Warning>& warnings) {
     const Mesh& mesh = c.mesh;
     const BoundarySet& boundary = c.boundary;
     if (std::none_of(boundary.moving.begin(), boundary.moving.end(), [](std::uint8_t m) { return m != 0; })) return 0;
@@ -329,14 +334,17 @@ std::int64_t warn_folded_faces(const Context& c, const BoundaryMotion& motion, c
           << "): they turn over against their nodes' rotation, so no method can keep the cells on them valid; "
              "change the motion (a moving marker held at a static rim by shared_nodes: static_wins does this, "
              "docs/MOTION.md)";
-        warnings.push_back(w.str());
+        Warning warning{WarningCode::boundary_folds_faces, w.str(), mesh.markers[m].name,
+                        static_cast<std::int64_t>(folded)};
+        warning.element = static_cast<std::int64_t>(example);
+        warnings.push_back(std::move(warning));
     }
     return total;
 }
 
 /// Resolves one frame (see the header's rules). Appends warnings.
 BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double time, const std::string& at,
-                          std::vector<std::string>& warnings, std::int64_t* folded_faces = nullptr) {
+                          std::vector<Warning>& warnings, std::int64_t* folded_faces = nullptr) {
     const Mesh& mesh = c.mesh;
     std::vector<const MarkerMotion*> marker_motions(mesh.markers.size());
     for (std::size_t m = 0; m < mesh.markers.size(); ++m)
@@ -355,22 +363,25 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
 }
 
 /// Warnings for markers the motion file names that have no nodes in the mesh.
-void warn_empty_named_markers(const Context& c, std::vector<std::string>& warnings) {
+void warn_empty_named_markers(const Context& c, std::vector<Warning>& warnings) {
     for (std::size_t m = 0; m < c.mesh.markers.size(); ++m) {
         if (!c.series.marker_nodes[m].empty()) continue;
         const std::string& name = c.mesh.markers[m].name;
         const bool named = std::any_of(c.spec.frames.begin(), c.spec.frames.end(),
                                        [&](const MotionFrame& f) { return f.markers.count(name) > 0; });
         if (named)
-            warnings.push_back(where(c.spec, 0) + " names marker '" + name +
-                               "', which has no elements in the mesh (an empty marker, such as SU2's MARKER_ELEMS= 0 "
-                               "or a Gmsh physical group without elements): its motion acts on no node");
+            warnings.push_back({WarningCode::empty_named_marker,
+                                where(c.spec, 0) + " names marker '" + name +
+                                    "', which has no elements in the mesh (an empty marker, such as SU2's "
+                                    "MARKER_ELEMS= 0 or a Gmsh physical group without elements): its motion acts on "
+                                    "no node",
+                                name});
     }
 }
 
 /// A warning when boundary nodes share their coordinates (zero-length
 /// boundary edges, such as a collapsed trailing edge).
-void warn_coincident_boundary_nodes(const Context& c, std::vector<std::string>& warnings) {
+void warn_coincident_boundary_nodes(const Context& c, std::vector<Warning>& warnings) {
     const CoincidentGroups groups = group_coincident_points(c.mesh.dim, c.mesh.points, c.boundary.nodes);
     if (groups.size() == c.boundary.nodes.size()) return;
     std::size_t nodes = 0, example = 0;
@@ -383,11 +394,15 @@ void warn_coincident_boundary_nodes(const Context& c, std::vector<std::string>& 
     const auto first = static_cast<std::size_t>(groups.offsets[example]);
     const NodeId a = c.boundary.nodes[static_cast<std::size_t>(groups.members[first])];
     const NodeId b = c.boundary.nodes[static_cast<std::size_t>(groups.members[first + 1])];
-    warnings.push_back(std::to_string(nodes) + " boundary nodes are at the same coordinates as another boundary node " +
-                       "(zero-length boundary edges, e.g. nodes " + std::to_string(a) + " and " + std::to_string(b) +
-                       " at " + point_text(point(c.mesh, a)) +
-                       "): each follows its own marker's motion; the methods use one position for them (DG-IDW and "
-                       "DGM one graph vertex, RBF one centre) with the motion of the first moving one");
+    Warning w{WarningCode::coincident_boundary_nodes,
+              std::to_string(nodes) + " boundary nodes are at the same coordinates as another boundary node " +
+                  "(zero-length boundary edges, e.g. nodes " + std::to_string(a) + " and " + std::to_string(b) +
+                  " at " + point_text(point(c.mesh, a)) +
+                  "): each follows its own marker's motion; the methods use one position for them (DG-IDW and "
+                  "DGM one graph vertex, RBF one centre) with the motion of the first moving one",
+              "", static_cast<std::int64_t>(nodes)};
+    w.node = a;
+    warnings.push_back(std::move(w));
 }
 
 }  // namespace
@@ -418,12 +433,7 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
 
     std::size_t shared = 0;
     for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b) shared += series.on_moving[b] && series.on_static[b];
-    if (shared > 0)
-        out.warnings.push_back(
-            std::to_string(shared) + " boundary node" + (shared == 1 ? " is" : "s are") +
-            " on both a moving and a static marker; " +
-            (spec.shared_nodes == SharedNodeRule::moving_wins ? "they follow the moving markers (shared_nodes: moving_wins)"
-                                                              : "they stay fixed (shared_nodes: static_wins)"));
+    if (shared > 0) out.warnings.push_back(shared_nodes_warning(static_cast<std::int64_t>(shared), spec.shared_nodes));
 
     if (c.boundary.nodes.empty()) {
         std::string list;
@@ -435,9 +445,10 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
                         mesh.markers.empty() ? std::string() : mesh.markers.front().name);
     }
     if (out.moving_markers.empty())
-        out.warnings.push_back((spec.source.empty() ? std::string("motion") : spec.source) +
-                               ": nothing moves: the motion gives no marker a motion (an empty motion, or every "
-                               "marker fixed), so the deformed mesh is the input mesh");
+        out.warnings.push_back({WarningCode::nothing_moves,
+                                (spec.source.empty() ? std::string("motion") : spec.source) +
+                                    ": nothing moves: the motion gives no marker a motion (an empty motion, or every "
+                                    "marker fixed), so the deformed mesh is the input mesh"});
     warn_coincident_boundary_nodes(c, out.warnings);
     warn_empty_named_markers(c, out.warnings);
 
@@ -461,8 +472,17 @@ ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const Reso
     return out;
 }
 
-std::vector<std::string> large_motion_warnings(const Mesh& mesh, const ResolvedBoundary& resolved,
-                                               const BoundaryMotion& motion, const std::string& at) {
+Warning shared_nodes_warning(std::int64_t count, SharedNodeRule rule) {
+    return {WarningCode::shared_moving_static,
+            std::to_string(count) + " boundary node" + (count == 1 ? " is" : "s are") +
+                " on both a moving and a static marker; " +
+                (rule == SharedNodeRule::moving_wins ? "they follow the moving markers (shared_nodes: moving_wins)"
+                                                     : "they stay fixed (shared_nodes: static_wins)"),
+            "", count};
+}
+
+std::vector<Warning> large_motion_warnings(const Mesh& mesh, const ResolvedBoundary& resolved,
+                                           const BoundaryMotion& motion, const std::string& at) {
     assert(motion.size() == resolved.boundary.nodes.size());
     const MotionSpec none;
     const Context c{mesh, none, resolved.context, resolved.boundary};
@@ -471,7 +491,7 @@ std::vector<std::string> large_motion_warnings(const Mesh& mesh, const ResolvedB
         if (!c.series.marker_moving[m]) continue;
         for (const std::int32_t b : c.series.slots[m]) motions[m].push_back(motion[static_cast<std::size_t>(b)]);
     }
-    std::vector<std::string> warnings;
+    std::vector<Warning> warnings;
     warn_large_motions(c, motions, at, warnings);
     return warnings;
 }

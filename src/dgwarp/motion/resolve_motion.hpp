@@ -15,7 +15,7 @@
 //    markers and the number of nodes, except for nodes that static_wins holds
 //    fixed.
 //  - static nodes get the zero motion (t = 0, w = 0, c = 0).
-//  - warnings (strings, nothing here prints): a marker moving a node farther
+//  - warnings (core/warning.hpp: codes and texts, nothing here prints): a marker moving a node farther
 //    than the mesh's bounding-box diagonal, nodes on moving and static
 //    markers, boundary nodes at the same coordinates (zero-length boundary
 //    edges), a marker the motion names that has no elements, no moving
@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "dgwarp/core/warning.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/motion/motion_spec.hpp"
 #include "dgwarp/motion/node_motion.hpp"
@@ -49,7 +50,7 @@ struct ResolvedBoundary {
     BoundarySet boundary;                     // every node of every marker, sorted; moving flags
     std::vector<std::string> moving_markers;  // in mesh order
     std::vector<std::string> static_markers;  // in mesh order
-    std::vector<std::string> warnings;        // e.g. nodes shared by moving and static markers
+    std::vector<Warning> warnings;            // e.g. nodes shared by moving and static markers
     SeriesContext context;                    // what resolve_frame reuses for every frame
 };
 
@@ -72,7 +73,7 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec);
 /// One frame's motion of the boundary nodes.
 struct ResolvedFrame {
     BoundaryMotion motion;              // one NodeMotion per node of the BoundarySet, in its order
-    std::vector<std::string> warnings;  // e.g. a marker moved farther than the mesh's size
+    std::vector<Warning> warnings;      // e.g. a marker moved farther than the mesh's size
     /// Boundary faces the motion itself turns over (a warning names them):
     /// no method keeps the cells on them valid, so callers skip work that
     /// cannot help (DG-harmonic's guard).
@@ -95,8 +96,13 @@ ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const Reso
 /// is (one NodeMotion per node of resolved.boundary, e.g. arrays from Python)
 /// rather than resolved from a motion spec; `at` says where, as "motion
 /// (frame 3)" does.
-std::vector<std::string> large_motion_warnings(const Mesh& mesh, const ResolvedBoundary& resolved,
-                                               const BoundaryMotion& motion, const std::string& at);
+std::vector<Warning> large_motion_warnings(const Mesh& mesh, const ResolvedBoundary& resolved,
+                                           const BoundaryMotion& motion, const std::string& at);
+
+/// resolve_boundary's warning about `count` boundary nodes on both a moving
+/// and a static marker (what `rule` does with them); for a count over every
+/// part of a decomposed mesh.
+Warning shared_nodes_warning(std::int64_t count, SharedNodeRule rule);
 
 /// The new positions of the boundary nodes under `motion` (apply_motion per
 /// node): boundary.nodes.size() × mesh.dim, row-major, in BoundarySet order.

@@ -1,0 +1,104 @@
+#pragma once
+// One frame of a run: the method's step, the repair (dg-harmonic's last
+// resort, or untangling when asked), and the frame's quality against the
+// original mesh's. What `dgwarp deform`, the Python package and a solver
+// calling the library do after every step, in one place (docs/API.md).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/methods/method.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/repair/untangle.hpp"
+#include "dgwarp/run/original_cells.hpp"
+
+namespace dgwarp {
+
+/// What runs after a step.
+enum class Repair {
+    method_default,  // dg-harmonic: its last resort repairs the cells its step inverted; the others: nothing
+    untangle,        // untangle every cell at or below FrameOptions::untangle_target (`dgwarp deform --untangle`)
+    none,            // no repair (`--no-untangle`)
+};
+
+struct FrameOptions {
+    Repair repair = Repair::method_default;
+    double untangle_target = UntangleOptions{}.target_quality;  // with Repair::untangle
+    std::size_t worst_count = 10;                               // cells listed in worst_inverted and worst_on_boundary
+};
+
+/// Per cell of a frame: its quality and ratio to the original's, and the cells the run inverted.
+struct FrameCells {
+    std::vector<double> quality;  // judged by the original's orientation (OriginalCells::orientation)
+    std::vector<double> ratio;    // quality / the original's (quality_ratios)
+    /// Cells valid in the original and inverted now (newly_inverted_cells):
+    /// what makes a frame invalid; cells already inverted in the input are not the motion's doing.
+    std::vector<std::int64_t> inverted;
+    /// Of those, the cells whose every node is on the boundary: the boundary
+    /// motion alone inverts them, and nothing that moves volume nodes can help.
+    std::vector<std::int64_t> inverted_on_boundary;
+};
+
+/// What one frame did: plain data a report (text, JSON, Python) is made from.
+struct FrameReport {
+    StepReport step;
+    std::optional<UntangleReport> untangled;  // when a repair found cells to mend
+    bool last_resort = false;                 // the repair was dg-harmonic's last resort, not Repair::untangle
+    QualitySummary quality;
+    RatioSummary ratio;
+    std::int64_t inverted_by_motion = 0;          // FrameCells::inverted's size
+    std::vector<std::int64_t> worst_inverted;     // the worst of those (up to FrameOptions::worst_count)
+    std::int64_t inverted_on_boundary = 0;        // FrameCells::inverted_on_boundary's size
+    std::vector<std::int64_t> worst_on_boundary;  // the worst of those
+    std::vector<Warning> warnings;                // the frame's motion's, then its step's (frame_warnings)
+    double step_seconds = 0, repair_seconds = 0, quality_seconds = 0;
+
+    bool valid() const { return inverted_by_motion == 0; }
+};
+
+/// The options of a frame's step: DG-harmonic's guard off when the boundary
+/// motion itself turns `folded_faces` faces over (ResolvedFrame::folded_faces):
+/// no redo of the volume can mend their cells.
+MethodOptions step_options(MethodOptions options, std::int64_t folded_faces);
+
+/// Warnings about a step's report: boundary nodes at the same coordinates
+/// that were given different motions (WarningCode::conflicting_shared_motions).
+std::vector<Warning> step_warnings(const StepReport& step);
+
+/// A frame's warnings: its motion's (ResolvedFrame::warnings), then its step's.
+std::vector<Warning> frame_warnings(const ResolvedFrame& motion, const StepReport& step);
+
+/// Up to `count` of `cells`, those of smallest `quality` first (stable: the lower index first on ties).
+std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, std::span<const double> quality,
+                                      std::size_t count);
+
+/// The cells of `mesh` at `points` (num_points × dim) against the original's.
+/// `fixed`: the boundary nodes (BoundarySet::nodes, sorted). Threaded.
+FrameCells measure_frame(const Mesh& mesh, std::span<const double> points, const OriginalCells& original,
+                         std::span<const NodeId> fixed);
+
+/// Called when a repair starts (for a progress display: it may take seconds).
+using RepairStarted = std::function<void()>;
+
+/// After a step of `method` moved `points` (changed in place): the repair
+/// `options` ask for, then the frame's cells (returned) and report's
+/// untangled, last_resort, quality, ratio, inverted and worst fields, and
+/// its repair and quality seconds. `fixed`: the boundary nodes (sorted).
+FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& original, std::span<const NodeId> fixed,
+                        const FrameOptions& options, std::span<double> points, FrameReport& report,
+                        const RepairStarted& repair_started = {});
+
+/// One frame: deform(plan, mesh.points, motion.motion, out, step_options(...)),
+/// then finish_frame; the report's warnings are frame_warnings'. `out`: num_points × dim, the frame's coordinates
+/// (measured from the original mesh, not the previous frame). `cells`, when
+/// not null, receives the frame's cells. Throws as deform does.
+FrameReport deform_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
+                         const ResolvedBoundary& boundary, const ResolvedFrame& motion, const MethodOptions& options,
+                         const FrameOptions& frame_options, std::span<double> out, FrameCells* cells = nullptr,
+                         const ProgressFn& progress = {});
+
+}  // namespace dgwarp

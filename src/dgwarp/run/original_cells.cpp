@@ -1,0 +1,33 @@
+#include "dgwarp/run/original_cells.hpp"
+
+#include <string>
+#include <utility>
+
+#include "dgwarp/core/error.hpp"
+
+namespace dgwarp {
+
+OriginalCells measure_original(const Mesh& mesh) {
+    OriginalCells o;
+    o.own_orientation = cell_orientations(mesh);
+    o.orientation = dominant_orientations(mesh, o.own_orientation);
+    o.quality = cell_qualities(mesh, o.orientation);
+    o.summary = summarize_quality(o.quality);
+    return o;
+}
+
+OriginalCells measure_original(const Mesh& mesh, std::vector<std::int8_t> own_orientation,
+                               std::vector<std::int8_t> orientation) {
+    for (const auto* given : {&own_orientation, &orientation})
+        if (given->size() != mesh.cells.size())
+            throw MeshError(std::to_string(given->size()) + " cell orientations for a mesh of " +
+                            std::to_string(mesh.cells.size()) + " cells");
+    OriginalCells o;
+    o.own_orientation = std::move(own_orientation);
+    o.orientation = std::move(orientation);
+    o.quality = cell_qualities(mesh, o.orientation);
+    o.summary = summarize_quality(o.quality);
+    return o;
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,32 @@
+#pragma once
+// What every frame of a run is judged against: the original mesh's cells,
+// measured once. A cell flipped in the input counts as inverted before and
+// after (reported as already inverted, never as the motion's doing).
+#include <cstdint>
+#include <vector>
+
+#include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+
+namespace dgwarp {
+
+struct OriginalCells {
+    /// Per cell, the orientation cells are judged by: the majority of the
+    /// original's per cell type (dominant_orientations, as `dgwarp info`
+    /// judges a mesh).
+    std::vector<std::int8_t> orientation;
+    std::vector<std::int8_t> own_orientation;  // per cell, its own in the original (untangle keeps it)
+    std::vector<double> quality;               // per cell, judged by `orientation`
+    QualitySummary summary;                    // of `quality`
+};
+
+/// The original cells of `mesh`, judged by the majority orientation of each cell type. Threaded.
+OriginalCells measure_original(const Mesh& mesh);
+
+/// The same from the cells' own orientations (cell_orientations(mesh)),
+/// judged by `orientation` (e.g. the majority over every process's part of a
+/// decomposed mesh). Throws MeshError when a size is not the number of cells.
+OriginalCells measure_original(const Mesh& mesh, std::vector<std::int8_t> own_orientation,
+                               std::vector<std::int8_t> orientation);
+
+}  // namespace dgwarp

@@ -1,0 +1,97 @@
+#pragma once
+// A deformation run: every frame of a motion, one after the other, each
+// stepped from the original mesh, repaired and measured (deform_frame.hpp).
+// The library never writes files: each frame's coordinates and report go to
+// the caller's `frame_done`, which writes them (the CLI), hands them to a
+// solver, or keeps them (Python).
+//
+//   const Deformation d = prepare_deformation(mesh, spec, Method::dg_harmonic);
+//   RunCallbacks on;
+//   on.frame_done = [&](const FrameView& f) { write(f.points); return f.report.valid(); };
+//   const RunReport r = run_frames(RunContext::of(mesh, spec, d), {}, on);
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "dgwarp/core/progress.hpp"
+#include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/methods/method.hpp"
+#include "dgwarp/motion/motion_spec.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
+#include "dgwarp/run/deform_frame.hpp"
+#include "dgwarp/run/original_cells.hpp"
+
+namespace dgwarp {
+
+/// What every frame of one (mesh, motion, method) reuses, built once.
+struct Deformation {
+    Method method = Method::dg_harmonic;
+    MethodOptions options;
+    ResolvedBoundary boundary;
+    OriginalCells original;
+    Plan plan;
+    double resolve_seconds = 0, original_seconds = 0, prepare_seconds = 0;
+};
+
+/// Resolves `spec`'s boundary on `mesh` (resolve_boundary: throws MeshError
+/// naming the marker or node), measures the original cells and prepares
+/// `method`'s plan with the mesh's cells. Throws as prepare does.
+Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method method,
+                                const MethodOptions& options = {}, const ProgressFn& progress = {});
+
+/// What run_frames reads; nothing is copied (every reference must outlive the run).
+struct RunContext {
+    const Mesh& mesh;
+    const MotionSpec& spec;
+    const ResolvedBoundary& boundary;
+    const OriginalCells& original;
+    const Plan& plan;
+    const MethodOptions& options;  // the plan's (a loaded plan's own)
+
+    static RunContext of(const Mesh& mesh, const MotionSpec& spec, const Deformation& d) {
+        return {mesh, spec, d.boundary, d.original, d.plan, d.options};
+    }
+};
+
+struct RunOptions {
+    FrameOptions frame;
+    bool stop_at_invalid = true;  // no frame after one with cells the motion inverted
+};
+
+/// One finished frame, as frame_done sees it (valid during the call only).
+struct FrameView {
+    std::size_t frame = 0;
+    double time = 0;                   // frame_time(spec, frame)
+    const ResolvedFrame& motion;       // its boundary motion and the motion's warnings
+    std::span<const double> points;    // its coordinates, num_points × dim
+    const FrameReport& report;
+    const FrameCells& cells;
+};
+
+struct RunCallbacks {
+    /// Before frame k's step; returns the step's progress function (or an empty one).
+    std::function<ProgressFn(std::size_t frame)> frame_started;
+    /// When frame k's repair starts (it may take seconds).
+    std::function<void(std::size_t frame)> repair_started;
+    /// The step, when not the plan's own deform (e.g. a plan spread over MPI
+    /// processes): fills `out` and returns the step's report.
+    std::function<StepReport(const ResolvedFrame& motion, std::span<double> out, const ProgressFn& progress)> step;
+    /// Each finished frame, valid or not; false stops the run.
+    std::function<bool(const FrameView&)> frame_done;
+};
+
+struct RunReport {
+    std::vector<FrameReport> frames;  // the frames run, in order
+    /// The first frame with cells the motion inverted, or -1.
+    std::int64_t first_invalid = -1;
+    bool valid() const { return first_invalid < 0; }
+};
+
+/// Every frame of ctx.spec in order (or until frame_done returns false, or
+/// after an invalid frame when options.stop_at_invalid). Throws what a step
+/// or resolve_frame throws; the frames before were handed to frame_done.
+RunReport run_frames(const RunContext& ctx, const RunOptions& options, const RunCallbacks& callbacks);
+
+}  // namespace dgwarp
