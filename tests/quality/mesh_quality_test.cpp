@@ -172,6 +172,52 @@ TEST(QualityDriver, HistogramBinEdgesAreInclusiveAboveAndRoundOffGoesToTheLastBi
     EXPECT_EQ(s.min, -0.5);
 }
 
+TEST(QualityDriver, HistogramBinsAreTheFirstEdgeScansOnEveryEdgeAndBetween) {
+    // Every bin edge, its neighbours one ulp away, values between, beyond 1 and inf, NaN:
+    // the bin is the first b >= 1 with q <= edges[b + 1] (the last bin above), by brute force.
+    std::vector<double> q;
+    const std::vector<double> edges = summarize_quality(std::vector<double>{0.5}).histogram.edges;
+    for (std::size_t b = 1; b < edges.size(); ++b)
+        for (double v : {edges[b], std::nextafter(edges[b], 0.0), std::nextafter(edges[b], 2.0)}) q.push_back(v);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-0.1, 1.1);
+    for (int k = 0; k < 2000; ++k) q.push_back(u(rng));
+    q.insert(q.end(), {1e-300, 5e-324, 1.0 + 1e-12, std::numeric_limits<double>::infinity(),
+                       std::numeric_limits<double>::quiet_NaN()});
+    std::vector<std::int64_t> expected(edges.size() - 1, 0);
+    for (double v : q) {
+        std::size_t bin = 0;
+        if (v > 0) {
+            bin = 1;
+            while (bin < expected.size() - 1 && v > edges[bin + 1]) ++bin;
+        }
+        ++expected[bin];
+    }
+    EXPECT_EQ(summarize_quality(q).histogram.counts, expected);
+}
+
+TEST(QualityDriver, EveryCellIsItsOwnCellShapeQualityWhateverItsType) {
+    // Tetrahedra (measured by the driver's own loop), mirrored ones and other types alike.
+    const Mesh grid = perturbed_hex_grid(6, 5, 4, 3);
+    Mesh m = grid;
+    for (std::size_t c = 0; c < grid.cells.size(); c += 2) {
+        const auto n = grid.cells.nodes_of(c);
+        const NodeId t1[] = {n[0], n[1], n[3], n[4]}, t2[] = {n[1], n[0], n[3], n[4]};  // t2 mirrored
+        m.cells.push_back(CellType::tetrahedron, t1);
+        m.cells.push_back(CellType::tetrahedron, t2);
+    }
+    const std::vector<std::int8_t> own = cell_orientations(m), majority = dominant_orientations(m);
+    for (const auto* orientation : {&own, &majority}) {
+        const std::vector<double> q = cell_qualities(m, *orientation);
+        for (std::size_t c = 0; c < m.cells.size(); ++c) {
+            std::vector<double> coords;
+            for (NodeId v : m.cells.nodes_of(c))
+                for (int d = 0; d < 3; ++d) coords.push_back(m.points[3 * static_cast<std::size_t>(v) + d]);
+            ASSERT_EQ(q[c], cell_shape_quality(m.cells.types[c], coords, 3, (*orientation)[c])) << c;  // bit for bit
+        }
+    }
+}
+
 TEST(QualityDriver, EmptySummary) {
     const QualitySummary s = summarize_quality({});
     EXPECT_EQ(s.cells, 0);

@@ -23,9 +23,9 @@ inline void to_points(std::span<const double> coords, int dim, std::span<Point3>
 /// two keeps every bit of smaller meshes (they are not scaled).
 inline void to_scaled_points(std::span<const double> coords, int dim, std::span<Point3> out) {
     to_points(coords, dim, out);
-    double largest = 0;
+    double largest = 0;  // a NaN coordinate is passed over, as std::fmax would (inlined: no call per value)
     for (const Point3& p : out)
-        for (double v : p) largest = std::fmax(largest, std::fabs(v));
+        for (double v : p) largest = std::fabs(v) > largest ? std::fabs(v) : largest;
     if (!(largest > 0x1p400) || !std::isfinite(largest)) return;
     const int e = std::ilogb(largest);
     for (Point3& p : out)

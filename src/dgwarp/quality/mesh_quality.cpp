@@ -9,6 +9,7 @@
 
 #include "dgwarp/core/ordered_sum.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/prefetch.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
 
 namespace dgwarp {
@@ -28,15 +29,37 @@ std::span<const double> cell_coords(const Mesh& mesh, std::span<const double> po
     return {out.data(), nodes.size() * dim};
 }
 
+/// Calls body(i, coords) for every cell i of `mesh` with its coordinates
+/// from `points` (cell_coords), one contiguous range of cells per thread.
+/// The nodes of the cell `ahead` places on are prefetched: a mesh's node
+/// numbering seldom follows its cells (Gmsh's does not), and a cell's four
+/// to eight points are then as many cache misses; asking for them early lets
+/// the memory system fetch several cells' at once (on the 865k-node sphere's
+/// 5.3M tetrahedra in Gmsh's numbering, cell_qualities on one thread went
+/// from 225 to 118 ns a cell).
+template <class Body>
+void for_each_cell(const Mesh& mesh, std::span<const double> points, Body&& body) {
+    constexpr std::int64_t ahead = 12;
+    const auto n = static_cast<std::int64_t>(mesh.cells.size());
+    const std::size_t dim = static_cast<std::size_t>(mesh.dim);
+    parallel_for_chunks(n, [&](std::int64_t begin, std::int64_t end) {
+        std::array<double, 24> coords;
+        for (std::int64_t i = begin; i < end; ++i) {
+            if (i + ahead < end)
+                for (NodeId v : mesh.cells.nodes_of(static_cast<std::size_t>(i + ahead)))
+                    prefetch_bytes(points.data() + static_cast<std::size_t>(v) * dim, dim * sizeof(double));
+            const auto k = static_cast<std::size_t>(i);
+            body(k, cell_coords(mesh, points, k, coords));
+        }
+    });
+}
+
 }  // namespace
 
 std::vector<std::int8_t> cell_orientations(const Mesh& reference) {
     std::vector<std::int8_t> orientation(reference.cells.size());
-    parallel_for(static_cast<std::int64_t>(orientation.size()), [&](std::int64_t i) {
-        std::array<double, 24> coords;
-        const auto k = static_cast<std::size_t>(i);
-        orientation[k] = static_cast<std::int8_t>(
-            cell_orientation(reference.cells.types[k], cell_coords(reference, reference.points, k, coords), reference.dim));
+    for_each_cell(reference, reference.points, [&](std::size_t k, std::span<const double> coords) {
+        orientation[k] = static_cast<std::int8_t>(cell_orientation(reference.cells.types[k], coords, reference.dim));
     });
     return orientation;
 }
@@ -68,10 +91,8 @@ std::vector<double> cell_qualities(const Mesh& mesh, std::span<const double> poi
     assert(orientations.size() == mesh.cells.size());
     assert(points.size() == mesh.points.size());
     std::vector<double> quality(mesh.cells.size());
-    parallel_for(static_cast<std::int64_t>(quality.size()), [&](std::int64_t i) {
-        std::array<double, 24> coords;
-        const auto k = static_cast<std::size_t>(i);
-        quality[k] = cell_shape_quality(mesh.cells.types[k], cell_coords(mesh, points, k, coords), mesh.dim, orientations[k]);
+    for_each_cell(mesh, points, [&](std::size_t k, std::span<const double> coords) {
+        quality[k] = cell_shape_quality(mesh.cells.types[k], coords, mesh.dim, orientations[k]);
     });
     return quality;
 }
