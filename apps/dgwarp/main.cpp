@@ -28,6 +28,10 @@ void remove_temporaries_on_signals() {
 
 }  // namespace
 
+namespace {
+int run_command(int argc, char** argv);
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace dgwarp::cli;
     remove_temporaries_on_signals();
@@ -40,13 +44,20 @@ int main(int argc, char** argv) {
         return exit_bad_input;
     }
     if (mpi_rank() > 0) {
-        const int code = mpi_serve();  // that of the last run every process made
+        // Rank 0's exit code, or that of the last run every process made: every rank exits alike.
+        const int code = mpi_serve();
         mpi_stop();
         return code;
     }
-    struct StopTheOtherRanks {
-        ~StopTheOtherRanks() { mpi_stop(); }
-    } stop_the_other_ranks;
+    const int code = run_command(argc, argv);
+    mpi_stop(code);
+    return code;
+}
+
+namespace {
+
+int run_command(int argc, char** argv) {
+    using namespace dgwarp::cli;
     CLI::App app{"dgwarp: deform CFD volume meshes to follow moving and deforming boundaries.\n"
                  "Methods: dg-harmonic (the default, with its guard), the paper's DG-IDW (Delaunay-graph\n"
                  "inverse distance weighting, Wang, Qin & Zhao), DGM, IDW, RBF and the laplacian reference."};
@@ -110,3 +121,5 @@ int main(int argc, char** argv) {
     }
     return exit_ok;
 }
+
+}  // namespace

@@ -68,7 +68,7 @@ mpi::DistributedPlan mpi_prepare_part(const MpiPrepareHeader& h, const MpiPart& 
     try {
         plan = mpi::prepare_distributed(MPI_COMM_WORLD, static_cast<Method>(h.method), h.dim, part.points,
                                         part.global_ids, part.boundary, h.options);
-    } catch (const Error&) {  // on every process alike (prepare_distributed's errors are collective)
+    } catch (const std::exception&) {  // on every process alike (prepare_distributed's failures are collective)
         error = std::current_exception();
     }
     const double s = sw.lap();
@@ -109,11 +109,12 @@ int mpi_start(int& argc, char**& argv) {
 int mpi_rank() { return mpi_my_rank; }
 int mpi_processes() { return mpi_size; }
 
-void mpi_stop() {
+void mpi_stop(int exit_code) {
     if (!mpi_started) return;
     if (mpi_my_rank == 0 && mpi_size > 1) {
         int command = command_stop;
         MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        MPI_Bcast(&exit_code, 1, MPI_INT, 0, MPI_COMM_WORLD);
     }
     MPI_Finalize();
     mpi_started = false;
@@ -126,7 +127,11 @@ int mpi_serve() {
     for (;;) {
         int command = command_stop;
         MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);
-        if (command == command_stop) return code;
+        if (command == command_stop) {
+            int rank0_code = exit_ok;
+            MPI_Bcast(&rank0_code, 1, MPI_INT, 0, MPI_COMM_WORLD);
+            return rank0_code != exit_ok ? rank0_code : code;
+        }
         try {
             if (command == command_everywhere) {
                 code = run_everywhere(mpi_broadcast_text(""));

@@ -98,8 +98,9 @@ std::shared_ptr<DistributedRun> mpi_prepare_own(Method method, int dim, const Me
 StepReport mpi_deform_own(const DistributedRun& run, std::span<const double> points, const BoundaryMotion& motion,
                           std::span<double> out, std::vector<double>& seconds);
 
-/// Rank 0: tells the other ranks to stop; every rank: ends MPI.
-void mpi_stop();
+/// Rank 0: tells the other ranks to stop, with its exit code (mpi_serve
+/// returns it, so every rank exits with it); every rank: ends MPI.
+void mpi_stop(int exit_code = 0);
 
 /// Rank 0: prepares `method` on every process, each with the nodes of its
 /// block of cells along a Morton curve, or, when `node_parts` has one list

@@ -21,7 +21,7 @@ int mpi_rank() { return 0; }
 int mpi_processes() { return 1; }
 int mpi_serve() { return 0; }
 void mpi_run_everywhere(const std::string&) {}
-void mpi_stop() {}
+void mpi_stop(int) {}
 
 std::shared_ptr<DistributedRun> mpi_prepare(const Mesh&, const BoundarySet&, Method, const MethodOptions&,
                                             const std::vector<std::vector<NodeId>>&, Plan&, std::vector<double>&) {

@@ -25,4 +25,12 @@ PY
 /usr/bin/python3 "$source/tests/tools/check_json_schema.py" "$source/docs/schema" deform report.json
 # Nothing but the output and the report was left behind (no temporary file of a rank).
 [ "$(ls | sort | tr '\n' ' ')" = "many.su2 one.su2 report.json " ] || { echo "unexpected files:"; ls; exit 1; }
+# Bad input: every rank exits with rank 0's code (2), not rank 0 alone.
+if [ "$np" -gt 1 ]; then
+  "$mpirun" --oversubscribe --bind-to none -np "$np" bash -c \
+    '"$0" deform "$1" -m no-such-motion.json -o bad.su2 -q 2> /dev/null; echo "exit $?"' "$dgwarp" "$mesh" \
+    > codes.txt || true
+  [ "$(grep -c '^exit 2$' codes.txt)" = "$np" ] || { echo "expected every rank to exit 2:"; cat codes.txt; exit 1; }
+  rm codes.txt
+fi
 echo "same bytes: $np processes, $method, one report with processes = $np"

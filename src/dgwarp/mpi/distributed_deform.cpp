@@ -2,6 +2,7 @@
 // working nodes, this process's nodes copied out.
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <type_traits>
 
@@ -71,14 +72,20 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
         MPI_Allgatherv(send.data(), static_cast<int>(send.size()) * motion_doubles, MPI_DOUBLE, recv.data(),
                        counts.data(), displs.data(), MPI_DOUBLE, p.comm);
         for (std::size_t k = 0; k < recv.size(); ++k) all[p.owned_boundary[k]] = recv[k];
+        std::string other_error;
         try {
             report = deform(p.plan, p.working_points, all, working_out, p.options);
         } catch (const InvalidResultError& e) {
             // A non-finite result may be on this process alone: said on every one below.
+            // Otherwise (DGM's folded graph) every process has the same replicated graph
+            // and throws the same error here.
             std::int64_t count = 0;
             if (non_finite_result(method_name(plan_method(p.plan)), p.dim, working_out, all, count).empty()) throw;
             local_error = e.what();
+        } catch (const std::exception& e) {
+            other_error = e.what();  // memory, or anything else this process alone met
         }
+        detail::throw_if_any_failed(p.comm, other_error, "its step");
     } else {
         const auto& plan = std::get<DgIdwPlan>(p.plan);
         std::vector<NodeMotion> send(p.send_local.size()), recv(p.recv_boundary.size());
@@ -91,10 +98,12 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
         for (std::size_t k = 0; k < recv.size(); ++k) all[p.recv_boundary[k]] = recv[k];
         // The whole boundary's largest rotation (it sets the Taylor terms, so
         // the bits) and the conflicts of the shared vertices each process counts.
+        // A boundary node this process holds but does not own has its owner's
+        // motion in `all` (received above), whatever this process gave it.
         double angle2 = 0, angle2_max = 0;
         for (std::size_t j = 0; j < motion.size(); ++j) {
             if (!plan.boundary_moving[p.local_boundary_index[j]]) continue;
-            const Vec3& w = motion[j].rotation;
+            const Vec3& w = all[p.local_boundary_index[j]].rotation;
             angle2 = std::max(angle2, p.dim == 2 ? w[2] * w[2] : w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
         }
         MPI_Allreduce(&angle2, &angle2_max, 1, MPI_DOUBLE, MPI_MAX, p.comm);

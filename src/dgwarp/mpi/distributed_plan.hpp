@@ -17,7 +17,9 @@
 // local indices and a moving flag each, from the markers as for one process:
 // motion/marker_node_motions.hpp); `motion` one NodeMotion per local boundary
 // node in that order. A boundary node held by several processes has the same
-// coordinates, flag and motion on each that lists it as a boundary node; a
+// coordinates and flag on each that lists it as a boundary node, and moves
+// with its owner's motion (the lowest rank listing it) on every one, whatever
+// motion the others give their copies (every method; tested); a
 // process may hold it as a plain node (a partition interface node whose
 // boundary faces are all on another process): it then moves with the motion
 // of a process that lists it.
@@ -104,7 +106,11 @@ struct DistributedPlan {
 };
 
 /// Prepares `method` for the whole mesh, collectively over `comm` (every
-/// process calls it). Throws MeshError on this process's bad input (sizes,
+/// process calls it). Every failure is collective: the method, dimension and
+/// options are compared with process 0's before anything else, the inputs
+/// checked (sizes, ids, finite coordinates), and an exception of the method's
+/// local prepare raised on every process; no process is left waiting in a
+/// collective call. Throws MeshError on this process's bad input (sizes,
 /// unsorted boundary, a boundary node whose coordinates or flag differ
 /// between processes, naming its global id, or a plain node at other
 /// coordinates than the boundary node of the same id) and on every other process an

@@ -2,11 +2,15 @@
 // points over the processes, prepare the method on the working nodes, and
 // (DG-IDW) agree on which motions go where each step.
 #include <algorithm>
+#include <cmath>
+#include <exception>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <string>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/hash.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
@@ -26,16 +30,68 @@ std::string check_local_input(int dim, std::span<const double> points, std::span
     if (points.size() != global_ids.size() * static_cast<std::size_t>(dim))
         return "the point array holds " + std::to_string(points.size()) + " values for " +
                std::to_string(global_ids.size()) + " global ids (dim " + std::to_string(dim) + ")";
-    for (std::size_t i = 0; i < global_ids.size(); ++i)
+    for (std::size_t i = 0; i < global_ids.size(); ++i) {
         if (global_ids[i] < 0 || global_ids[i] > std::numeric_limits<NodeId>::max())
             return "local node " + std::to_string(i) + " has global id " + std::to_string(global_ids[i]) +
                    ", outside 0.." + std::to_string(std::numeric_limits<NodeId>::max());
+        for (int d = 0; d < dim; ++d)
+            if (!std::isfinite(points[i * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]))
+                return "local node " + std::to_string(i) + " (global id " + std::to_string(global_ids[i]) +
+                       ") has a coordinate that is not finite";
+    }
     try {
         // The empty boundary of a process holding volume nodes only is fine.
         if (!boundary.nodes.empty() || !boundary.moving.empty())
             check_points_and_boundary("distributed prepare", dim, points, boundary);
     } catch (const Error& e) {
         return e.what();
+    }
+    return {};
+}
+
+// What every process must give alike: the method, the dimension and every
+// option, as one hash (each field listed: the structs have padding).
+std::uint64_t setup_fingerprint(Method method, int dim, const MethodOptions& o) {
+    const double v[] = {static_cast<double>(method), static_cast<double>(dim),
+                        o.dg_idw.a_translation, o.dg_idw.a_rotation, o.dg_idw.length_scale,
+                        static_cast<double>(o.dg_idw.weighting), static_cast<double>(o.dgm.on_invalid),
+                        static_cast<double>(o.dgm.max_substeps), o.idw.exponent_moving, o.idw.exponent_static,
+                        o.idw.length_scale, o.rbf.support_radius, o.rbf.greedy_tolerance,
+                        static_cast<double>(o.rbf.max_dense_bytes), static_cast<double>(o.rbf.solver),
+                        o.dg_harmonic.wall_spacing, o.dg_harmonic.growth, o.dg_harmonic.translation_exponent,
+                        o.dg_harmonic.rotation_exponent, o.dg_harmonic.rigid_zone, o.dg_harmonic.rigid_gap,
+                        o.dg_harmonic.redo_below, static_cast<double>(o.dg_harmonic.redo_max_increments),
+                        static_cast<double>(o.dg_harmonic.redo_max_nodes_3d),
+                        static_cast<double>(o.laplacian.increments), static_cast<double>(o.laplacian.max_increments),
+                        o.laplacian.stiffness_exponent, static_cast<double>(o.laplacian.model),
+                        o.laplacian.poisson_ratio};
+    return hash64_of(std::span<const double>(v));
+}
+
+// "" when this process's method, dimension and options are process 0's; else what differs.
+std::string check_same_setup(MPI_Comm comm, Method method, int dim, const MethodOptions& options) {
+    const std::uint64_t mine = setup_fingerprint(method, dim, options);
+    std::uint64_t first[3] = {mine, static_cast<std::uint64_t>(method), static_cast<std::uint64_t>(dim)};
+    MPI_Bcast(first, 3, MPI_UINT64_T, 0, comm);
+    if (first[0] == mine) return {};
+    const auto named = [](std::uint64_t m) {
+        return m < std::size(all_methods) ? std::string(method_name(static_cast<Method>(m))) : std::to_string(m);
+    };
+    return "its method, dimension or options (" + std::string(method_name(method)) + ", " + std::to_string(dim) +
+           "D) are not process 0's (" + named(first[1]) + ", " + std::to_string(first[2]) +
+           "D): every process must prepare the same method with the same options";
+}
+
+// What `f` throws, as a message ("" when it returns): a local phase's
+// failure, agreed on with the other processes before the next collective.
+template <class F>
+std::string local_failure(F&& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "an unknown exception";
     }
     return {};
 }
@@ -118,7 +174,11 @@ void plan_motion_exchange(DistributedPlan& p, const detail::GatheredBoundary& g)
     std::vector<std::uint8_t> keep(needed);
     for (std::int32_t b : p.local_boundary_index) keep[b] = 1;
     for (std::int32_t b : p.adopted_boundary) keep[b] = 1;
-    for (std::int32_t b : p.local_boundary_index) needed[b] = 0;  // held here
+    // A boundary node held by several processes moves with its owner's motion
+    // (as the other methods' gather does): every copy ends at the same place,
+    // whatever motion another process gives its copy. Only the owned ones are held here.
+    for (std::int32_t b : p.local_boundary_index)
+        needed[b] = g.owner[b] == p.rank ? 0 : g.moving[b];
 
     // Requests by owner (ascending boundary index within each).
     std::vector<std::vector<std::int32_t>> requests(p.size);
@@ -166,6 +226,9 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
     p.options = options;
     p.gather_all = gathers_all_motions(method);
     p.num_local_points = static_cast<std::int64_t>(global_ids.size());
+    // Before any other collective: the same method, dimension and options everywhere
+    // (another would enter other collectives, and wait forever or fail in MPI).
+    detail::throw_if_any_failed(comm, check_same_setup(comm, method, dim, options), "its method or options");
     // laplacian solves on the whole mesh's cells, which no process holds here.
     detail::throw_if_any_failed(
         comm,
@@ -252,10 +315,14 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
     std::iota(working_boundary.nodes.begin(), working_boundary.nodes.end(), 0);
     working_boundary.moving = g.moving;
     t0 = Clock::now();
-    p.plan = method == Method::dg_harmonic
-                 ? Plan(prepare_dg_harmonic_on_coarse(dim, p.working_points, working_boundary, coarse,
-                                                      options.dg_harmonic))
-                 : prepare(method, dim, p.working_points, working_boundary, options);
+    // The method's prepare is local (its own volume nodes): a failure on one process
+    // (an option it refuses, degenerate geometry, memory) is raised on every one.
+    detail::throw_if_any_failed(comm, local_failure([&] {
+        p.plan = method == Method::dg_harmonic
+                     ? Plan(prepare_dg_harmonic_on_coarse(dim, p.working_points, working_boundary, coarse,
+                                                          options.dg_harmonic))
+                     : prepare(method, dim, p.working_points, working_boundary, options);
+    }), "its method's prepare");
     p.times.method_seconds = seconds_since(t0);
 
     t0 = Clock::now();
