@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
+#include "dgwarp/mpi/large_transfers.hpp"
 #include "dgwarp/mpi/morton_partition.hpp"
 #include "mpi_session.hpp"
 
@@ -43,19 +45,17 @@ struct MpiPrepareHeader {
 static_assert(std::is_trivially_copyable_v<MpiPrepareHeader>);
 static_assert(sizeof(NodeMotion) == 9 * sizeof(double));
 
+// Vectors of any size (in pieces of at most INT_MAX bytes: large_transfers.hpp).
 template <class T>
 void mpi_send_vector(const std::vector<T>& v, int to, int tag) {
-    const auto n = static_cast<long long>(v.size() * sizeof(T));
-    MPI_Send(&n, 1, MPI_LONG_LONG, to, tag, MPI_COMM_WORLD);
-    MPI_Send(v.data(), static_cast<int>(n), MPI_BYTE, to, tag, MPI_COMM_WORLD);
+    mpi::detail::send_bytes(MPI_COMM_WORLD, std::as_bytes(std::span<const T>(v)), to, tag);
 }
 
 template <class T>
 std::vector<T> mpi_receive_vector(int from, int tag) {
-    long long n = 0;
-    MPI_Recv(&n, 1, MPI_LONG_LONG, from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    std::vector<T> v(static_cast<std::size_t>(n) / sizeof(T));
-    MPI_Recv(v.data(), static_cast<int>(n), MPI_BYTE, from, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const std::vector<std::byte> bytes = mpi::detail::receive_bytes(MPI_COMM_WORLD, from, tag);
+    std::vector<T> v(bytes.size() / sizeof(T));
+    if (!bytes.empty()) std::memcpy(v.data(), bytes.data(), bytes.size());
     return v;
 }
 

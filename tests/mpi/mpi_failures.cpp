@@ -12,6 +12,8 @@
 //   other-method   DG-harmonic where the others prepare DG-IDW
 //   other-option   DG-harmonic with another wall spacing
 //   nan-point      a volume node's coordinate NaN (DG-harmonic)
+//   small-chunks   (every process) a gather of records in rounds of 3 records and a
+//                  vector sent in pieces of 5 bytes equal the one-round transfers
 //   ghost-motion   twice the motion for the boundary nodes it holds but does not own
 //                  (DG-IDW, then DG-harmonic): every process's coordinates are the
 //                  single-process run's with the owners' motion, bit for bit
@@ -22,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <string>
@@ -29,6 +32,7 @@
 
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
+#include "dgwarp/mpi/large_transfers.hpp"
 #include "mesh_parts.hpp"
 
 using namespace dgwarp;
@@ -135,6 +139,32 @@ int run_ghosts(int rank, int size) {
     return total == 0 ? 0 : 1;
 }
 
+// Transfers in rounds and pieces (what a part beyond MPI's int counts takes) give the one-round result.
+int run_small_chunks(int rank, int size) {
+    struct Record {
+        std::int64_t id;
+        double x[3];
+    };
+    std::vector<Record> mine(static_cast<std::size_t>(7 * rank + 2));
+    for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = {rank * 1000 + static_cast<std::int64_t>(k), {1.0 * k, 2.0, 3.0}};
+    const auto once = mpi::detail::allgather_records<Record>(MPI_COMM_WORLD, mine);
+    const auto rounds = mpi::detail::allgather_records<Record>(MPI_COMM_WORLD, mine, 3);
+    bool same = once.size() == rounds.size() && std::memcmp(once.data(), rounds.data(), once.size() * sizeof(Record)) == 0;
+    std::size_t expected = 0;
+    for (int r = 0; r < size; ++r) expected += static_cast<std::size_t>(7 * r + 2);
+    same = same && once.size() == expected && once.back().id == (size - 1) * 1000 + 7 * (size - 1) + 1;
+    if (size > 1) {
+        std::vector<std::byte> bytes(23);
+        for (std::size_t k = 0; k < bytes.size(); ++k) bytes[k] = static_cast<std::byte>(k * 7);
+        if (rank == 0) mpi::detail::send_bytes(MPI_COMM_WORLD, bytes, 1, 9, 5);
+        if (rank == 1) same = same && mpi::detail::receive_bytes(MPI_COMM_WORLD, 0, 9, 5) == bytes;
+    }
+    int ok = same ? 1 : 0, all_ok = 0;
+    MPI_Reduce(&ok, &all_ok, 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
+    if (rank == 0) std::printf("chunks: %s (%d of %d processes)\n", all_ok == size ? "same" : "DIFFERENT", all_ok, size);
+    return all_ok == size || rank != 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -145,7 +175,9 @@ int main(int argc, char** argv) {
     int code = 2;
     if (argc == 2) {
         const std::string scenario = argv[1];
-        code = scenario == "ghost-motion" ? run_ghosts(rank, size) : run_failure(scenario, rank, size);
+        code = scenario == "ghost-motion"   ? run_ghosts(rank, size)
+               : scenario == "small-chunks" ? run_small_chunks(rank, size)
+                                            : run_failure(scenario, rank, size);
     } else if (rank == 0) {
         std::fprintf(stderr, "usage: mpirun -np P %s SCENARIO\n", argv[0]);
     }

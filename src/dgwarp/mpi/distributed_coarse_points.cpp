@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "dgwarp/mpi/large_transfers.hpp"
+
 namespace dgwarp::mpi::detail {
 
 namespace {
@@ -40,12 +42,7 @@ CoarsePoints select_coarse_points_distributed(MPI_Comm comm, int dim, std::span<
         for (int d = 0; d < 3; ++d)
             mine[k].x[d] = d < dim ? points[static_cast<std::size_t>(winners[k].node) * dim + d] : 0.0;
     }
-    const int my_bytes = static_cast<int>(mine.size() * sizeof(WinnerRecord));
-    std::vector<int> bytes(size), displs(size, 0);
-    MPI_Allgather(&my_bytes, 1, MPI_INT, bytes.data(), 1, MPI_INT, comm);
-    for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + bytes[r - 1];
-    std::vector<WinnerRecord> all(static_cast<std::size_t>(displs[size - 1] + bytes[size - 1]) / sizeof(WinnerRecord));
-    MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), bytes.data(), displs.data(), MPI_BYTE, comm);
+    const std::vector<WinnerRecord> all = allgather_records<WinnerRecord>(comm, mine);
 
     std::vector<CoarseWinner> candidates(all.size());
     std::unordered_map<std::int64_t, const double*> where;

@@ -12,14 +12,14 @@
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/mpi/collective_checks.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
+#include "dgwarp/mpi/large_transfers.hpp"
 
 namespace dgwarp::mpi {
 
 namespace {
 
-// A NodeMotion travels as 9 doubles (t, w, c).
+// A NodeMotion travels as one record of 9 doubles (t, w, c).
 static_assert(std::is_standard_layout_v<NodeMotion> && sizeof(NodeMotion) == 9 * sizeof(double));
-constexpr int motion_doubles = 9;
 
 std::string check_step_input(const DistributedPlan& p, std::span<const double> points, const BoundaryMotion& motion,
                              std::span<const double> out) {
@@ -43,11 +43,6 @@ std::vector<int> displacements(const std::vector<int>& counts) {
     return d;
 }
 
-std::vector<int> times(std::vector<int> counts, int k) {
-    for (int& c : counts) c *= k;
-    return counts;
-}
-
 }  // namespace
 
 StepReport deform_distributed(const DistributedPlan& p, std::span<const double> points, const BoundaryMotion& motion,
@@ -67,10 +62,11 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
     if (p.gather_all) {
         std::vector<NodeMotion> send(p.my_owned_local.size()), recv(p.owned_boundary.size());
         for (std::size_t k = 0; k < send.size(); ++k) send[k] = motion[p.my_owned_local[k]];
-        const std::vector<int> counts = times(p.owned_counts, motion_doubles);
-        const std::vector<int> displs = displacements(counts);
-        MPI_Allgatherv(send.data(), static_cast<int>(send.size()) * motion_doubles, MPI_DOUBLE, recv.data(),
-                       counts.data(), displs.data(), MPI_DOUBLE, p.comm);
+        // Counted in motions (a 72-byte datatype), not doubles: 9 times the nodes before an int overflows.
+        const detail::RecordType motion_type(sizeof(NodeMotion));
+        const std::vector<int> displs = displacements(p.owned_counts);
+        MPI_Allgatherv(send.data(), static_cast<int>(send.size()), motion_type.get(), recv.data(),
+                       p.owned_counts.data(), displs.data(), motion_type.get(), p.comm);
         for (std::size_t k = 0; k < recv.size(); ++k) all[p.owned_boundary[k]] = recv[k];
         std::string other_error;
         try {
@@ -90,11 +86,10 @@ StepReport deform_distributed(const DistributedPlan& p, std::span<const double> 
         const auto& plan = std::get<DgIdwPlan>(p.plan);
         std::vector<NodeMotion> send(p.send_local.size()), recv(p.recv_boundary.size());
         for (std::size_t k = 0; k < send.size(); ++k) send[k] = motion[p.send_local[k]];
-        const std::vector<int> scounts = times(p.send_counts, motion_doubles);
-        const std::vector<int> rcounts = times(p.recv_counts, motion_doubles);
-        const std::vector<int> sdispl = displacements(scounts), rdispl = displacements(rcounts);
-        MPI_Alltoallv(send.data(), scounts.data(), sdispl.data(), MPI_DOUBLE, recv.data(), rcounts.data(),
-                      rdispl.data(), MPI_DOUBLE, p.comm);
+        const detail::RecordType motion_type(sizeof(NodeMotion));
+        const std::vector<int> sdispl = displacements(p.send_counts), rdispl = displacements(p.recv_counts);
+        MPI_Alltoallv(send.data(), p.send_counts.data(), sdispl.data(), motion_type.get(), recv.data(),
+                      p.recv_counts.data(), rdispl.data(), motion_type.get(), p.comm);
         for (std::size_t k = 0; k < recv.size(); ++k) all[p.recv_boundary[k]] = recv[k];
         // The whole boundary's largest rotation (it sets the Taylor terms, so
         // the bits) and the conflicts of the shared vertices each process counts.

@@ -6,6 +6,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/mpi/collective_checks.hpp"
+#include "dgwarp/mpi/large_transfers.hpp"
 
 namespace dgwarp::mpi::detail {
 
@@ -31,12 +32,8 @@ GatheredBoundary gather_boundary(MPI_Comm comm, int dim, std::span<const double>
         mine[j] = {global_ids[n], rank, boundary.moving[j], {0, 0, 0}};
         for (int d = 0; d < dim; ++d) mine[j].x[d] = points[n * dim + d];
     }
-    const int my_bytes = static_cast<int>(mine.size() * sizeof(Record));
-    std::vector<int> bytes(size), displs(size, 0);
-    MPI_Allgather(&my_bytes, 1, MPI_INT, bytes.data(), 1, MPI_INT, comm);
-    for (int r = 1; r < size; ++r) displs[r] = displs[r - 1] + bytes[r - 1];
-    std::vector<Record> all(static_cast<std::size_t>(displs[size - 1] + bytes[size - 1]) / sizeof(Record));
-    MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), bytes.data(), displs.data(), MPI_BYTE, comm);
+    // Counted in records, in rounds when they exceed MPI's int counts (large_transfers.hpp).
+    std::vector<Record> all = allgather_records<Record>(comm, mine);
 
     // Sorted by global id, then rank: the first record of an id is its owner's.
     std::sort(all.begin(), all.end(), [](const Record& a, const Record& b) {
