@@ -12,6 +12,7 @@
 //   other-method   DG-harmonic where the others prepare DG-IDW
 //   other-option   DG-harmonic with another wall spacing
 //   nan-point      a volume node's coordinate NaN (DG-harmonic)
+//   duplicate-id   two local nodes with one global id (DG-IDW)
 //   small-chunks   (every process) a gather of records in rounds of 3 records and a
 //                  vector sent in pieces of 5 bytes equal the one-round transfers
 //   ghost-motion   twice the motion for the boundary nodes it holds but does not own
@@ -81,6 +82,7 @@ int run_failure(const std::string& scenario, int rank, int size) {
                 break;
             }
     }
+    if (scenario == "duplicate-id" && odd) part.global_ids.back() = part.global_ids.front();
     int failed = 0;
     try {
         const mpi::DistributedPlan plan =
