@@ -7,6 +7,7 @@
 #include "dgwarp/io/foam_file.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/text_rows.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
 
 namespace dgwarp {
@@ -116,14 +117,14 @@ std::string openfoam_points_text(std::span<const double> points, Format format, 
         out << ")";
     } else {
         out << "\n(\n";
-        for (std::size_t i = 0; i < n; ++i) {
-            out.put('(');
+        write_rows(out, static_cast<std::int64_t>(n), [&](std::int64_t i, std::string& text) {
+            text.push_back('(');
             for (std::size_t d = 0; d < 3; ++d) {
-                if (d) out.put(' ');
-                write_number(out, points[3 * i + d]);
+                if (d) text.push_back(' ');
+                append_number(text, points[3 * static_cast<std::size_t>(i) + d]);
             }
-            out << ")\n";
-        }
+            text.append(")\n");
+        });
         out << ")";
     }
     foam::write_footer(out);

@@ -9,13 +9,12 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/text_rows.hpp"
 #include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp {
 
 namespace {
-
-void write_int(std::ostream& out, long long v) { write_number(out, v); }
 
 /// A marker name must survive `MARKER_TAG= name` and the reader's trimming.
 void check_marker_names(const Mesh& mesh) {
@@ -35,18 +34,19 @@ void check_marker_names(const Mesh& mesh) {
 /// One element per line: SU2 type id, node ids, then (SU2 writes it for
 /// volume cells, not for boundary elements) the element index.
 void write_elements(std::ostream& out, const ElementList& elements, bool with_index) {
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-        write_int(out, vtk_cell_id(elements.types[i]));
-        for (NodeId n : elements.nodes_of(i)) {
-            out.put('\t');
-            write_int(out, n);
+    write_rows(out, static_cast<std::int64_t>(elements.size()), [&](std::int64_t i, std::string& text) {
+        const auto k = static_cast<std::size_t>(i);
+        append_number(text, static_cast<long long>(vtk_cell_id(elements.types[k])));
+        for (NodeId n : elements.nodes_of(k)) {
+            text.push_back('\t');
+            append_number(text, static_cast<long long>(n));
         }
         if (with_index) {
-            out.put('\t');
-            write_int(out, static_cast<long long>(i));
+            text.push_back('\t');
+            append_number(text, static_cast<long long>(i));
         }
-        out.put('\n');
-    }
+        text.push_back('\n');
+    });
 }
 
 }  // namespace
@@ -64,14 +64,14 @@ void write_su2(std::ostream& out, const Mesh& mesh) {
     const std::size_t n = mesh.num_points();
     const auto dim = static_cast<std::size_t>(mesh.dim);
     out << "NPOIN= " << n << '\n';
-    for (std::size_t i = 0; i < n; ++i) {
+    write_rows(out, static_cast<std::int64_t>(n), [&](std::int64_t i, std::string& text) {
         for (std::size_t d = 0; d < dim; ++d) {
-            write_number(out, mesh.points[i * dim + d]);
-            out.put('\t');
+            append_number(text, mesh.points[static_cast<std::size_t>(i) * dim + d]);
+            text.push_back('\t');
         }
-        write_int(out, static_cast<long long>(i));
-        out.put('\n');
-    }
+        append_number(text, static_cast<long long>(i));
+        text.push_back('\n');
+    });
     out << "NMARK= " << mesh.markers.size() << '\n';
     for (const Marker& marker : mesh.markers) {
         out << "MARKER_TAG= " << marker.name << '\n';
