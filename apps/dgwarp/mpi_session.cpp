@@ -173,13 +173,17 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
     const std::size_t cells = mesh.cells.types.size(), n = mesh.num_points();
     run->parts.resize(mpi_size);
     run->slots.resize(mpi_size);
-    std::vector<std::int32_t> seen(n, -1);  // last rank that took the node
+    // Per rank, the nodes it took (a node of several of a rank's cells is held once:
+    // remembering only the last rank that took it held it again after another's cell).
+    std::vector<std::vector<bool>> taken(static_cast<std::size_t>(mpi_size), std::vector<bool>(n, false));
+    std::vector<std::uint8_t> held(n, 0);  // by some rank
     std::vector<std::int32_t> boundary_slot(n, -1);
     for (std::size_t b = 0; b < boundary.nodes.size(); ++b) boundary_slot[boundary.nodes[b]] = static_cast<std::int32_t>(b);
     auto take = [&](int r, NodeId node) {
         MpiPart& p = run->parts[r];
-        if (seen[node] == r) return;
-        seen[node] = r;
+        if (taken[static_cast<std::size_t>(r)][static_cast<std::size_t>(node)]) return;
+        taken[static_cast<std::size_t>(r)][static_cast<std::size_t>(node)] = true;
+        held[static_cast<std::size_t>(node)] = 1;
         const auto local = static_cast<NodeId>(p.global_ids.size());
         p.global_ids.push_back(node);
         for (int d = 0; d < mesh.dim; ++d) p.points.push_back(mesh.points[static_cast<std::size_t>(node) * mesh.dim + d]);
@@ -199,7 +203,7 @@ std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet&
                 take(cell_part[c], mesh.cells.nodes[k]);
     }
     for (std::size_t node = 0; node < n; ++node)
-        if (seen[node] < 0) take(0, static_cast<NodeId>(node));
+        if (!held[node]) take(0, static_cast<NodeId>(node));
 
     int command = command_prepare;
     MPI_Bcast(&command, 1, MPI_INT, 0, MPI_COMM_WORLD);

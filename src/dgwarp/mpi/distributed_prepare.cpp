@@ -39,14 +39,18 @@ std::string check_local_input(int dim, std::span<const double> points, std::span
                 return "local node " + std::to_string(i) + " (global id " + std::to_string(global_ids[i]) +
                        ") has a coordinate that is not finite";
     }
-    // One local node per global id: a second copy would be two nodes of one (which moves?).
+    // Two local nodes with one global id are two copies of one node: at the same coordinates.
     std::vector<std::pair<std::int64_t, std::size_t>> ids(global_ids.size());
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = {global_ids[i], i};
     std::sort(ids.begin(), ids.end());
+    const auto d = static_cast<std::size_t>(dim);
     for (std::size_t k = 1; k < ids.size(); ++k)
-        if (ids[k].first == ids[k - 1].first)
+        if (ids[k].first == ids[k - 1].first &&
+            !std::equal(points.begin() + static_cast<std::ptrdiff_t>(ids[k].second * d),
+                        points.begin() + static_cast<std::ptrdiff_t>(ids[k].second * d + d),
+                        points.begin() + static_cast<std::ptrdiff_t>(ids[k - 1].second * d)))
             return "local nodes " + std::to_string(ids[k - 1].second) + " and " + std::to_string(ids[k].second) +
-                   " have the same global id " + std::to_string(ids[k].first) + " (a node is held once per process)";
+                   " have the same global id " + std::to_string(ids[k].first) + " but other coordinates";
     try {
         // The empty boundary of a process holding volume nodes only is fine.
         if (!boundary.nodes.empty() || !boundary.moving.empty())
