@@ -19,6 +19,7 @@
 
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/vtu.hpp"
@@ -127,6 +128,7 @@ TEST(AtomicWrite, KilledMidWriteLeavesTheOldFileIntact) {
     ASSERT_GE(child, 0);
     if (child == 0) {
         ::close(pipe_fds[0]);
+        set_num_threads(1);  // a forked child runs no OpenMP region (libgomp is not fork-safe)
         try {
             write_file_atomically(path, [&](std::ostream& out) {
                 PausingBuffer pausing(out, half, pipe_fds[1]);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/plan_file.hpp"
@@ -64,6 +65,7 @@ int outcome_with_little_memory(const std::function<void()>& read) {
     const pid_t child = ::fork();
     if (child < 0) return -2;
     if (child == 0) {
+        set_num_threads(1);  // a forked child runs no OpenMP region (libgomp is not fork-safe)
         std::ifstream statm("/proc/self/statm");
         std::size_t pages = 0;
         statm >> pages;

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
 
 namespace dgwarp {
 
@@ -67,6 +68,10 @@ void run_in_child_process(const std::function<void()>& work, int timeout_seconds
     }
     if (child == 0) {
         ::close(message_pipe[0]);
+        // libgomp is not fork-safe: a parallel region in a child forked after
+        // the parent ran one waits forever for threads the child does not have
+        // (the SU2 writer's blocks did). The child's loops run on its one thread.
+        set_num_threads(1);
         run_child(work, message_pipe[1]);
     }
     ::close(message_pipe[1]);

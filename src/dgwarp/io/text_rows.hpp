@@ -3,7 +3,9 @@
 // (std::to_chars into a string per block, no stream call per number), then
 // written in order, a batch of blocks at a time (memory: a few blocks per
 // thread, not the whole file). The bytes are those of writing each row in
-// turn, whatever the thread count.
+// turn, whatever the thread count. In a process forked after OpenMP ran (its
+// runtime is not fork-safe), call set_num_threads(1) first, as
+// run_in_child_process does.
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
