@@ -199,6 +199,7 @@ TEST(AtomicWrite, ASignalHandlerRemovesTheTemporaryFileOfAnInterruptedWrite) {
     ASSERT_GE(child, 0);
     if (child == 0) {
         ::close(pipe_fds[0]);
+        set_num_threads(1);  // a forked child runs no OpenMP region (libgomp is not fork-safe)
         ::signal(SIGTERM, atomic_write_test_on_term);
         try {
             write_file_atomically(path, [&](std::ostream& out) {

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "dgwarp/cases/rect_box.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
 #include "dgwarp/mpi/large_transfers.hpp"
 #include "mesh_parts.hpp"
@@ -47,18 +48,12 @@ BoundaryMotion turn(std::size_t count) {
     return m;
 }
 
-// The rect-box's boundary: the rectangle moving, the far field static.
+// The rect-box's boundary: the rectangle moving, the far field static (as a motion file moving the rectangle says).
 BoundarySet rect_box_boundary(const Mesh& mesh) {
-    std::vector<std::pair<NodeId, std::uint8_t>> all;
-    for (NodeId n : marker_nodes(find_marker(mesh, "rectangle"))) all.emplace_back(n, 1);
-    for (NodeId n : marker_nodes(find_marker(mesh, "farfield"))) all.emplace_back(n, 0);
-    std::sort(all.begin(), all.end());
-    BoundarySet whole;
-    for (const auto& [n, moving] : all) {
-        whole.nodes.push_back(n);
-        whole.moving.push_back(moving);
-    }
-    return whole;
+    MotionSpec spec;
+    spec.frames.resize(1);
+    spec.frames[0].markers["rectangle"] = RigidMotion{};
+    return resolve_boundary(mesh, spec).boundary;
 }
 
 int run_failure(const std::string& scenario, int rank, int size) {

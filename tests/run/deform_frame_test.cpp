@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "dgwarp/cases/grid_with_hole.hpp"
 #include "dgwarp/repair/unrepairable_cells.hpp"
+#include "support/small_grid_with_hole.hpp"
 #include "support/split_grid.hpp"
 
 using namespace dgwarp;
@@ -146,11 +146,7 @@ TEST(DeformFrame, CellsTheBoundaryMotionFoldsAreNamedAndNotRepaired) {
 }
 
 TEST(DeformFrame, DeformFrameIsTheStepThenItsMeasure) {
-    GridWithHoleOptions o;
-    o.cells = 15;
-    o.rect_cells_x = 5;
-    o.rect_cells_y = 3;
-    const Mesh mesh = make_grid_with_hole(o);
+    const Mesh mesh = test::small_grid_with_hole();
     MotionSpec spec;
     MotionFrame frame;
     frame.markers["rectangle"] = RigidMotion{NodeMotion{{0.3, -0.2, 0}, {0, 0, 0.2}, {0, 0, 0}}};

@@ -4,20 +4,13 @@
 
 #include <vector>
 
-#include "dgwarp/cases/grid_with_hole.hpp"
 #include "dgwarp/core/error.hpp"
+#include "support/small_grid_with_hole.hpp"
 
 using namespace dgwarp;
+using test::small_grid_with_hole;
 
 namespace {
-
-Mesh small_grid_with_hole() {
-    GridWithHoleOptions o;
-    o.cells = 15;
-    o.rect_cells_x = 5;
-    o.rect_cells_y = 3;
-    return make_grid_with_hole(o);
-}
 
 // The hole's marker translated by dy in each frame.
 MotionSpec lifts(const std::vector<double>& dy) {
