@@ -367,6 +367,7 @@ TEST(AtomicWrite, AFullDiskIsAnIoErrorAndLeavesTheOldFile) {
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
+        set_num_threads(1);  // a forked child runs no OpenMP region (libgomp is not fork-safe)
         ::signal(SIGXFSZ, SIG_IGN);  // report EFBIG instead of killing the process
         const rlimit limit{64 * 1024, 64 * 1024};
         if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(20);
