@@ -29,7 +29,7 @@ def test_plan_describes_its_boundary(mesh, plan):
     assert np.shares_memory(plan.boundary_nodes, plan.boundary_nodes) and not plan.boundary_nodes.flags.writeable
     assert plan.mesh is not None and plan.memory_bytes > 0 and plan.summary["graph_simplices"] > 0
     assert plan.method == "dg-harmonic"  # the default, as the CLI's
-    assert plan.options == {"harmonic_wall_spacing": 6.0, "harmonic_growth": 1.0, "harmonic_redo_below": 0.25}
+    assert plan.options == {"harmonic_wall_spacing": 6.0, "harmonic_growth": 1.0, "harmonic_redo_below": 0.8}
     idw = dgwarp.prepare(mesh, moving=["airfoil"], method="dg-idw")
     assert idw.options == {"a_translation": 7.0, "a_rotation": 1.4, "length_scale": 1.0, "dg_idw_weights": "paper"}
 

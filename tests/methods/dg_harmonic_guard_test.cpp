@@ -224,6 +224,26 @@ TEST(DgHarmonicGuard, TheBetterResultIsKeptAndZeroRedoesOnlyFolds) {
     EXPECT_FALSE(zero.guard.redone);
 }
 
+TEST(DgHarmonicGuard, AValidOnePassBelowTheBarGetsOneSolveOfLaplaciansIncrements) {
+    // The twisted bar's twist: the one pass is valid at 0.55 of the original
+    // minimum (below the default bar, 0.8), and laplacian folds the bar's
+    // corners at any number of increments (docs/laplacian.md): one solve of
+    // its 4 increments, not 4 + 8 + ... + 64, and the one pass is kept.
+    const Scene s = case_scene("twisted-bar", "twist");
+    const Plan plan = prepare(Method::dg_harmonic, 2, s.mesh.points, s.mesh.cells, s.boundary.boundary);
+    std::vector<double> guarded(s.mesh.points.size()), one_pass(s.mesh.points.size());
+    const StepReport r = deform(plan, s.mesh.points, s.motion, guarded);
+    deform(plan, s.mesh.points, s.motion, one_pass, redo_below(-1));
+    ASSERT_TRUE(r.guard.checked);
+    EXPECT_EQ(r.guard.one_pass.inverted, 0);
+    EXPECT_LT(r.guard.one_pass.min_quality, r.guard.bar);
+    EXPECT_TRUE(r.guard.redone);
+    EXPECT_EQ(r.guard.increments, LaplacianOptions{}.increments);
+    EXPECT_GT(r.guard.redo.inverted, 0);
+    EXPECT_FALSE(r.guard.kept_redo);
+    EXPECT_EQ(guarded, one_pass);
+}
+
 TEST(DgHarmonicGuard, RefusesABarThatIsNotAFractionBelowOne) {
     const Scene s = case_scene("rect-box", "rotate-30");
     for (double bad : {std::nan(""), 1.0, 2.0}) {

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
@@ -225,6 +227,30 @@ TEST(Laplacian, FoldsAskForMoreIncrements) {
     EXPECT_EQ(r.substeps, 16);  // 4, 8, 16: each still folds (the Laplacian shears the corners), the last is kept
     o.laplacian.max_increments = 3;
     EXPECT_THROW(prepare(Method::laplacian, 2, mesh.points, mesh.cells, b.boundary, o), Error);  // below increments
+}
+
+TEST(Laplacian, ACappedStepIsThePlanWithThatManyIncrementsAtMost) {
+    // deform_laplacian_capped: the same bits as a plan whose max_increments is
+    // the cap; a cap above the plan's changes nothing.
+    const Mesh mesh = make_case("rect-box");
+    const ResolvedBoundary b = resolve_boundary(mesh, rect_box_turn_90(mesh));
+    const BoundaryMotion motion = resolve_frame(mesh, rect_box_turn_90(mesh), b, 0).motion;
+    LaplacianOptions o;
+    o.model = LaplacianModel::laplacian;
+    o.stiffness_exponent = 1;
+    o.max_increments = 16;
+    const LaplacianPlan plan = prepare_laplacian(2, mesh.points, mesh.cells, b.boundary, o);
+    for (const auto& [cap, expected] : {std::pair{4, 4}, std::pair{8, 8}, std::pair{64, 16}}) {
+        LaplacianOptions capped = o;
+        capped.max_increments = std::min(cap, 16);
+        std::vector<double> a(mesh.points.size()), c(mesh.points.size());
+        EXPECT_EQ(deform_laplacian_capped(plan, mesh.points, motion, a, cap).increments, expected);
+        EXPECT_EQ(deform_laplacian(prepare_laplacian(2, mesh.points, mesh.cells, b.boundary, capped), mesh.points,
+                                   motion, c)
+                      .increments,
+                  expected);
+        EXPECT_EQ(a, c) << "cap " << cap;
+    }
 }
 
 TEST(Laplacian, PointsNoCellUsesStayAndOutputMayAliasInput) {

@@ -74,10 +74,14 @@ struct DgHarmonicOptions {
     /// again by the laplacian reference and the better result kept. 0: only
     /// a step that inverts a cell; negative: never measured (the one pass).
     /// Not part of the plan's arrays (a plan file does not keep it).
-    double redo_below = 0.25;
-    /// The guard's laplacian doubles its increments while a cell folds up
-    /// to this many (at most laplacian's own max_increments; a step that
-    /// folds even so has cost 4 + 8 + ... + 64 solves). Prepare time.
+    /// The default was chosen on the 3D random scenes 1-25 and checked on
+    /// others (docs/dg-harmonic.md, "The guard").
+    double redo_below = 0.8;
+    /// When the one pass folds, the guard's laplacian doubles its increments
+    /// while a cell folds up to this many (at most laplacian's own
+    /// max_increments; a step that folds even so has cost 4 + 8 + ... + 64
+    /// solves). A valid one pass below the bar gets one solve of laplacian's
+    /// increments, not doubled. Prepare time.
     int redo_max_increments = 64;
     /// The guard solves a 3D step again only on meshes of at most this many
     /// nodes: the laplacian factorises the 3D elasticity stiffness at every

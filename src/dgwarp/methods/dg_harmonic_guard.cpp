@@ -386,7 +386,13 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
     Stopwatch sw;
     std::vector<double> redo(out.size());
     try {
-        r.increments = deform_laplacian(laplacian_plan_of(guard), points, motion, redo).increments;
+        // A valid one pass below the bar: one solve of laplacian's own
+        // increments (a folded result would not be kept, so doubling them
+        // could only cost: 4 + 8 + ... + 64 solves on the twisted bar).
+        const LaplacianPlan& lp = laplacian_plan_of(guard);
+        r.increments = deform_laplacian_capped(lp, points, motion, redo,
+                                               r.one_pass.inverted == 0 ? lp.options.increments : lp.options.max_increments)
+                           .increments;
     } catch (const InvalidResultError&) {
         throw;
     } catch (const Error& e) {

@@ -123,6 +123,14 @@ LaplacianStepReport deform_laplacian(const LaplacianPlan& plan, std::span<const 
                                      const BoundaryMotion& motion, std::span<double> out,
                                      const ProgressFn& progress = {});
 
+/// deform_laplacian with the doubling of the increments capped at
+/// min(max_increments, the plan's max_increments): at or below the plan's
+/// increments, one solve of options.increments increments, folded or not
+/// (DG-harmonic's guard, when the one pass it would replace is valid).
+LaplacianStepReport deform_laplacian_capped(const LaplacianPlan& plan, std::span<const double> points,
+                                            const BoundaryMotion& motion, std::span<double> out, int max_increments,
+                                            const ProgressFn& progress = {});
+
 /// Bytes held by the plan's arrays.
 std::size_t plan_bytes(const LaplacianPlan& plan);
 

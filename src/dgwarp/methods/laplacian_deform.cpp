@@ -238,7 +238,7 @@ void given_targets(const LaplacianPlan& plan, std::span<const double> points, co
 
 template <int Dim>
 LaplacianStepReport deform_in(const LaplacianPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                              std::span<double> out, const ProgressFn& progress) {
+                              std::span<double> out, const ProgressFn& progress, int max_increments) {
     const auto num_points = static_cast<std::size_t>(plan.num_points);
     const std::size_t total = plan.unknown.size();
     // The split mesh's nodes: the points, then the centres (their nodes' mean).
@@ -270,7 +270,7 @@ LaplacianStepReport deform_in(const LaplacianPlan& plan, std::span<const double>
                         for (int d = 0; d < Dim; ++d) x[node * Dim + d] = target[node * Dim + d];
             if (progress) progress(static_cast<double>(s) / n);
         }
-        if (2 * n > plan.options.max_increments || !folds(before, signed_measures<Dim>(plan, x))) break;
+        if (2 * n > max_increments || !folds(before, signed_measures<Dim>(plan, x))) break;
     }
     // Points no cell uses stay; boundary nodes are exactly where apply_motion puts them.
     for (std::size_t node = 0; node < num_points; ++node)
@@ -284,9 +284,16 @@ LaplacianStepReport deform_in(const LaplacianPlan& plan, std::span<const double>
 
 LaplacianStepReport deform_laplacian(const LaplacianPlan& plan, std::span<const double> points,
                                      const BoundaryMotion& motion, std::span<double> out, const ProgressFn& progress) {
+    return deform_laplacian_capped(plan, points, motion, out, plan.options.max_increments, progress);
+}
+
+LaplacianStepReport deform_laplacian_capped(const LaplacianPlan& plan, std::span<const double> points,
+                                            const BoundaryMotion& motion, std::span<double> out, int max_increments,
+                                            const ProgressFn& progress) {
     check_step_arrays("laplacian", plan.num_points, plan.dim, plan.boundary_nodes, points, motion, out);
-    return plan.dim == 2 ? deform_in<2>(plan, points, motion, out, progress)
-                         : deform_in<3>(plan, points, motion, out, progress);
+    const int cap = std::min(max_increments, plan.options.max_increments);
+    return plan.dim == 2 ? deform_in<2>(plan, points, motion, out, progress, cap)
+                         : deform_in<3>(plan, points, motion, out, progress, cap);
 }
 
 }  // namespace dgwarp
