@@ -14,6 +14,8 @@
 #include <string_view>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/io/record_lines.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/text_reader.hpp"
 
@@ -194,13 +196,119 @@ void read_element(TextReader& r, const Block& b, std::int64_t i, int dim, bool b
     out.push_back(*type, {nodes, static_cast<std::size_t>(n)});
 }
 
+// The fast path of a block (record_lines.hpp): its chunks on several
+// threads, accepting only what read_element and read_points accept; false
+// sends the block back to the line-by-line code, which names the error.
+constexpr SkippedLines su2_skipped{'%'};
+
+/// An SU2 element record: its type (allowed in the block) and node ids
+/// (each in [0, max_node_count)); further columns are ignored.
+bool parse_element_line(std::string_view line, int dim, bool boundary, ElementList& out, std::int64_t& max_id) {
+    LineTokens tokens(line);
+    const auto int_token = [](std::string_view token, std::int64_t& v) {
+        return parse_plain_digits(token, v) || parse_int(token, v);
+    };
+    std::int64_t id = 0;
+    if (!int_token(tokens.next(), id) || id < 0 || id > 255) return false;
+    const std::optional<CellType> type = cell_type_from_vtk_id(static_cast<int>(id));
+    if (!type || !(boundary ? allowed_boundary : allowed_cell)(*type, dim)) return false;
+    const int n = nodes_per_cell(*type);
+    NodeId nodes[8];
+    for (int k = 0; k < n; ++k) {
+        std::int64_t v = 0;
+        if (!int_token(tokens.next(), v) || v < 0 || v >= max_node_count) return false;
+        max_id = std::max(max_id, v);
+        nodes[k] = static_cast<NodeId>(v);
+    }
+    out.push_back(*type, {nodes, static_cast<std::size_t>(n)});
+    return true;
+}
+
+/// The block of `count` element records after the current line, on several
+/// threads; false (the reader where it was) when anything is not a valid record.
+bool read_elements_fast(TextReader& r, std::int64_t count, int dim, bool boundary, int min_nodes, ElementList& out,
+                        NodeIdRange& range) {
+    const std::optional<RecordBlock> block = split_record_lines(r, count, su2_skipped);
+    if (!block) return false;
+    const std::size_t chunks = block->chunks.size();
+    std::vector<ElementList> parts(chunks);
+    std::vector<NodeIdRange> ranges(chunks);
+    const bool ok = parse_record_chunks(r, *block, [&](std::size_t c) {
+        const RecordChunk& chunk = block->chunks[c];
+        ElementList& part = parts[c];
+        NodeIdRange& rg = ranges[c];
+        part.reserve(static_cast<std::size_t>(chunk.count), min_nodes);
+        return for_each_record_line(r.content(), chunk, su2_skipped,
+                                    [&](std::string_view line, std::int64_t, std::size_t line_number) {
+                                        std::int64_t max_id = -1;
+                                        if (!parse_element_line(line, dim, boundary, part, max_id)) return false;
+                                        if (max_id > rg.max) rg = {max_id, line_number};
+                                        return true;
+                                    });
+    });
+    if (!ok) return false;
+    // Each chunk's elements copied to their place on the threads: where
+    // each begins in the lists, then the copies.
+    std::vector<std::size_t> cell_at(chunks + 1, out.size()), node_at(chunks + 1, out.nodes.size());
+    for (std::size_t c = 0; c < chunks; ++c) {
+        cell_at[c + 1] = cell_at[c] + parts[c].size();
+        node_at[c + 1] = node_at[c] + parts[c].nodes.size();
+        // The first line holding the largest id, as the line-by-line code keeps it.
+        if (ranges[c].max > range.max) range = ranges[c];
+    }
+    out.types.resize(cell_at[chunks]);
+    out.offsets.resize(cell_at[chunks] + 1);
+    out.nodes.resize(node_at[chunks]);
+    parallel_for(
+        static_cast<std::int64_t>(chunks),
+        [&](std::int64_t ci) {
+            const auto c = static_cast<std::size_t>(ci);
+            const ElementList& p = parts[c];
+            std::copy(p.types.begin(), p.types.end(), out.types.begin() + static_cast<std::ptrdiff_t>(cell_at[c]));
+            std::copy(p.nodes.begin(), p.nodes.end(), out.nodes.begin() + static_cast<std::ptrdiff_t>(node_at[c]));
+            const auto base = static_cast<std::int64_t>(node_at[c]);
+            for (std::size_t i = 1; i < p.offsets.size(); ++i) out.offsets[cell_at[c] + i] = base + p.offsets[i];
+        },
+        1);
+    r.seek(block->end, block->last_line);
+    return true;
+}
+
+/// The block of `count` points after the current line, on several threads;
+/// false (the reader where it was) when anything is not a valid record.
+bool read_points_fast(TextReader& r, std::int64_t count, int dim, std::vector<double>& points) {
+    const std::optional<RecordBlock> block = split_record_lines(r, count, su2_skipped);
+    if (!block) return false;
+    const std::size_t first = points.size();
+    points.resize(first + static_cast<std::size_t>(count) * static_cast<std::size_t>(dim));
+    const bool ok = parse_record_chunks(r, *block, [&](std::size_t c) {
+        return for_each_record_line(r.content(), block->chunks[c], su2_skipped,
+                                    [&](std::string_view line, std::int64_t record, std::size_t) {
+                                        LineTokens tokens(line);
+                                        double* x = points.data() + first +
+                                                    static_cast<std::size_t>(record) * static_cast<std::size_t>(dim);
+                                        for (int d = 0; d < dim; ++d)
+                                            if (!parse_double(tokens.next(), x[d])) return false;
+                                        return true;
+                                    });
+    });
+    if (!ok) {
+        points.resize(first);
+        return false;
+    }
+    r.seek(block->end, block->last_line);
+    return true;
+}
+
 /// NELEM= block of volume cells. The current line is the NELEM= line.
 /// Returns a description of the block for errors about what follows it.
 std::string read_cells(TextReader& r, const Keyword& kw, int dim, ElementList& cells, NodeIdRange& range) {
     const int min_nodes = dim == 2 ? 3 : 4;
     const Block block = {"element", "NELEM", r.line_number(), parse_count(r, kw, "element count", 1 + min_nodes, 1), {}};
-    cells.reserve(static_cast<std::size_t>(block.count), min_nodes);
-    for (std::int64_t i = 0; i < block.count; ++i) read_element(r, block, i, dim, false, cells, range);
+    if (!read_elements_fast(r, block.count, dim, false, min_nodes, cells, range)) {
+        cells.reserve(static_cast<std::size_t>(block.count), min_nodes);
+        for (std::int64_t i = 0; i < block.count; ++i) read_element(r, block, i, dim, false, cells, range);
+    }
     return block_summary(block);
 }
 
@@ -208,6 +316,7 @@ std::string read_cells(TextReader& r, const Keyword& kw, int dim, ElementList& c
 std::string read_points(TextReader& r, const Keyword& kw, int dim, std::vector<double>& points) {
     const Block block = {"point", "NPOIN", r.line_number(), parse_count(r, kw, "point count", dim), {}};
     if (block.count > max_node_count) r.fail("at most " + str(max_node_count) + " points", first_word(kw.value));
+    if (read_points_fast(r, block.count, dim, points)) return block_summary(block);
     points.reserve(static_cast<std::size_t>(block.count) * static_cast<std::size_t>(dim));
     for (std::int64_t i = 0; i < block.count; ++i) {
         require_record(r, block, i);
@@ -253,6 +362,7 @@ std::string read_markers(TextReader& r, const Keyword& kw, int dim, std::vector<
         const int min_nodes = dim == 2 ? 1 : 3;
         last = {"boundary element", "MARKER_ELEMS", r.line_number(),
                 parse_count(r, elems, "boundary element count", 1 + min_nodes), marker.name};
+        if (read_elements_fast(r, last.count, dim, true, min_nodes, marker.elements, range)) continue;
         marker.elements.reserve(static_cast<std::size_t>(last.count), min_nodes);
         for (std::int64_t i = 0; i < last.count; ++i)
             read_element(r, last, i, dim, true, marker.elements, range);

@@ -67,6 +67,20 @@ public:
     std::int64_t next_int(std::string_view what);
     double next_double(std::string_view what);
 
+    /// Byte offset where the next line begins (the content's size at its end).
+    std::size_t position() const { return pos_; }
+    /// Continues at byte offset `pos` (the first byte of a line), as if the
+    /// line before it had just been read (its tokens all taken) and was line
+    /// `line_number`: for a reader that parsed a block of lines itself
+    /// (record_lines.hpp).
+    void seek(std::size_t pos, std::size_t line_number);
+
+    /// Where next_line() next reports progress (a byte offset; the largest
+    /// size_t without a progress function).
+    std::size_t progress_due() const { return next_report_; }
+    /// Reports progress as next_line() would at byte offset `pos`, when it is due there.
+    void report_progress_to(std::size_t pos);
+
     /// Throws ParseError at the current line.
     [[noreturn]] void fail(std::string_view expected, std::string_view found = {}) const;
 

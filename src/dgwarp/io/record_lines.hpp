@@ -1,0 +1,142 @@
+#pragma once
+// Blocks of records, one per line, parsed on several threads (issue #33): a
+// serial pass finds the lines of the block (cheap: a search for '\n' per
+// line) and cuts them into chunks; the chunks are then parsed in parallel
+// by the format's reader. The fast path only ever accepts valid records: a
+// reader that meets anything else in a chunk goes back (TextReader::seek)
+// and reads the block with its line-by-line code, whose errors name the
+// line, so error messages do not depend on this path.
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/io/text_reader.hpp"
+
+namespace dgwarp {
+
+/// A run of consecutive record lines of a block.
+struct RecordChunk {
+    std::size_t begin = 0;       // byte offset of its first line (a record or a skipped line)
+    std::size_t end = 0;         // byte offset just past its last record line (and its '\n')
+    std::int64_t first = 0;      // index in the block of its first record
+    std::int64_t count = 0;      // records in it
+    std::size_t first_line = 0;  // 1-based line number of the line at `begin`
+};
+
+struct RecordBlock {
+    std::vector<RecordChunk> chunks;
+    std::size_t end = 0;        // byte offset after the block's last record line
+    std::size_t last_line = 0;  // line number of the block's last record line
+};
+
+/// Lines a record block passes over: blank ones, and with `comment` not 0
+/// those whose first non-blank character is `comment` (SU2's '%').
+struct SkippedLines {
+    char comment = 0;
+};
+
+/// The `count` record lines that follow the reader's current line, in
+/// chunks of about `per_chunk` records; nullopt when the content ends first
+/// (the line-by-line code then says which record is missing).
+std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t count, SkippedLines skip,
+                                              std::int64_t per_chunk = 1 << 12);
+
+/// Calls parse(c) for every chunk index c of `block`, on several threads, in
+/// waves that end where the reader's progress is next due (all at once
+/// without a progress function), reporting it between waves as reading line
+/// by line would. Returns false as soon as a wave had a parse(c) that did.
+template <class F>
+bool parse_record_chunks(TextReader& r, const RecordBlock& block, F&& parse);
+
+/// Calls f(line, record, line_number) for every record line of `chunk`, the
+/// line without its end-of-line characters; stops and returns false as soon
+/// as f does.
+template <class F>
+bool for_each_record_line(std::string_view content, const RecordChunk& chunk, SkippedLines skip, F&& f);
+
+/// The whitespace-separated tokens of a line (blanks: space, tab, CR, FF, VT).
+class LineTokens {
+public:
+    explicit LineTokens(std::string_view line) : line_(line) {}
+    /// The next token, empty at the end of the line.
+    std::string_view next() {
+        while (at_ < line_.size() && blank(line_[at_])) ++at_;
+        const std::size_t start = at_;
+        while (at_ < line_.size() && !blank(line_[at_])) ++at_;
+        return line_.substr(start, at_ - start);
+    }
+    static bool blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+private:
+    std::string_view line_;
+    std::size_t at_ = 0;
+};
+
+/// A token of 1 to 18 decimal digits (the usual node id or type id), parsed
+/// inline; false for anything else, which parse_int (text_reader.hpp) then
+/// reads or refuses.
+inline bool parse_plain_digits(std::string_view token, std::int64_t& value) {
+    if (token.empty() || token.size() > 18) return false;
+    std::int64_t v = 0;
+    for (char c : token) {
+        const auto d = static_cast<unsigned char>(c - '0');
+        if (d > 9) return false;
+        v = v * 10 + d;
+    }
+    value = v;
+    return true;
+}
+
+/// Whether `line` is one a record block passes over.
+inline bool skipped_line(std::string_view line, SkippedLines skip) {
+    for (char c : line)
+        if (!LineTokens::blank(c)) return c == skip.comment && skip.comment != 0;
+    return true;
+}
+
+template <class F>
+bool parse_record_chunks(TextReader& r, const RecordBlock& block, F&& parse) {
+    const std::size_t chunks = block.chunks.size();
+    std::vector<std::uint8_t> ok(chunks, 0);
+    for (std::size_t first = 0; first < chunks;) {
+        std::size_t last = first + 1;
+        while (last < chunks && block.chunks[last - 1].end < r.progress_due()) ++last;
+        parallel_for(
+            static_cast<std::int64_t>(last - first),
+            [&](std::int64_t i) {
+                const std::size_t c = first + static_cast<std::size_t>(i);
+                ok[c] = parse(c) ? 1 : 0;
+            },
+            1);
+        for (std::size_t c = first; c < last; ++c)
+            if (!ok[c]) return false;
+        r.report_progress_to(block.chunks[last - 1].end);
+        first = last;
+    }
+    return true;
+}
+
+template <class F>
+bool for_each_record_line(std::string_view content, const RecordChunk& chunk, SkippedLines skip, F&& f) {
+    std::size_t pos = chunk.begin;
+    std::size_t line_number = chunk.first_line;
+    std::int64_t record = chunk.first;
+    const std::int64_t last = chunk.first + chunk.count;
+    while (record < last && pos < chunk.end) {
+        std::size_t nl = content.find('\n', pos);
+        if (nl == std::string_view::npos) nl = content.size();
+        std::string_view line = content.substr(pos, nl - pos);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        if (!skipped_line(line, skip)) {
+            if (!f(line, record, line_number)) return false;
+            ++record;
+        }
+        pos = nl + 1;
+        ++line_number;
+    }
+    return record == last;
+}
+
+}  // namespace dgwarp

@@ -1,0 +1,143 @@
+// Blocks of records parsed on several threads (record_lines.hpp) and the SU2
+// reader's fast path over them: the same mesh and the same errors as the
+// line-by-line code, whatever the chunks and the thread count.
+#include "dgwarp/io/record_lines.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/text_reader.hpp"
+
+using namespace dgwarp;
+
+namespace {
+
+// "HEAD\n" then n records "i 2i" with a blank line after every 7th and a '%'
+// comment after every 11th, CRLF endings on odd records; then "TAIL".
+std::string records_text(int n) {
+    std::string s = "HEAD\n";
+    for (int i = 0; i < n; ++i) {
+        s += std::to_string(i) + " " + std::to_string(2 * i) + (i % 2 ? "\r\n" : "\n");
+        if (i % 7 == 6) s += "   \t\n";
+        if (i % 11 == 10) s += "  % a comment\n";
+    }
+    return s + "TAIL\n";
+}
+
+}  // namespace
+
+TEST(RecordLines, ChunksCoverTheRecordsWithTheirLineNumbers) {
+    const int n = 1000;
+    TextReader r("t.txt", records_text(n));
+    ASSERT_TRUE(r.next_line());  // HEAD, line 1
+    const auto block = split_record_lines(r, n, SkippedLines{'%'}, 64);
+    ASSERT_TRUE(block);
+    ASSERT_EQ(block->chunks.size(), (n + 63) / 64u);
+    // Brute force: walk the lines one by one.
+    TextReader walk("t.txt", records_text(n));
+    walk.next_line();
+    std::vector<std::size_t> line_of(n);
+    for (int i = 0; i < n;) {
+        ASSERT_TRUE(walk.next_line());
+        if (!skipped_line(walk.line(), SkippedLines{'%'})) line_of[static_cast<std::size_t>(i++)] = walk.line_number();
+    }
+    std::int64_t seen = 0;
+    for (const RecordChunk& c : block->chunks) {
+        EXPECT_EQ(c.first, seen);
+        EXPECT_TRUE(for_each_record_line(r.content(), c, SkippedLines{'%'},
+                                         [&](std::string_view line, std::int64_t record, std::size_t line_number) {
+                                             EXPECT_EQ(record, seen);
+                                             EXPECT_EQ(line, std::to_string(record) + " " + std::to_string(2 * record));
+                                             EXPECT_EQ(line_number, line_of[static_cast<std::size_t>(record)]);
+                                             ++seen;
+                                             return true;
+                                         }));
+    }
+    EXPECT_EQ(seen, n);
+    EXPECT_EQ(block->last_line, line_of.back());
+    // The reader continues after the last record as if it had read it.
+    r.seek(block->end, block->last_line);
+    EXPECT_EQ(r.line(), std::to_string(n - 1) + " " + std::to_string(2 * (n - 1)));
+    ASSERT_TRUE(r.next_nonblank_line());
+    while (skipped_line(r.line(), SkippedLines{'%'})) ASSERT_TRUE(r.next_nonblank_line());
+    EXPECT_EQ(r.line(), "TAIL");
+    const std::string text = records_text(n);
+    EXPECT_EQ(r.line_number(), static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')));
+    // Fewer records than asked for: nullopt.
+    TextReader short_reader("t.txt", records_text(10));
+    short_reader.next_line();
+    EXPECT_FALSE(split_record_lines(short_reader, 12, SkippedLines{'%'}, 4));
+}
+
+namespace {
+
+// A 2D SU2 strip of 2 × n quadrilaterals (3 × (n + 1) points), with blank and
+// comment lines inside its blocks: several chunks of 4096 records.
+std::string strip_su2(int n, std::string_view bad_cell = {}, int bad_at = -1) {
+    std::string s = "NDIME= 2\nNELEM= " + std::to_string(2 * n) + "\n";
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 2; ++j) {
+            const int a = i * 3 + j;
+            if (2 * i + j == bad_at)
+                s += std::string(bad_cell) + "\n";
+            else
+                s += "9 " + std::to_string(a) + " " + std::to_string(a + 3) + " " + std::to_string(a + 4) + " " +
+                     std::to_string(a + 1) + " " + std::to_string(2 * i + j) + "\n";
+            if ((2 * i + j) % 1000 == 999) s += "% comment\n\n";
+        }
+    s += "NPOIN= " + std::to_string(3 * (n + 1)) + "\n";
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j < 3; ++j) s += std::to_string(0.1 * i) + " " + std::to_string(0.5 * j) + "\r\n";
+    s += "NMARK= 1\nMARKER_TAG= bottom\nMARKER_ELEMS= " + std::to_string(n) + "\n";
+    for (int i = 0; i < n; ++i) s += "3 " + std::to_string(3 * i) + " " + std::to_string(3 * i + 3) + "\n";
+    return s;
+}
+
+}  // namespace
+
+TEST(RecordLines, Su2BlocksReadOnThreadsGiveTheMeshByConstruction) {
+    const int n = 6000;  // 12,000 cells: 3 chunks of 4096
+    const int before = num_threads();
+    for (int threads : {1, 2, 3}) {
+        set_num_threads(threads);
+        const Mesh m = read_su2_text("strip.su2", strip_su2(n));
+        ASSERT_EQ(m.cells.size(), 2u * n);
+        ASSERT_EQ(m.num_points(), 3u * (n + 1));
+        for (int c : {0, 4095, 4096, 8191, 8192, 2 * n - 1}) {
+            const int i = c / 2, j = c % 2, a = 3 * i + j;
+            const std::vector<NodeId> expected = {a, a + 3, a + 4, a + 1};
+            const auto nodes = m.cells.nodes_of(static_cast<std::size_t>(c));
+            EXPECT_EQ(std::vector<NodeId>(nodes.begin(), nodes.end()), expected) << "cell " << c;
+        }
+        EXPECT_EQ(m.points[2 * 7000], std::stod(std::to_string(0.1 * (7000 / 3))));
+        EXPECT_EQ(m.points[2 * 7000 + 1], 0.5 * (7000 % 3));
+        ASSERT_EQ(m.markers.size(), 1u);
+        EXPECT_EQ(m.markers[0].elements.size(), static_cast<std::size_t>(n));
+    }
+    set_num_threads(before);
+}
+
+TEST(RecordLines, ABadRecordDeepInABlockIsNamedByItsLine) {
+    // Cell 9000 (in the third chunk) with a node id the reader refuses: the
+    // error names its line, counting the comment and blank lines before it.
+    const int bad = 9000;
+    const std::size_t line = 2 + static_cast<std::size_t>(bad) + 1 + 2 * (bad / 1000);
+    for (int threads : {1, 2}) {
+        const int before = num_threads();
+        set_num_threads(threads);
+        try {
+            read_su2_text("strip.su2", strip_su2(6000, "9 0 1 -2 3 4", bad));
+            ADD_FAILURE() << "no error";
+        } catch (const ParseError& e) {
+            EXPECT_EQ(e.line(), line) << e.what();
+            EXPECT_NE(std::string(e.what()).find("element 9001 of the 12000"), std::string::npos) << e.what();
+        }
+        set_num_threads(before);
+    }
+}
