@@ -6,13 +6,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/text_reader.hpp"
+#include "support/test_paths.hpp"
 
 using namespace dgwarp;
 
@@ -140,4 +143,42 @@ TEST(RecordLines, ABadRecordDeepInABlockIsNamedByItsLine) {
         }
         set_num_threads(before);
     }
+}
+
+TEST(RecordLines, GmshBlocksReadOnThreadsRoundTripAndNameABadLine) {
+    const Mesh strip = read_su2_text("strip.su2", strip_su2(6000));
+    const auto file = test::scratch_dir() / "strip.msh";
+    write_mesh(file, strip);
+    const int before = num_threads();
+    for (int threads : {1, 2, 3}) {
+        set_num_threads(threads);
+        const Mesh back = read_mesh(file);
+        EXPECT_EQ(back.points, strip.points);
+        EXPECT_EQ(back.cells, strip.cells);
+    }
+    // The element of tag 9000 given a node tag $Nodes does not define: the
+    // error names its line (the line-by-line code's message).
+    std::string text = read_file_text(file);
+    const std::size_t at = text.find("\n9000 ", text.find("$Elements")) + 1;
+    ASSERT_NE(at, std::string::npos + 1);
+    const std::size_t end = text.find('\n', at);
+    const std::size_t last_space = text.rfind(' ', end);
+    text.replace(last_space + 1, end - last_space - 1, "999999999");
+    const auto line = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1;
+    const auto damaged = test::scratch_dir() / "strip-damaged.msh";
+    {
+        std::ofstream out(damaged, std::ios::binary);
+        out << text;
+    }
+    for (int threads : {1, 2}) {
+        set_num_threads(threads);
+        try {
+            read_mesh(damaged);
+            ADD_FAILURE() << "no error";
+        } catch (const ParseError& e) {
+            EXPECT_EQ(e.line(), line) << e.what();
+            EXPECT_NE(std::string(e.what()).find("999999999"), std::string::npos) << e.what();
+        }
+    }
+    set_num_threads(before);
 }

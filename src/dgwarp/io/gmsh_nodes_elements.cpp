@@ -3,12 +3,14 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
 #include "dgwarp/io/gmsh_element_types.hpp"
 #include "dgwarp/io/gmsh_record.hpp"
 #include "dgwarp/io/gmsh_sections.hpp"
+#include "dgwarp/io/record_lines.hpp"
 
 namespace dgwarp::msh {
 
@@ -31,6 +33,77 @@ void read_coordinates(TextReader& r, GmshContent& c) {
 void check_node_total(TextReader& r, std::int64_t total) {
     if (total > std::numeric_limits<NodeId>::max())
         r.fail("at most " + std::to_string(std::numeric_limits<NodeId>::max()) + " nodes", std::to_string(total));
+}
+
+// The fast paths of a block (record_lines.hpp): its lines on several
+// threads, accepting only what the line-by-line code accepts; false sends
+// the block back to it, which names the error. Gmsh's records skip blank
+// lines; a line beginning with '$' is never a record.
+constexpr SkippedLines gmsh_skipped{};
+
+/// `n` coordinate lines 'x y z' appended to c.xyz.
+bool read_coordinates_fast(TextReader& r, GmshContent& c, std::int64_t n) {
+    const std::optional<RecordBlock> block = split_record_lines(r, n, gmsh_skipped);
+    if (!block) return false;
+    const std::size_t first = c.xyz.size();
+    c.xyz.resize(first + 3 * static_cast<std::size_t>(n));
+    const bool ok = parse_record_chunks(r, *block, [&](std::size_t k) {
+        return for_each_record_line(r.content(), block->chunks[k], gmsh_skipped,
+                                    [&](std::string_view line, std::int64_t record, std::size_t) {
+                                        LineTokens tokens(line);
+                                        double* x = c.xyz.data() + first + 3 * static_cast<std::size_t>(record);
+                                        for (int d = 0; d < 3; ++d)
+                                            if (!parse_double(tokens.next(), x[d])) return false;
+                                        return tokens.next().empty();
+                                    });
+    });
+    if (!ok) {
+        c.xyz.resize(first);
+        return false;
+    }
+    r.seek(block->end, block->last_line);
+    return true;
+}
+
+/// `n` element lines 'tag nodeTags...' of type t (4.1) appended to c.
+bool read_elements_fast(TextReader& r, GmshContent& c, CellType t, std::int64_t n, std::uint32_t group) {
+    const std::optional<RecordBlock> block = split_record_lines(r, n, gmsh_skipped);
+    if (!block) return false;
+    const int k = nodes_per_cell(t);
+    const auto order = gmsh_index_of_vtk_node(t);
+    std::vector<ElementList> parts(block->chunks.size());
+    const bool ok = parse_record_chunks(r, *block, [&](std::size_t ci) {
+        ElementList& part = parts[ci];
+        part.reserve(static_cast<std::size_t>(block->chunks[ci].count), k);
+        return for_each_record_line(r.content(), block->chunks[ci], gmsh_skipped,
+                                    [&](std::string_view line, std::int64_t, std::size_t) {
+                                        LineTokens tokens(line);
+                                        std::int64_t tag = 0;
+                                        const std::string_view first = tokens.next();
+                                        if (!first.empty() && first.front() == '$') return false;
+                                        if (!parse_int(first, tag) || tag <= 0) return false;
+                                        ElementNodes gmsh_order{}, vtk_order{};
+                                        for (int i = 0; i < k; ++i) {
+                                            const std::string_view token = tokens.next();
+                                            if (!(parse_plain_digits(token, tag) || parse_int(token, tag))) return false;
+                                            gmsh_order[i] = c.node_ids.find(tag);
+                                            if (gmsh_order[i] < 0) return false;
+                                        }
+                                        if (!tokens.next().empty()) return false;
+                                        for (int i = 0; i < k; ++i) vtk_order[i] = gmsh_order[order[i]];
+                                        part.push_back(t, std::span(vtk_order.data(), static_cast<std::size_t>(k)));
+                                        return true;
+                                    });
+    });
+    if (!ok) return false;
+    const int dim = cell_dimension(t);
+    c.top_dim = std::max(c.top_dim, dim);
+    if (dim > 0) {
+        append_element_parts(c.by_dim[dim].elements, parts);
+        c.by_dim[dim].groups.resize(c.by_dim[dim].groups.size() + static_cast<std::size_t>(n), group);
+    }
+    r.seek(block->end, block->last_line);
+    return true;
 }
 
 void read_nodes_41(TextReader& r, GmshContent& c) {
@@ -62,6 +135,10 @@ void read_nodes_41(TextReader& r, GmshContent& c) {
             require_record(r, "a node tag");
             read_node_tag(r, c, first + static_cast<NodeId>(i));
             expect_end_of_record(r, "the node tag");
+        }
+        if (!parametric && read_coordinates_fast(r, c, n)) {
+            seen += n;
+            continue;
         }
         for (std::int64_t i = 0; i < n; ++i) {
             require_record(r, parametric ? "node coordinates 'x y z u...'" : "node coordinates 'x y z'");
@@ -168,6 +245,10 @@ void read_elements_41(TextReader& r, GmshContent& c) {
         // missing from $Entities (or no $Entities at all) has none.
         const auto physicals = c.entity_physicals.find({dim, entity});
         const std::uint32_t group = physicals == c.entity_physicals.end() ? 0 : c.group_of(physicals->second);
+        if (read_elements_fast(r, c, t, n, group)) {
+            seen += n;
+            continue;
+        }
         for (std::int64_t i = 0; i < n; ++i) {
             require_record(r, "an element 'tag nodeTags...'");
             const std::int64_t tag = r.next_int("the element tag");

@@ -1,6 +1,7 @@
 // record_lines.hpp: the serial pass that finds a block's record lines.
 #include "dgwarp/io/record_lines.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "dgwarp/io/text_reader.hpp"
@@ -37,6 +38,30 @@ std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t 
     block.end = std::min(pos, content.size());
     if (count == 0) block.last_line = r.line_number();
     return block;
+}
+
+void append_element_parts(ElementList& out, const std::vector<ElementList>& parts) {
+    // Where each part begins in the lists, then the copies.
+    const std::size_t n = parts.size();
+    std::vector<std::size_t> cell_at(n + 1, out.size()), node_at(n + 1, out.nodes.size());
+    for (std::size_t c = 0; c < n; ++c) {
+        cell_at[c + 1] = cell_at[c] + parts[c].size();
+        node_at[c + 1] = node_at[c] + parts[c].nodes.size();
+    }
+    out.types.resize(cell_at[n]);
+    out.offsets.resize(cell_at[n] + 1);
+    out.nodes.resize(node_at[n]);
+    parallel_for(
+        static_cast<std::int64_t>(n),
+        [&](std::int64_t ci) {
+            const auto c = static_cast<std::size_t>(ci);
+            const ElementList& p = parts[c];
+            std::copy(p.types.begin(), p.types.end(), out.types.begin() + static_cast<std::ptrdiff_t>(cell_at[c]));
+            std::copy(p.nodes.begin(), p.nodes.end(), out.nodes.begin() + static_cast<std::ptrdiff_t>(node_at[c]));
+            const auto base = static_cast<std::int64_t>(node_at[c]);
+            for (std::size_t i = 1; i < p.offsets.size(); ++i) out.offsets[cell_at[c] + i] = base + p.offsets[i];
+        },
+        1);
 }
 
 }  // namespace dgwarp

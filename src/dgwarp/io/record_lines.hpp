@@ -13,6 +13,7 @@
 
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/text_reader.hpp"
+#include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
 
@@ -42,6 +43,10 @@ struct SkippedLines {
 /// (the line-by-line code then says which record is missing).
 std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t count, SkippedLines skip,
                                               std::int64_t per_chunk = 1 << 12);
+
+/// Appends the elements of `parts` (one list per chunk, in order) to `out`,
+/// the copies on the threads.
+void append_element_parts(ElementList& out, const std::vector<ElementList>& parts);
 
 /// Calls parse(c) for every chunk index c of `block`, on several threads, in
 /// waves that end where the reader's progress is next due (all at once

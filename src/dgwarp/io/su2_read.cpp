@@ -247,29 +247,10 @@ bool read_elements_fast(TextReader& r, std::int64_t count, int dim, bool boundar
                                     });
     });
     if (!ok) return false;
-    // Each chunk's elements copied to their place on the threads: where
-    // each begins in the lists, then the copies.
-    std::vector<std::size_t> cell_at(chunks + 1, out.size()), node_at(chunks + 1, out.nodes.size());
-    for (std::size_t c = 0; c < chunks; ++c) {
-        cell_at[c + 1] = cell_at[c] + parts[c].size();
-        node_at[c + 1] = node_at[c] + parts[c].nodes.size();
-        // The first line holding the largest id, as the line-by-line code keeps it.
-        if (ranges[c].max > range.max) range = ranges[c];
-    }
-    out.types.resize(cell_at[chunks]);
-    out.offsets.resize(cell_at[chunks] + 1);
-    out.nodes.resize(node_at[chunks]);
-    parallel_for(
-        static_cast<std::int64_t>(chunks),
-        [&](std::int64_t ci) {
-            const auto c = static_cast<std::size_t>(ci);
-            const ElementList& p = parts[c];
-            std::copy(p.types.begin(), p.types.end(), out.types.begin() + static_cast<std::ptrdiff_t>(cell_at[c]));
-            std::copy(p.nodes.begin(), p.nodes.end(), out.nodes.begin() + static_cast<std::ptrdiff_t>(node_at[c]));
-            const auto base = static_cast<std::int64_t>(node_at[c]);
-            for (std::size_t i = 1; i < p.offsets.size(); ++i) out.offsets[cell_at[c] + i] = base + p.offsets[i];
-        },
-        1);
+    // The first line holding the largest id, as the line-by-line code keeps it.
+    for (const NodeIdRange& rg : ranges)
+        if (rg.max > range.max) range = rg;
+    append_element_parts(out, parts);
     r.seek(block->end, block->last_line);
     return true;
 }
