@@ -17,6 +17,7 @@
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/text_rows.hpp"
 #include "dgwarp/io/gmsh_element_types.hpp"
 #include "dgwarp/io/number_text.hpp"
 
@@ -29,29 +30,28 @@ using msh::gmsh_type_id;
 
 void write_int(std::ostream& out, std::int64_t v) { write_number(out, static_cast<long long>(v)); }
 
-// Writes `x y z` of node i (z = 0 for a 2D mesh).
-void write_point(std::ostream& out, const Mesh& mesh, std::size_t i) {
+// Appends `x y z` of node i (z = 0 for a 2D mesh).
+void append_point(std::string& s, const Mesh& mesh, std::size_t i) {
     const double* p = mesh.points.data() + i * static_cast<std::size_t>(mesh.dim);
-    write_number(out, p[0]);
-    out << ' ';
-    write_number(out, p[1]);
-    out << ' ';
-    write_number(out, mesh.dim == 3 ? p[2] : 0.0);
+    append_number(s, p[0]);
+    s += ' ';
+    append_number(s, p[1]);
+    s += ' ';
+    append_number(s, mesh.dim == 3 ? p[2] : 0.0);
 }
 
-// Writes the node tags of element i of `list` in Gmsh order, each preceded by a space.
-void write_element_nodes(std::ostream& out, const ElementList& list, std::size_t i) {
+// Appends the node tags of element i of `list` in Gmsh order, each preceded by a space.
+void append_element_nodes(std::string& s, const ElementList& list, std::size_t i) {
     const CellType t = list.types[i];
     const auto vtk = list.nodes_of(i);
     std::array<NodeId, 8> gmsh{};
     const auto order = gmsh_index_of_vtk_node(t);
     for (std::size_t k = 0; k < vtk.size(); ++k) gmsh[order[k]] = vtk[k];
     for (std::size_t k = 0; k < vtk.size(); ++k) {
-        out << ' ';
-        write_int(out, std::int64_t{gmsh[k]} + 1);
+        s += ' ';
+        append_number(s, static_cast<long long>(gmsh[k]) + 1);
     }
 }
-
 
 void write_header(std::ostream& out, const Mesh& mesh, int version) {
     out << "$MeshFormat\n" << (version == 41 ? "4.1" : "2.2") << " 0 8\n$EndMeshFormat\n";
@@ -129,14 +129,14 @@ void write_41(std::ostream& out, const Mesh& mesh) {
         out << '\n' << mesh.dim << " 1 0 ";
         write_int(out, num_points);
         out << '\n';
-        for (std::int64_t i = 1; i <= num_points; ++i) {
-            write_int(out, i);
-            out << '\n';
-        }
-        for (std::size_t i = 0; i < mesh.num_points(); ++i) {
-            write_point(out, mesh, i);
-            out << '\n';
-        }
+        write_rows(out, num_points, [&](std::int64_t i, std::string& text) {
+            append_number(text, static_cast<long long>(i) + 1);
+            text += '\n';
+        });
+        write_rows(out, num_points, [&](std::int64_t i, std::string& text) {
+            append_point(text, mesh, static_cast<std::size_t>(i));
+            text += '\n';
+        });
     }
     out << "$EndNodes\n";
 
@@ -168,11 +168,12 @@ void write_41(std::ostream& out, const Mesh& mesh) {
         out << ' ' << gmsh_type_id(b.list->types[b.begin]) << ' ';
         write_int(out, static_cast<std::int64_t>(b.end - b.begin));
         out << '\n';
-        for (std::size_t i = b.begin; i < b.end; ++i) {
-            write_int(out, ++tag);
-            write_element_nodes(out, *b.list, i);
-            out << '\n';
-        }
+        write_rows(out, static_cast<std::int64_t>(b.end - b.begin), [&](std::int64_t k, std::string& text) {
+            append_number(text, static_cast<long long>(tag + k) + 1);
+            append_element_nodes(text, *b.list, b.begin + static_cast<std::size_t>(k));
+            text += '\n';
+        });
+        tag += static_cast<std::int64_t>(b.end - b.begin);
     }
     out << "$EndElements\n";
 }
@@ -181,12 +182,12 @@ void write_22(std::ostream& out, const Mesh& mesh) {
     out << "$Nodes\n";
     write_int(out, static_cast<std::int64_t>(mesh.num_points()));
     out << '\n';
-    for (std::size_t i = 0; i < mesh.num_points(); ++i) {
-        write_int(out, static_cast<std::int64_t>(i) + 1);
-        out << ' ';
-        write_point(out, mesh, i);
-        out << '\n';
-    }
+    write_rows(out, static_cast<std::int64_t>(mesh.num_points()), [&](std::int64_t i, std::string& text) {
+        append_number(text, static_cast<long long>(i) + 1);
+        text += ' ';
+        append_point(text, mesh, static_cast<std::size_t>(i));
+        text += '\n';
+    });
     out << "$EndNodes\n";
 
     const auto n = static_cast<std::int64_t>(mesh.markers.size());
@@ -198,15 +199,19 @@ void write_22(std::ostream& out, const Mesh& mesh) {
     std::int64_t tag = 0;
     // Each element line: tag type 2 physical elementary nodes...
     auto write_list = [&](const ElementList& list, std::int64_t physical, std::int64_t elementary) {
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            write_int(out, ++tag);
-            out << ' ' << gmsh_type_id(list.types[i]) << " 2 ";
-            write_int(out, physical);
-            out << ' ';
-            write_int(out, elementary);
-            write_element_nodes(out, list, i);
-            out << '\n';
-        }
+        write_rows(out, static_cast<std::int64_t>(list.size()), [&](std::int64_t k, std::string& text) {
+            const auto i = static_cast<std::size_t>(k);
+            append_number(text, static_cast<long long>(tag + k) + 1);
+            text += ' ';
+            append_number(text, static_cast<long long>(gmsh_type_id(list.types[i])));
+            text += " 2 ";
+            append_number(text, static_cast<long long>(physical));
+            text += ' ';
+            append_number(text, static_cast<long long>(elementary));
+            append_element_nodes(text, list, i);
+            text += '\n';
+        });
+        tag += static_cast<std::int64_t>(list.size());
     };
     for (std::int64_t i = 0; i < n; ++i) write_list(mesh.markers[i].elements, i + 1, i + 1);
     write_list(mesh.cells, n + 1, 1);
