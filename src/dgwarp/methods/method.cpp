@@ -1,5 +1,6 @@
 #include "dgwarp/methods/method.hpp"
 
+#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
 
 #include <algorithm>
@@ -67,13 +68,31 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Eleme
         }
         case Method::rbf: return prepare_rbf(dim, points, boundary, options.rbf, progress);
         case Method::dg_harmonic: {
-            DgHarmonicPlan plan = prepare_dg_harmonic(dim, points, boundary, options.dg_harmonic, progress);
-            if (!cells.empty()) {
+            // The guard (the cells' copy, orientations, layout and the
+            // original's measure) needs nothing of the plan. On two threads
+            // it is built beside the plan, each on one thread (run_concurrently):
+            // on the 865k sphere 2.3 s of prepare became 1.5-1.7 s. With more
+            // threads each is built in turn on all of them (their loops are
+            // parallel), as on one.
+            DgHarmonicPlan plan;
+            std::shared_ptr<const DgHarmonicGuard> guard;
+            double guard_seconds = 0;
+            const auto make_plan = [&] { plan = prepare_dg_harmonic(dim, points, boundary, options.dg_harmonic, progress); };
+            const auto make_guard = [&] {
+                if (cells.empty()) return;
                 Stopwatch sw;
-                plan.guard = make_dg_harmonic_guard(dim, points, cells, boundary,
-                                                    guard_laplacian_options(options.laplacian, options.dg_harmonic));
-                plan.stats.guard_seconds = sw.lap();
+                guard = make_dg_harmonic_guard(dim, points, cells, boundary,
+                                               guard_laplacian_options(options.laplacian, options.dg_harmonic));
+                guard_seconds = sw.lap();
+            };
+            if (num_threads() == 2) {
+                run_concurrently(make_plan, make_guard);
+            } else {
+                make_plan();
+                make_guard();
             }
+            plan.guard = std::move(guard);
+            plan.stats.guard_seconds = guard_seconds;
             return plan;
         }
         case Method::laplacian: {
