@@ -2,10 +2,12 @@
 #include <csignal>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "commands.hpp"
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/version.hpp"
 #include "flag_values.hpp"
 #include "mpi_session.hpp"
 #include "report.hpp"
@@ -63,7 +65,7 @@ int run_command(int argc, char** argv) {
                  "inverse distance weighting, Wang, Qin & Zhao), DGM, IDW, RBF and the laplacian reference."};
     app.name("dgwarp");
     app.require_subcommand(1);
-    app.set_version_flag("--version", "dgwarp 0.1.0");
+    app.set_version_flag("--version", "dgwarp " + std::string(dgwarp::version()));
     app.footer(
         "Examples (in the repository's folder: examples/motions/ has a motion file of every kind):\n"
         "  dgwarp demo                              run the built-in example\n"

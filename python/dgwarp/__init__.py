@@ -9,6 +9,7 @@ A NumPy interface to dgwarp's C++ library (docs/PYTHON.md)::
     mesh.write("turned.vtu", points=points)
 """
 
+from ._core import __version__
 from ._core import (
     DgwarpWarning,
     Error,

@@ -9,6 +9,7 @@ import numpy as np
 import numpy.typing as npt
 
 __all__: list[str]
+__version__: str  # the project's version, as `dgwarp --version` prints it
 
 Path = Union[str, os.PathLike[str]]
 FloatArray = npt.NDArray[np.float64]

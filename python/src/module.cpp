@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "dgwarp/core/version.hpp"
 #include "errors.hpp"
 #include "py_mesh.hpp"
 
@@ -10,6 +11,7 @@ namespace py = pybind11;
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "dgwarp's C++ library (import the dgwarp package, not this module)";
+    m.attr("__version__") = std::string(dgwarp::version());
     dgwarp::python::bind_errors(m);
     dgwarp::python::bind_mesh(m);
     dgwarp::python::bind_quality(m);

@@ -1,7 +1,9 @@
 """The public API: every name has a docstring and a type hint in the stub, and nothing else is public."""
 
 import ast
+import os
 import pathlib
+import re
 
 import dgwarp
 
@@ -32,3 +34,12 @@ def test_exceptions_derive_from_what_python_callers_expect():
     for e in (dgwarp.ParseError, dgwarp.MeshError, dgwarp.FormatError, dgwarp.InvalidResultError, dgwarp.InputError):
         assert issubclass(e, ValueError) and issubclass(e, dgwarp.Error)
     assert issubclass(dgwarp.DgwarpWarning, UserWarning)
+
+
+def test_version_is_the_projects(cli):
+    # The version of CMakeLists.txt's project(), as the CLI prints it.
+    source = pathlib.Path(os.environ.get("DGWARP_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+    cmake = (source / "CMakeLists.txt").read_text()
+    declared = re.search(r"project\(dgwarp VERSION ([0-9.]+)", cmake).group(1)
+    assert dgwarp.__version__ == declared
+    assert cli("--version").stdout.split() == ["dgwarp", declared]
