@@ -85,7 +85,7 @@ Plan prepare(Method method, int dim, std::span<const double> points, const Eleme
                                                guard_laplacian_options(options.laplacian, options.dg_harmonic));
                 guard_seconds = sw.lap();
             };
-            if (num_threads() == 2) {
+            if (num_threads() == 2 && !cells.empty()) {
                 run_concurrently(make_plan, make_guard);
             } else {
                 make_plan();
