@@ -2,6 +2,9 @@
 // Repeated timings for the benchmark programs: the median (and the fastest)
 // of several runs of the same call.
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "dgwarp/core/stopwatch.hpp"
@@ -29,6 +32,20 @@ Timing time_repeats(int repeats, F&& f) {
 template <class F>
 double median_seconds(int repeats, F&& f) {
     return time_repeats(repeats, f).median;
+}
+
+/// The arguments `MESH [--repeats N]` of a benchmark program: false (after
+/// printing the usage) when MESH is missing; `repeats` keeps its default
+/// unless given.
+inline bool mesh_and_repeats(int argc, char** argv, std::string& mesh, int& repeats) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s MESH [--repeats N]\n", argv[0]);
+        return false;
+    }
+    mesh = argv[1];
+    for (int i = 2; i + 1 < argc; ++i)
+        if (std::string(argv[i]) == "--repeats") repeats = std::atoi(argv[i + 1]);
+    return true;
 }
 
 }  // namespace dgwarp::bench

@@ -19,14 +19,10 @@ using namespace dgwarp;
 using bench::median_seconds;
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: %s MESH [--repeats N]\n", argv[0]);
-        return 1;
-    }
+    std::string file;
     int repeats = 3;
-    for (int i = 2; i + 1 < argc; ++i)
-        if (std::string(argv[i]) == "--repeats") repeats = std::atoi(argv[i + 1]);
-    const std::filesystem::path path = argv[1];
+    if (!bench::mesh_and_repeats(argc, argv, file, repeats)) return 1;
+    const std::filesystem::path path = file;
     const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
     const auto out = std::filesystem::temp_directory_path() /
                      ("dgwarp-bench-io" + path.extension().string());

@@ -22,15 +22,11 @@ using namespace dgwarp;
 using bench::median_seconds;
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: %s MESH [--repeats N]\n", argv[0]);
-        return 1;
-    }
+    std::string file;
     int repeats = 5;
-    for (int i = 2; i + 1 < argc; ++i)
-        if (std::string(argv[i]) == "--repeats") repeats = std::atoi(argv[i + 1]);
-    const Mesh mesh = read_mesh(argv[1]);
-    std::printf("%s: %zu nodes, %zu cells\n", argv[1], mesh.num_points(), mesh.cells.size());
+    if (!bench::mesh_and_repeats(argc, argv, file, repeats)) return 1;
+    const Mesh mesh = read_mesh(file);
+    std::printf("%s: %zu nodes, %zu cells\n", file.c_str(), mesh.num_points(), mesh.cells.size());
     // A frame: every node moved a little (1e-3 of its coordinate), so nothing folds.
     std::vector<double> moved = mesh.points;
     for (std::size_t i = 0; i < moved.size(); ++i) moved[i] *= 1 + 1e-3 * static_cast<double>(i % 7) / 7;
