@@ -12,16 +12,24 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/guard_kernel.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
-#include "dgwarp/quality/corner_jacobian.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 
 namespace dgwarp {
 
 namespace {
+/// The points in the guard's local order (DgHarmonicGuard::local_order),
+/// copied on the threads; not initialised first (a pass less over 20 MB at
+/// 865k nodes).
+struct LocalPoints {
+    std::unique_ptr<double[]> values;  // num_points × dim
+    std::size_t num_points = 0;
+};
+LocalPoints local_points(const DgHarmonicGuard& g, std::span<const double> points);
 /// Fills the guard's measure layout (simplex_nodes, simplex_flags, other_cells)
 /// from its judged cells, the simplices' flags signed by `simplex_orientation`.
 void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation);
@@ -42,7 +50,8 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
     guard->mesh.cells = cells;
     guard->boundary = boundary;
     guard->laplacian_options = laplacian;
-    std::vector<std::uint8_t> on_boundary(points.size() / static_cast<std::size_t>(dim), 0);
+    const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
+    std::vector<std::uint8_t> on_boundary(num_points, 0);
     for (NodeId n : boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
     guard->judged.resize(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -51,10 +60,14 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
                                      [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
         guard->judged[c] = all ? 2 : 1;
     }
+    std::vector<NodeId> all(num_points);
+    for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
+    const std::vector<std::uint32_t> order = morton_order(dim, points, all);
+    guard->local_order.assign(order.begin(), order.end());
     // Judged as `dgwarp quality` judges a mesh on its own: against the
     // majority orientation of each cell type (dominant_orientations), here
-    // counted on the layout's Morton order, which gathers far fewer points
-    // from memory than the mesh's. A cell already inverted or flat in the
+    // counted in the layout's order, which gathers far fewer points from
+    // memory than the mesh's. A cell already inverted or flat in the
     // original is not the step's doing and is not judged.
     build_measure_layout(*guard, 1);
     guard->orientations = layout_orientations(*guard);
@@ -90,11 +103,13 @@ const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard) {
 
 namespace {
 
-using quality_detail::Point3;
+/// Blocks of the guard's passes: fixed (not one per thread), so that the
+/// minimum found is the same whatever the thread count.
+constexpr std::int64_t pass_block = 1 << 14;
 
 /// One block's share of the measure: inverted count, and the smallest
-/// "key" with where it is (key: the metric cubed for tetrahedra, the metric
-/// itself otherwise; an inverted cell's key is its (non-positive) metric).
+/// "key" with where it is (key: the metric cubed in 3D, the metric itself
+/// in 2D; an inverted cell's key is its (non-positive) metric).
 struct BlockMeasure {
     std::int64_t inverted = 0, inverted_on_boundary = 0;
     double key = std::numeric_limits<double>::infinity();
@@ -114,79 +129,104 @@ double exact_quality(int dim, CellType type, std::span<const NodeId> nodes, std:
 
 CellType simplex_type(int dim) { return dim == 3 ? CellType::tetrahedron : CellType::triangle; }
 
+using guard_detail::kernel_block;
+
+/// The local node ids of simplex s of the layout.
 std::span<const NodeId> simplex_at(const DgHarmonicGuard& g, std::int64_t s) {
     const auto n = static_cast<std::size_t>(g.mesh.dim + 1);
     return {g.simplex_nodes.data() + static_cast<std::size_t>(s) * n, n};
 }
 
-/// Whether a valid simplex's key, numerator / denominator, may be below
-/// `key`: one multiplication instead of a division for the cells that are
-/// plainly not a new minimum (most of them). A margin of 1e-12 (far above
-/// the few roundings between this product and the caller's quotient) sends
-/// near-ties to the caller, which divides and compares as before, so the
-/// minimum found is the quotient's. A denominator too small for the product
-/// to be exact (subnormal) or too large (infinite) says yes too.
-inline bool below(double numerator, double denominator, double key) {
-    return !(denominator >= std::numeric_limits<double>::min()) || !std::isfinite(denominator) ||
-           numerator < key * denominator * (1 + 1e-12);
+/// The metric of simplex s of the layout as cell_shape_quality gives it, from the local points.
+double exact_simplex_quality(const DgHarmonicGuard& g, const LocalPoints& local, std::int64_t s, int orientation) {
+    const auto d = static_cast<std::size_t>(g.mesh.dim);
+    const std::span<const NodeId> nodes = simplex_at(g, s);
+    std::array<double, 12> coords{};
+    for (std::size_t i = 0; i <= d; ++i)
+        for (std::size_t k = 0; k < d; ++k) coords[i * d + k] = local.values[static_cast<std::size_t>(nodes[i]) * d + k];
+    return cell_shape_quality(g.mesh.dim == 3 ? CellType::tetrahedron : CellType::triangle,
+                              std::span<const double>(coords.data(), (d + 1) * d), g.mesh.dim, orientation);
 }
 
-/// Updates `m` with simplex `s` of the layout (tetrahedra: the key is q^3 =
-/// 54 alpha^2 / den^3, with q = 3 (sqrt 2 alpha)^(2/3) / den from the same
-/// corner Jacobian as simplex_quality.cpp; triangles: q = sqrt 3 alpha / den).
-/// A simplex that is not plainly valid takes the exact value.
-template <int Dim>
-inline void measure_simplex(const DgHarmonicGuard& g, std::span<const double> points, std::int64_t s,
-                            BlockMeasure& m) {
-    const std::int8_t flag = g.simplex_flags[static_cast<std::size_t>(s)];
-    const NodeId* v = g.simplex_nodes.data() + static_cast<std::size_t>(s) * (Dim + 1);
-    const double* p = points.data();
-    const double orientation = flag > 0 ? 1.0 : -1.0;
-    if constexpr (Dim == 3) {
-        const auto point = [&](NodeId n) {
-            const double* x = p + 3 * static_cast<std::size_t>(n);
-            return Point3{x[0], x[1], x[2]};
-        };
-        const quality_detail::CornerJacobian j =
-            quality_detail::corner_jacobian(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
-        const double alpha = orientation * j.alpha;
-        const double den = 1.5 * (j.l11 + j.l22 + j.l33) - (j.l12 + j.l23 + j.l13);
-        if (alpha > 0 && den > 0) {
-            if (!below(54 * alpha * alpha, den * den * den, m.key)) return;
-            const double r = alpha / den;
-            const double key = 54 * r * r / den;
-            if (std::isfinite(key) && key > 0) {
-                if (key < m.key) m.key = key, m.simplex = s;
-                return;
+LocalPoints local_points(const DgHarmonicGuard& g, std::span<const double> points) {
+    const auto d = static_cast<std::size_t>(g.mesh.dim);
+    const std::size_t n = g.local_order.size();
+    LocalPoints local{std::unique_ptr<double[]>(new double[n * d]), n};
+    double* out = local.values.get();
+    const auto nodes = static_cast<std::int64_t>(n);
+    parallel_for(
+        (nodes + pass_block - 1) / pass_block,
+        [&](std::int64_t b) {
+            const auto end = static_cast<std::size_t>(std::min(nodes, (b + 1) * pass_block));
+            for (auto k = static_cast<std::size_t>(b * pass_block); k < end; ++k) {
+                const double* x = points.data() + static_cast<std::size_t>(g.local_order[k]) * d;
+                for (std::size_t j = 0; j < d; ++j) out[k * d + j] = x[j];
             }
-        }
-    } else {
-        const double* x0 = p + 2 * static_cast<std::size_t>(v[0]);
-        const double* x1 = p + 2 * static_cast<std::size_t>(v[1]);
-        const double* x2 = p + 2 * static_cast<std::size_t>(v[2]);
-        const double a1x = x1[0] - x0[0], a1y = x1[1] - x0[1], a2x = x2[0] - x0[0], a2y = x2[1] - x0[1];
-        const double alpha = orientation * (a1x * a2y - a1y * a2x);
-        const double den = (a1x * a1x + a1y * a1y) + (a2x * a2x + a2y * a2y) - (a1x * a2x + a1y * a2y);
-        if (alpha > 0 && den > 0) {
-            const double numerator = std::sqrt(3.0) * alpha;
-            if (!below(numerator, den, m.key)) return;
-            const double key = numerator / den;
-            if (std::isfinite(key) && key > 0) {
-                if (key < m.key) m.key = key, m.simplex = s;
-                return;
+        },
+        1);
+    return local;
+}
+
+/// Runs the guard's kernel over the layout's simplices [first, end), on the
+/// local points, a kernel block at a time: the block's edge vectors laid out
+/// column by column, then the kernel, then visit(s, alpha, key) per simplex
+/// (guard_kernel.hpp: alpha signed by the simplex's flag, key NaN when the
+/// simplex is not plainly valid).
+template <int Dim, class Visit>
+void for_each_simplex_key_in(const DgHarmonicGuard& g, const LocalPoints& local, std::int64_t first,
+                             std::int64_t end, Visit&& visit) {
+    guard_detail::SimplexEdges edges;
+    double alpha[kernel_block], key[kernel_block];
+    const double* p = local.values.get();
+    for (std::int64_t s0 = first; s0 < end; s0 += static_cast<std::int64_t>(kernel_block)) {
+        const auto count = static_cast<std::size_t>(std::min<std::int64_t>(kernel_block, end - s0));
+        const NodeId* v = g.simplex_nodes.data() + static_cast<std::size_t>(s0) * (Dim + 1);
+        const std::int8_t* flag = g.simplex_flags.data() + s0;
+        for (std::size_t i = 0; i < count; ++i, v += Dim + 1) {
+            const double* x0 = p + Dim * static_cast<std::size_t>(v[0]);
+            for (int k = 1; k <= Dim; ++k) {
+                const double* xk = p + Dim * static_cast<std::size_t>(v[k]);
+                for (int j = 0; j < Dim; ++j) edges.e[(k - 1) * Dim + j][i] = xk[j] - x0[j];
             }
+            edges.sign[i] = flag[i] > 0 ? 1.0 : -1.0;
         }
+        if constexpr (Dim == 3)
+            guard_detail::tetrahedron_keys(edges, count, alpha, key);
+        else
+            guard_detail::triangle_keys(edges, count, alpha, key);
+        for (std::size_t i = 0; i < count; ++i) visit(s0 + static_cast<std::int64_t>(i), alpha[i], key[i]);
     }
-    const double q = exact_quality(Dim, simplex_type(Dim), simplex_at(g, s), points, static_cast<int>(orientation));
-    double key;
-    if (!(q > 0)) {
-        ++m.inverted;
-        m.inverted_on_boundary += flag == 2 || flag == -2;
-        key = std::isnan(q) ? -1.0 : q;
-    } else {
-        key = Dim == 3 ? q * q * q : q;
-    }
-    if (key < m.key) m.key = key, m.simplex = s;
+}
+template <class Visit>
+void for_each_simplex_key(const DgHarmonicGuard& g, const LocalPoints& local, std::int64_t first, std::int64_t end,
+                          Visit&& visit) {
+    if (g.mesh.dim == 3)
+        for_each_simplex_key_in<3>(g, local, first, end, visit);
+    else
+        for_each_simplex_key_in<2>(g, local, first, end, visit);
+}
+
+/// The measure of the layout's simplices [first, end) on the local points.
+void measure_simplices(const DgHarmonicGuard& g, const LocalPoints& local, std::int64_t first, std::int64_t end,
+                       BlockMeasure& m) {
+    const bool cubed = g.mesh.dim == 3;
+    double best = m.key;
+    std::int64_t where = m.simplex;
+    for_each_simplex_key(g, local, first, end, [&](std::int64_t s, double, double key) {
+        if (key < best) best = key, where = s;  // plainly valid: the usual case, and false for NaN
+        if (key == key) return;
+        const std::int8_t flag = g.simplex_flags[static_cast<std::size_t>(s)];
+        const double q = exact_simplex_quality(g, local, s, flag > 0 ? 1 : -1);
+        if (!(q > 0)) {
+            ++m.inverted;
+            m.inverted_on_boundary += flag == 2 || flag == -2;
+            key = std::isnan(q) ? -1.0 : q;
+        } else {
+            key = cubed ? q * q * q : q;
+        }
+        if (key < best) best = key, where = s;
+    });
+    if (where != m.simplex) m.key = best, m.simplex = where, m.cell = -1;
 }
 
 void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation) {
@@ -194,31 +234,34 @@ void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation) {
     const CellType simplex = simplex_type(g.mesh.dim);
     const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
     const std::size_t num_points = g.mesh.num_points();
-    // Each node's rank along a Morton curve; each judged simplex goes in the
-    // bucket of its first node's rank (a counting sort: one pass, stable).
-    std::vector<NodeId> all(num_points);
-    for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
-    const std::vector<std::uint32_t> order = morton_order(g.mesh.dim, g.mesh.points, all);
-    std::vector<std::uint32_t> rank(num_points);
-    for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<std::uint32_t>(k);
-    std::vector<std::int64_t> start(num_points + 1, 0);
+    std::vector<NodeId> local_id(num_points);
+    for (std::size_t k = 0; k < num_points; ++k) local_id[static_cast<std::size_t>(g.local_order[k])] = static_cast<NodeId>(k);
+    // Each judged simplex goes in the group of its first node's local id
+    // (512 ids to a group): a counting sort, one pass, stable.
+    constexpr int group_shift = 9;
+    const std::size_t groups = (num_points >> group_shift) + 1;
+    const auto group_of = [&](NodeId first) {
+        return static_cast<std::size_t>(local_id[static_cast<std::size_t>(first)]) >> group_shift;
+    };
+    std::vector<std::int64_t> start(groups + 1, 0);
     g.other_cells.clear();
     for (std::size_t c = 0; c < cells.size(); ++c) {
         if (!g.judged[c]) continue;
         if (cells.types[c] == simplex)
-            ++start[rank[static_cast<std::size_t>(cells.nodes[static_cast<std::size_t>(cells.offsets[c])])] + 1];
+            ++start[group_of(cells.nodes[static_cast<std::size_t>(cells.offsets[c])]) + 1];
         else
             g.other_cells.push_back(static_cast<std::int64_t>(c));
     }
-    for (std::size_t k = 0; k < num_points; ++k) start[k + 1] += start[k];
-    const auto simplices = static_cast<std::size_t>(start[num_points]);
+    for (std::size_t k = 0; k < groups; ++k) start[k + 1] += start[k];
+    const auto simplices = static_cast<std::size_t>(start[groups]);
     g.simplex_nodes.assign(simplices * corners, 0);
     g.simplex_flags.assign(simplices, 0);
     for (std::size_t c = 0; c < cells.size(); ++c) {
         if (!g.judged[c] || cells.types[c] != simplex) continue;
-        const auto nodes = cells.nodes_of(c);
-        const auto s = static_cast<std::size_t>(start[rank[static_cast<std::size_t>(nodes[0])]]++);
-        std::copy(nodes.begin(), nodes.end(), g.simplex_nodes.begin() + static_cast<std::ptrdiff_t>(s * corners));
+        const NodeId* nodes = cells.nodes.data() + cells.offsets[c];
+        const auto s = static_cast<std::size_t>(start[group_of(nodes[0])]++);
+        for (std::size_t i = 0; i < corners; ++i)
+            g.simplex_nodes[s * corners + i] = local_id[static_cast<std::size_t>(nodes[i])];
         g.simplex_flags[s] = static_cast<std::int8_t>(simplex_orientation * g.judged[c]);
     }
 }
@@ -232,26 +275,33 @@ std::size_t first_simplex(const DgHarmonicGuard& g) {
 std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g) {
     const ElementList& cells = g.mesh.cells;
     const CellType simplex = simplex_type(g.mesh.dim);
-    const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
     const auto d = static_cast<std::size_t>(g.mesh.dim);
     // Balance of +1 over -1 cells per type, as dominant_orientations counts
-    // it (cell_orientation of each cell), the simplices in fixed blocks.
-    constexpr std::int64_t block = 1 << 14;
+    // it (cell_orientation of each cell: -1 when α < 0), the simplices in
+    // fixed blocks by the kernel; a simplex whose α is not finite (products
+    // beyond the double range: cell_orientation scales its points) exactly.
+    const LocalPoints local = local_points(g, g.mesh.points);
     const auto simplices = static_cast<std::int64_t>(g.simplex_flags.size());
-    const std::int64_t blocks = (simplices + block - 1) / block;
+    const std::int64_t blocks = (simplices + pass_block - 1) / pass_block;
     std::vector<std::int64_t> parts(static_cast<std::size_t>(blocks), 0);
     parallel_for(
         blocks,
         [&](std::int64_t b) {
             std::int64_t sum = 0;
-            std::array<double, 12> coords{};
-            for (std::int64_t s = b * block; s < std::min(simplices, (b + 1) * block); ++s) {
-                const NodeId* v = g.simplex_nodes.data() + static_cast<std::size_t>(s) * corners;
-                for (std::size_t i = 0; i < corners; ++i)
+            const auto count = [&](std::int64_t s, double alpha, double) {
+                const double raw = g.simplex_flags[static_cast<std::size_t>(s)] > 0 ? alpha : -alpha;
+                if (std::isfinite(raw)) {
+                    sum += raw < 0 ? -1 : 1;
+                    return;
+                }
+                std::array<double, 12> coords{};
+                const std::span<const NodeId> nodes = simplex_at(g, s);
+                for (std::size_t i = 0; i <= d; ++i)
                     for (std::size_t k = 0; k < d; ++k)
-                        coords[i * d + k] = g.mesh.points[static_cast<std::size_t>(v[i]) * d + k];
-                sum += cell_orientation(simplex, std::span<const double>(coords.data(), corners * d), g.mesh.dim);
-            }
+                        coords[i * d + k] = local.values[static_cast<std::size_t>(nodes[i]) * d + k];
+                sum += cell_orientation(simplex, std::span<const double>(coords.data(), (d + 1) * d), g.mesh.dim);
+            };
+            for_each_simplex_key(g, local, b * pass_block, std::min(simplices, (b + 1) * pass_block), count);
             parts[static_cast<std::size_t>(b)] = sum;
         },
         1);
@@ -280,10 +330,9 @@ std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g) {
 GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double> points) {
     const auto simplices = static_cast<std::int64_t>(g.simplex_flags.size());
     const auto others = static_cast<std::int64_t>(g.other_cells.size());
-    // Fixed blocks (not one per thread): the same minimum whatever the thread count.
-    constexpr std::int64_t block = 1 << 14;
-    const std::int64_t simplex_blocks = (simplices + block - 1) / block;
-    const std::int64_t blocks = simplex_blocks + (others + block - 1) / block;
+    const LocalPoints local = local_points(g, points);
+    const std::int64_t simplex_blocks = (simplices + pass_block - 1) / pass_block;
+    const std::int64_t blocks = simplex_blocks + (others + pass_block - 1) / pass_block;
     std::vector<BlockMeasure> parts(static_cast<std::size_t>(blocks));
     const ElementList& cells = g.mesh.cells;
     parallel_for(
@@ -291,16 +340,10 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
         [&](std::int64_t b) {
             BlockMeasure m;
             if (b < simplex_blocks) {
-                const std::int64_t end = std::min(simplices, (b + 1) * block);
-                for (std::int64_t s = b * block; s < end; ++s) {
-                    if (g.mesh.dim == 3)
-                        measure_simplex<3>(g, points, s, m);
-                    else
-                        measure_simplex<2>(g, points, s, m);
-                }
+                measure_simplices(g, local, b * pass_block, std::min(simplices, (b + 1) * pass_block), m);
             } else {
-                const std::int64_t first = (b - simplex_blocks) * block;
-                for (std::int64_t i = first; i < std::min(others, first + block); ++i) {
+                const std::int64_t first = (b - simplex_blocks) * pass_block;
+                for (std::int64_t i = first; i < std::min(others, first + pass_block); ++i) {
                     const auto c = static_cast<std::size_t>(g.other_cells[static_cast<std::size_t>(i)]);
                     const double q = exact_quality(g.mesh.dim, cells.types[c], cells.nodes_of(c), points,
                                                    g.orientations[c]);
@@ -329,8 +372,7 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
     out.inverted_on_boundary = all.inverted_on_boundary;
     if (all.simplex >= 0) {
         const int orientation = g.simplex_flags[static_cast<std::size_t>(all.simplex)] > 0 ? 1 : -1;
-        out.min_quality = exact_quality(g.mesh.dim, simplex_type(g.mesh.dim), simplex_at(g, all.simplex), points,
-                                        orientation);
+        out.min_quality = exact_simplex_quality(g, local, all.simplex, orientation);
     } else if (all.cell >= 0) {
         const auto c = static_cast<std::size_t>(all.cell);
         out.min_quality = exact_quality(g.mesh.dim, cells.types[c], cells.nodes_of(c), points, g.orientations[c]);
@@ -451,7 +493,7 @@ std::string guard_summary(const DgHarmonicGuardReport& r) {
 std::size_t guard_bytes(const DgHarmonicGuard& g) {
     return bytes_of(g.mesh.points) + bytes_of(g.mesh.cells.types) + bytes_of(g.mesh.cells.offsets) +
            bytes_of(g.mesh.cells.nodes) + bytes_of(g.orientations) + bytes_of(g.judged) +
-           bytes_of(g.simplex_nodes) + bytes_of(g.simplex_flags) + bytes_of(g.other_cells) + bytes_of(g.boundary.nodes) +
+           bytes_of(g.local_order) + bytes_of(g.simplex_nodes) + bytes_of(g.simplex_flags) + bytes_of(g.other_cells) + bytes_of(g.boundary.nodes) +
            bytes_of(g.boundary.moving) + plan_bytes(g.laplacian);
 }
 

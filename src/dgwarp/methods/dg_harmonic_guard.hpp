@@ -38,14 +38,19 @@ struct DgHarmonicGuard {
     /// places it: no volume method changes it).
     std::vector<std::uint8_t> judged;
     double original_min = 0;                 // the minimum quality of the judged cells in the original
-    /// The measure's layout (built from `judged`): the judged simplices
-    /// (triangles in 2D, tetrahedra in 3D) with their nodes as in the mesh,
-    /// sorted along a Morton curve by their first node in that order, so
-    /// that one pass over them finds most points it gathers still in cache
-    /// whatever the mesh's numbering; per simplex its orientation times
-    /// `judged` (±1, or ±2 when every node is a boundary node). Judged cells
-    /// of other types are measured by index.
-    std::vector<NodeId> simplex_nodes;       // (dim + 1) per simplex
+    /// The measure's layout (built from `judged`). The guard numbers the
+    /// nodes its own way, along a Morton curve: local node k is mesh node
+    /// local_order[k], and each measure first copies the points into that
+    /// order (one pass over the nodes). The judged simplices (triangles in
+    /// 2D, tetrahedra in 3D) hold local node ids and are grouped by the
+    /// local id of their first node, 512 ids to a group (a counting sort:
+    /// one pass, stable), so that a pass over them reads the points of a few
+    /// hundred neighbouring nodes at a time, from L1 and L2, whatever the
+    /// mesh's numbering; per simplex its orientation times `judged` (±1, or
+    /// ±2 when every node is a boundary node). Judged cells of other types
+    /// are measured by index, on the mesh's numbering.
+    std::vector<NodeId> local_order;         // num_points: Morton order of the nodes
+    std::vector<NodeId> simplex_nodes;       // (dim + 1) per simplex, local node ids
     std::vector<std::int8_t> simplex_flags;  // orientation × judged
     std::vector<std::int64_t> other_cells;   // ascending
     BoundarySet boundary;                    // the plan's
@@ -72,9 +77,9 @@ LaplacianOptions guard_laplacian_options(const LaplacianOptions& laplacian, cons
 
 /// The guard's measure of one result: the judged cells it inverts and the
 /// minimum quality of the judged cells (the value cell_shape_quality gives).
-/// One pass over the cells, threaded; triangles and tetrahedra by a kernel
-/// without the generic dispatch (the minimum is found on the cube of the
-/// metric, with no cube root per cell).
+/// One pass over the cells, threaded; triangles and tetrahedra by a
+/// vectorised kernel without the generic dispatch (guard_kernel.hpp: the
+/// minimum is found on the cube of the metric, with no cube root per cell).
 struct GuardMeasure {
     std::int64_t inverted = 0;
     std::int64_t inverted_on_boundary = 0;  // of those, the cells whose every node is a boundary node
