@@ -296,6 +296,34 @@ void bind_mesh(py::module_& m) {
             "           (lines (m, 2) in 2D; triangles (m, 3) or quadrilaterals (m, 4) in 3D).\n"
             "Node ids are 0-based; node order within a cell is VTK's. Raises MeshError for an id out of\n"
             "range or a cell of the wrong dimension.")
+        .def_static(
+            "point_cloud",
+            [](py::handle points, py::handle markers) {
+                auto p = std::make_shared<PyMesh>();
+                const py::array pa = float_array(points, "points");
+                const py::ssize_t dim = pa.ndim() == 2 ? pa.shape(1) : 0;
+                if (dim != 2 && dim != 3)
+                    throw py::value_error("points must have shape (n, 2) or (n, 3), got " + shape_text(pa));
+                const auto xs = float_matrix(pa, "points", any_rows, dim);
+                p->mesh.dim = static_cast<int>(dim);
+                p->mesh.points.assign(xs.data(), xs.data() + xs.size());
+                if (!py::isinstance<py::dict>(markers)) throw py::type_error("markers must be a dict {name: node ids}");
+                for (auto item : py::reinterpret_borrow<py::dict>(markers)) {
+                    const std::string name = py::str(item.first);
+                    Marker marker{name, {}};
+                    for (NodeId n : node_ids(item.second, ("markers['" + name + "']").c_str(), any_rows))
+                        marker.elements.push_back(CellType::vertex, std::span<const NodeId>(&n, 1));
+                    p->mesh.markers.push_back(std::move(marker));
+                }
+                validate_point_cloud(p->mesh);
+                return p;
+            },
+            py::arg("points"), py::arg("markers"),
+            "A point cloud: points (n, 2) or (n, 3) float64 and markers {name: node ids}, no cells. Its\n"
+            "markers' nodes are the boundary: prepare() and Plan.deform move the other points as a mesh's\n"
+            "volume nodes (every method but laplacian, which needs cells; dg-harmonic without its guard,\n"
+            "which measures cells). Nothing measures a cloud's quality, and mesh files need cells: write\n"
+            "its points yourself.")
         .def(
             "write",
             [](const PyMesh& p, const std::filesystem::path& path, py::handle points, py::handle point_data,
@@ -326,6 +354,8 @@ void bind_mesh(py::module_& m) {
             "  gmsh_version: 41 or 22 for .msh.\n"
             "An .su2 output keeps the other zones, FFD boxes and periodic data of the file the mesh was read\n"
             "from; other formats cannot hold them (a DgwarpWarning says what is dropped).")
+        .def(py::pickle([](const PyMesh& p) { return mesh_state(p); },
+                        [](const py::tuple& state) { return mesh_from_state(state); }))
         .def("__repr__", [](const PyMesh& p) { return describe(p.mesh); });
 
     m.def(

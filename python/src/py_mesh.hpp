@@ -23,6 +23,10 @@ using MeshPtr = std::shared_ptr<const PyMesh>;
 
 void bind_mesh(pybind11::module_& m);
 
+/// A mesh's pickled state and the mesh from it (py_mesh_pickle.cpp).
+pybind11::tuple mesh_state(const PyMesh& mesh);
+std::shared_ptr<PyMesh> mesh_from_state(const pybind11::tuple& state);
+
 /// `points` (None: the mesh's own) checked as the mesh's new coordinates:
 /// float64, C-contiguous, num_points × dim, finite. Returns a span over it
 /// (valid while `keep` lives).

@@ -17,6 +17,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/methods/derivative.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/run/report_json.hpp"
 #include "errors.hpp"
@@ -53,7 +54,7 @@ std::vector<std::string> marker_list(py::handle obj, const char* what) {
 /// shared-node rule and tolerance of such a file); or, for a motion, as that
 /// motion classifies it.
 ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle static_markers, SharedNodeRule rule,
-                          double tolerance, SharedNodeRule& rule_used) {
+                          double tolerance, SharedNodeRule& rule_used, double& tolerance_used) {
     tolerance = shared_tolerance_arg(tolerance);
     MotionSpec spec;
     if (py::isinstance<PyMotion>(moving) || py::isinstance<py::dict>(moving)) {
@@ -84,6 +85,7 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
         spec.source = "prepare";
     }
     rule_used = spec.shared_nodes;
+    tolerance_used = spec.shared_tolerance;
     ResolvedBoundary resolved;
     {
         py::gil_scoped_release release;
@@ -113,7 +115,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     p->options = method_options(method, kwargs, "prepare");
     p->mesh = mesh;
     p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
-                           p->shared_nodes);
+                           p->shared_nodes, p->shared_tolerance);
     ProgressBridge bridge(progress);
     bridge.run([&] {
         p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells, p->boundary.boundary, p->options,
@@ -123,16 +125,16 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     return p;
 }
 
-std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::shared_ptr<PyMesh> mesh,
-                                       py::handle moving, py::handle static_markers, const std::string& shared_nodes,
-                                       double shared_tolerance) {
-    if (!mesh) throw py::type_error("load_plan(): mesh must be a dgwarp.Mesh, got None");
+/// The PyPlan of a plan read from a file (or its bytes) for `mesh`, as
+/// load_plan documents it: the moving markers, unless given, those all of
+/// whose nodes the plan moves; checked to fit the mesh; a DG-harmonic plan's
+/// guard built again from the mesh's cells.
+std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh> mesh, py::handle moving,
+                                               py::handle static_markers, const std::string& shared_nodes,
+                                               double shared_tolerance) {
     auto p = std::make_shared<PyPlan>();
     p->mesh = mesh;
-    {
-        py::gil_scoped_release release;
-        p->plan = load_plan(path);
-    }
+    p->plan = std::move(plan);
     const std::vector<NodeId>* nodes = nullptr;
     const std::vector<std::uint8_t>* flags = nullptr;
     if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) {
@@ -158,7 +160,7 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
         moving_names = names;
     }
     p->boundary = classify(*mesh, moving_names, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
-                           p->shared_nodes);
+                           p->shared_nodes, p->shared_tolerance);
     {
         py::gil_scoped_release release;
         if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) check_plan_fits(*d, mesh->mesh.points, p->boundary.boundary);
@@ -171,6 +173,82 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
         }
     }
     warn_plan(*p);
+    return p;
+}
+
+std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::shared_ptr<PyMesh> mesh,
+                                       py::handle moving, py::handle static_markers, const std::string& shared_nodes,
+                                       double shared_tolerance) {
+    if (!mesh) throw py::type_error("load_plan(): mesh must be a dgwarp.Mesh, got None");
+    Plan plan;
+    {
+        py::gil_scoped_release release;
+        plan = load_plan(path);
+    }
+    return plan_from_file_content(std::move(plan), std::move(mesh), moving, static_markers, shared_nodes,
+                                  shared_tolerance);
+}
+
+// Pickling (docs/PYTHON.md, "Pickling"): a plan is its mesh (pickled with
+// it), its method, options and boundary classification, and, for the
+// methods whose plans can be saved (dg-idw, dg-harmonic), its plan file's
+// bytes, read back as load_plan reads a file. The other methods' plans are
+// prepared again from the same inputs when unpickled: their preparation is
+// deterministic, so the plan deforms to the same bits either way.
+constexpr const char* plan_state_tag = "dgwarp.Plan";
+constexpr int plan_state_version = 1;
+
+py::tuple plan_state(const PyPlan& p) {
+    const Method method = plan_method(p.plan);
+    py::object bytes = py::none();
+    if (plan_can_be_saved(p.plan)) {
+        std::vector<std::byte> file;
+        {
+            py::gil_scoped_release release;
+            file = plan_file_bytes(p.plan);
+        }
+        bytes = py::bytes(reinterpret_cast<const char*>(file.data()), file.size());
+    }
+    return py::make_tuple(plan_state_tag, plan_state_version, std::const_pointer_cast<PyMesh>(p.mesh),
+                          std::string(method_name(method)), options_dict(method, p.options),
+                          p.boundary.moving_markers, p.boundary.static_markers,
+                          std::string(shared_nodes_name(p.shared_nodes)), p.shared_tolerance, bytes);
+}
+
+std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
+    if (t.size() != 10 || !py::isinstance<py::str>(t[0]) || t[0].cast<std::string>() != plan_state_tag)
+        throw py::value_error("not the pickled state of a dgwarp.Plan");
+    if (t[1].cast<int>() != plan_state_version)
+        throw py::value_error("a dgwarp.Plan pickled by another version of dgwarp (state version " +
+                              py::str(t[1]).cast<std::string>() + ", this one reads " +
+                              std::to_string(plan_state_version) + "): pickle it again");
+    auto mesh = t[2].cast<std::shared_ptr<PyMesh>>();
+    const std::string method = t[3].cast<std::string>();
+    const py::kwargs options = py::kwargs(t[4].cast<py::dict>());
+    const py::list moving = t[5].cast<py::list>(), fixed = t[6].cast<py::list>();
+    const std::string shared_nodes = t[7].cast<std::string>();
+    const double tolerance = t[8].cast<double>();
+    if (t[9].is_none()) return prepare_plan(mesh, moving, fixed, method, shared_nodes, tolerance, py::none(), options);
+    const std::string bytes = t[9].cast<std::string>();
+    Plan plan;
+    {
+        py::gil_scoped_release release;
+        plan = load_plan_bytes(std::as_bytes(std::span(bytes.data(), bytes.size())), "a pickled dgwarp.Plan");
+    }
+    if (method_name(plan_method(plan)) != method)
+        throw py::value_error("a pickled dgwarp.Plan: its plan bytes are a " +
+                              std::string(method_name(plan_method(plan))) + " plan, its state says " + method);
+    // The options the plan file does not hold (dg-harmonic's guard bar) come
+    // from the state; those it holds are the plan's own.
+    const MethodOptions given = method_options(plan_method(plan), options, "a pickled dgwarp.Plan");
+    auto p = plan_from_file_content(std::move(plan), mesh, moving, fixed, shared_nodes, tolerance);
+    const double redo_below = given.dg_harmonic.redo_below;
+    p->options = given;
+    if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) p->options.dg_idw = d->options;
+    if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
+        p->options.dg_harmonic = h->options;
+        p->options.dg_harmonic.redo_below = redo_below;
+    }
     return p;
 }
 
@@ -267,6 +345,49 @@ void bind_plan(py::module_& m) {
              "           marker, count, node, element, value where they apply). It measures every cell.\n"
              "The GIL is released while the step runs. Raises InvalidResultError (ValueError) when the\n"
              "method cannot move the mesh validly (DGM without dgm_substep).")
+        .def(
+            "deform_derivative",
+            [](const PyPlan& p, py::handle direction, py::handle out) {
+                const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
+                const auto rows = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
+                const auto v = float_matrix(direction, "direction",
+                                            static_cast<py::ssize_t>(p.boundary.boundary.nodes.size()), dim);
+                py::array_t<double> result = out.is_none() ? py::array_t<double>({rows, dim})
+                                                           : output_matrix(out, "out", rows, dim);
+                {
+                    py::gil_scoped_release release;
+                    deform_derivative(p.plan, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())),
+                                      std::span<double>(result.mutable_data(), static_cast<std::size_t>(result.size())));
+                }
+                return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+            },
+            py::arg("direction"), py::kw_only(), py::arg("out") = py::none(),
+            "J @ direction, J = d(points) / d(boundary points) of a translation-only step (exact: such a\n"
+            "step is linear in the translations). direction: (len(boundary_nodes), dim), a move of each\n"
+            "boundary node in the order of boundary_nodes (static nodes' rows move nothing); returns\n"
+            "(num_points, dim). dg-idw and dg-harmonic (its one pass: the guard's redo and the repair are\n"
+            "not differentiated); other methods raise Error. One pass, single-threaded, GIL released.")
+        .def(
+            "deform_derivative_transpose",
+            [](const PyPlan& p, py::handle weights, py::handle out) {
+                const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
+                const auto rows = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
+                const auto nb = static_cast<py::ssize_t>(p.boundary.boundary.nodes.size());
+                const auto w = float_matrix(weights, "weights", rows, dim);
+                py::array_t<double> result = out.is_none() ? py::array_t<double>({nb, dim})
+                                                           : output_matrix(out, "out", nb, dim);
+                {
+                    py::gil_scoped_release release;
+                    deform_derivative_transpose(
+                        p.plan, std::span<const double>(w.data(), static_cast<std::size_t>(w.size())),
+                        std::span<double>(result.mutable_data(), static_cast<std::size_t>(result.size())));
+                }
+                return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+            },
+            py::arg("weights"), py::kw_only(), py::arg("out") = py::none(),
+            "J.T @ weights (IDWarp's warpDeriv): weights (num_points, dim), e.g. an objective's gradient\n"
+            "with respect to the volume points; returns (len(boundary_nodes), dim), its gradient with\n"
+            "respect to the boundary points (zero rows for static nodes). As deform_derivative.")
         .def("save", [](const PyPlan& p, const std::filesystem::path& path) {
                  // As `dgwarp prepare -o`: a plan file's name says what it is.
                  if (lower_case_extension(path) != ".plan")
@@ -338,6 +459,8 @@ void bind_plan(py::module_& m) {
             },
             "What the plan holds (graph simplices, volume nodes outside the graph's hull, shared graph vertices,\n"
             "coarse points) and how long each prepare phase took (empty for a loaded plan).")
+        .def(py::pickle([](const PyPlan& p) { return plan_state(p); },
+                        [](const py::tuple& state) { return plan_from_state(state); }))
         .def("__repr__", [](const PyPlan& p) {
             std::string moving;
             for (const auto& name : p.boundary.moving_markers) moving += (moving.empty() ? "" : ", ") + name;

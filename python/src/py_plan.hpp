@@ -19,6 +19,7 @@ struct PyPlan {
     MeshPtr mesh;                // the mesh it was prepared for (immutable, shared)
     ResolvedBoundary boundary;   // markers moving / static, boundary nodes, what resolve_frame reuses
     SharedNodeRule shared_nodes = SharedNodeRule::moving_wins;
+    double shared_tolerance = 0;  // as given to the classification (0: the default)
     MethodOptions options;       // as used (a loaded plan's own)
     Plan plan;
 

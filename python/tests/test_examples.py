@@ -29,6 +29,21 @@ def test_shape_optimisation_loop_runs_its_steps(tmp_path):
     assert "20 deformations" in out and "best design" in out
 
 
+@pytest.mark.parametrize("method", ["dg-idw", "dg-harmonic"])
+def test_adjoint_gradient_matches_finite_differences_and_descends(tmp_path, method):
+    out = run_example("adjoint_gradient.py", "--steps", 3, "--method", method, cwd=tmp_path)
+    assert float(out.split("largest relative difference ")[1].split(")")[0]) < 1e-6
+    f = [float(line.split("f = ")[1].split(",")[0]) for line in out.splitlines() if line.startswith("step ")]
+    assert len(f) == 3 and f[0] > f[1] > f[2]
+
+
+def test_point_cloud_writes_its_points(tmp_path):
+    out = run_example("point_cloud.py", "--angle", 10, "-o", "c.csv", cwd=tmp_path)
+    rows = (tmp_path / "c.csv").read_text().splitlines()
+    assert rows[0] == "x,y,new_x,new_y" and len(rows) == 1 + 3068
+    assert "the box 0.0" in out
+
+
 def test_quality_histogram_writes_a_png(tmp_path):
     pytest.importorskip("matplotlib")
     run_example("quality_histogram.py", "--methods", "dg-idw", "-o", "q.png", cwd=tmp_path)

@@ -95,6 +95,28 @@ TEST(Mesh, ValidateRejectsAMeshWithoutCells) {
     }
 }
 
+TEST(Mesh, APointCloudHasNoCellsAndMarkersOfNodes) {
+    Mesh m = unit_square_two_triangles();
+    m.cells = {};
+    m.markers.clear();
+    const NodeId corner = 0, far = 2;
+    m.markers.push_back({"a", {}});
+    m.markers.back().elements.push_back(CellType::vertex, std::span<const NodeId>(&corner, 1));
+    if (m.dim == 2) m.markers.back().elements.push_back(CellType::line, std::vector<NodeId>{1, 2});
+    EXPECT_NO_THROW(validate_point_cloud(m));
+    EXPECT_THROW(validate(m), MeshError);  // a mesh needs cells
+    m.dim = 3;  // vertex markers in 3D too
+    m.points = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    m.markers.back().elements = {};
+    m.markers.back().elements.push_back(CellType::vertex, std::span<const NodeId>(&far, 1));
+    EXPECT_NO_THROW(validate_point_cloud(m));
+    const NodeId out_of_range = 4;
+    m.markers.back().elements.push_back(CellType::vertex, std::span<const NodeId>(&out_of_range, 1));
+    EXPECT_THROW(validate_point_cloud(m), MeshError);
+    Mesh with_cells = unit_square_two_triangles();
+    EXPECT_THROW(validate_point_cloud(with_cells), MeshError);  // a cloud has none
+}
+
 TEST(Mesh, BoundingBoxAndTypeCounts) {
     Mesh m = unit_square_two_triangles();
     m.points[2] = 3.5;   // node 1 x

@@ -82,7 +82,7 @@ constexpr std::uint64_t version_at = 8, dim_at = 12, options_at = 40, shared_at 
 
 }  // namespace
 
-void save_dg_harmonic(const std::filesystem::path& path, const DgHarmonicPlan& plan) {
+void write_dg_harmonic(std::ostream& out, const DgHarmonicPlan& plan) {
     Header h;
     h.dim = static_cast<std::uint32_t>(plan.dim);
     h.num_points = plan.mesh.num_points;
@@ -100,7 +100,7 @@ void save_dg_harmonic(const std::filesystem::path& path, const DgHarmonicPlan& p
     header.insert(header.end(), reinterpret_cast<const std::byte*>(dg_harmonic_magic.data()),
                   reinterpret_cast<const std::byte*>(dg_harmonic_magic.data()) + dg_harmonic_magic.size());
     visit_header(h, [&](const auto& v) { put(header, v); });
-    write_plan_file(path, header, [&](auto&& f) { visit_arrays(plan, f); });
+    write_plan_stream(out, header, [&](auto&& f) { visit_arrays(plan, f); });
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 
 #include "dgwarp/core/atomic_write.hpp"
@@ -112,7 +113,8 @@ std::array<std::byte, header_bytes> encode_header(Header h) {
 
 }  // namespace
 
-void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) {
+namespace {
+void write_dg_idw(std::ostream& out, const DgIdwPlan& plan) {
     Header h;
     h.dim = static_cast<std::uint32_t>(plan.dim);
     h.weighting = static_cast<std::uint32_t>(plan.options.weighting);
@@ -130,7 +132,12 @@ void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) 
     int a = 0;
     visit_arrays(plan, [&](const auto& v) { h.counts[a++] = v.size(); });
     const auto header = encode_header(h);
-    plan_detail::write_plan_file(path, header, [&](auto&& f) { visit_arrays(plan, f); });
+    plan_detail::write_plan_stream(out, header, [&](auto&& f) { visit_arrays(plan, f); });
+}
+}  // namespace
+
+void save_dg_idw_plan(const std::filesystem::path& path, const DgIdwPlan& plan) {
+    write_file_atomically(path, [&](std::ostream& out) { write_dg_idw(out, plan); });
 }
 
 namespace {
@@ -254,11 +261,35 @@ std::vector<std::byte> with_recomputed_plan_checksum(std::span<const std::byte> 
     return plan_detail::with_recomputed_checksum(bytes, header_bytes, sizes);
 }
 
-void save_plan(const std::filesystem::path& path, const Plan& plan) {
-    if (const auto* p = std::get_if<DgIdwPlan>(&plan)) return save_dg_idw_plan(path, *p);
-    if (const auto* p = std::get_if<DgHarmonicPlan>(&plan)) return plan_detail::save_dg_harmonic(path, *p);
+namespace {
+[[noreturn]] void refuse_to_save(const Plan& plan) {
     throw Error(std::string("plans of ") + std::string(method_name(plan_method(plan))) +
                 " cannot be saved (only dg-idw and dg-harmonic plans can)");
+}
+
+/// Writes any savable plan's file to `out`; throws Error for the others.
+void write_any(std::ostream& out, const Plan& plan) {
+    if (const auto* p = std::get_if<DgIdwPlan>(&plan)) return write_dg_idw(out, *p);
+    if (const auto* p = std::get_if<DgHarmonicPlan>(&plan)) return plan_detail::write_dg_harmonic(out, *p);
+    refuse_to_save(plan);
+}
+}  // namespace
+
+bool plan_can_be_saved(const Plan& plan) {
+    return std::holds_alternative<DgIdwPlan>(plan) || std::holds_alternative<DgHarmonicPlan>(plan);
+}
+
+void save_plan(const std::filesystem::path& path, const Plan& plan) {
+    if (!plan_can_be_saved(plan)) refuse_to_save(plan);  // before a file is made
+    write_file_atomically(path, [&](std::ostream& out) { write_any(out, plan); });
+}
+
+std::vector<std::byte> plan_file_bytes(const Plan& plan) {
+    std::ostringstream out(std::ios::binary);
+    write_any(out, plan);
+    const std::string text = std::move(out).str();
+    const auto* first = reinterpret_cast<const std::byte*>(text.data());
+    return std::vector<std::byte>(first, first + text.size());
 }
 
 namespace {

@@ -60,6 +60,13 @@ DgIdwPlan load_dg_idw_plan(const std::filesystem::path& path, std::span<const do
 /// method whose plans cannot be saved, IoError when the file cannot be written.
 void save_plan(const std::filesystem::path& path, const Plan& plan);
 
+/// Whether save_plan can save plans of this kind (DG-IDW and DG-harmonic).
+bool plan_can_be_saved(const Plan& plan);
+
+/// The bytes save_plan would write (a whole plan file: load_plan_bytes reads
+/// them back). Throws Error for a method whose plans cannot be saved.
+std::vector<std::byte> plan_file_bytes(const Plan& plan);
+
 /// A plan file of either kind (told apart by its magic), checked as
 /// load_dg_idw_plan checks DG-IDW plans; with points and boundary, also
 /// check_plan_fits (MeshError for another mesh or boundary set).

@@ -56,19 +56,17 @@ void get(std::span<const std::byte> bytes, std::size_t& at, T& v) {
 }
 
 /// Writes `header` (magic and fields, ending with the arrays' element counts),
-/// the arrays visit_arrays(f) passes to f, and the checksum, atomically.
+/// the arrays visit_arrays(f) passes to f, and the checksum to `out`.
 template <class VisitArrays>
-void write_plan_file(const std::filesystem::path& path, std::span<const std::byte> header, VisitArrays&& visit_arrays) {
-    write_file_atomically(path, [&](std::ostream& out) {
-        out.write(reinterpret_cast<const char*>(header.data()), static_cast<std::streamsize>(header.size()));
-        std::uint64_t checksum = hash64(header);
-        visit_arrays([&](const auto& v) {
-            const auto bytes = std::as_bytes(std::span(v));
-            out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-            checksum = hash64(bytes, checksum);
-        });
-        out.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+void write_plan_stream(std::ostream& out, std::span<const std::byte> header, VisitArrays&& visit_arrays) {
+    out.write(reinterpret_cast<const char*>(header.data()), static_cast<std::streamsize>(header.size()));
+    std::uint64_t checksum = hash64(header);
+    visit_arrays([&](const auto& v) {
+        const auto bytes = std::as_bytes(std::span(v));
+        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        checksum = hash64(bytes, checksum);
     });
+    out.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
 }
 
 /// Reads the arrays after a header of `header.size()` bytes whose last
@@ -136,7 +134,7 @@ void check_boundary_arrays(const std::filesystem::path& path, const BoundaryArra
 /// DG-harmonic plan files (dg_harmonic_plan_file.cpp): their magic, writer,
 /// loader and checksum fixer.
 inline constexpr std::array<char, 8> dg_harmonic_magic{'D', 'G', 'W', 'H', 'A', 'R', 'M', '\0'};
-void save_dg_harmonic(const std::filesystem::path& path, const DgHarmonicPlan& plan);
+void write_dg_harmonic(std::ostream& out, const DgHarmonicPlan& plan);
 DgHarmonicPlan load_dg_harmonic(const PlanSource& source);
 std::vector<std::byte> with_recomputed_dg_harmonic_checksum(std::span<const std::byte> bytes);
 

@@ -83,7 +83,7 @@ BoundingBox bounding_box(int dim, std::span<const double> points, std::span<cons
 namespace {
 
 void check_elements(const ElementList& list, std::int64_t num_points, int expected_dim,
-                    const std::string& what, const std::string& marker) {
+                    const std::string& what, const std::string& marker, bool vertices = false) {
     if (list.offsets.size() != list.size() + 1 || list.offsets.back() != static_cast<std::int64_t>(list.nodes.size()))
         throw MeshError(what + ": element offsets do not match the node list", marker);
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -93,7 +93,7 @@ void check_elements(const ElementList& list, std::int64_t num_points, int expect
             throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) +
                                 ") has " + std::to_string(nodes.size()) + " nodes",
                             marker, static_cast<std::int64_t>(i));
-        if (cell_dimension(t) != expected_dim && !(expected_dim == 1 && t == CellType::vertex))
+        if (cell_dimension(t) != expected_dim && !((expected_dim == 1 || vertices) && t == CellType::vertex))
             throw MeshError(what + " element " + std::to_string(i) + " is a " + std::string(cell_type_name(t)) +
                                 ", expected an element of dimension " + std::to_string(expected_dim),
                             marker, static_cast<std::int64_t>(i));
@@ -105,21 +105,21 @@ void check_elements(const ElementList& list, std::int64_t num_points, int expect
     }
 }
 
-}  // namespace
 
-void validate(const Mesh& mesh) {
+void validate_as(const Mesh& mesh, bool point_cloud) {
     if (mesh.dim != 2 && mesh.dim != 3)
         throw MeshError("mesh dimension is " + std::to_string(mesh.dim) + ", expected 2 or 3");
     if (mesh.points.size() % static_cast<std::size_t>(mesh.dim) != 0)
         throw MeshError("point array length is not a multiple of the dimension");
     // Without cells nothing can be measured, deformed or written so that a reader takes it back.
-    if (mesh.cells.empty())
+    if (!point_cloud && mesh.cells.empty())
         throw MeshError("the mesh has no cells (no " + std::to_string(mesh.dim) +
                         "D elements); dgwarp needs a surface or volume mesh");
+    if (point_cloud && !mesh.cells.empty()) throw MeshError("a point cloud has no cells");
     const auto n = static_cast<std::int64_t>(mesh.num_points());
     check_elements(mesh.cells, n, mesh.dim, "cell", "");
     for (const Marker& m : mesh.markers)
-        check_elements(m.elements, n, mesh.dim - 1, "marker '" + m.name + "'", m.name);
+        check_elements(m.elements, n, mesh.dim - 1, "marker '" + m.name + "'", m.name, point_cloud);
     // A motion names markers: two of one name would move (or fix) both.
     for (std::size_t i = 0; i < mesh.markers.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
@@ -129,5 +129,10 @@ void validate(const Mesh& mesh) {
                                     "'; marker names must be unique (a motion names markers)",
                                 mesh.markers[i].name);
 }
+}  // namespace
+
+void validate(const Mesh& mesh) { validate_as(mesh, false); }
+
+void validate_point_cloud(const Mesh& mesh) { validate_as(mesh, true); }
 
 }  // namespace dgwarp

@@ -91,4 +91,9 @@ BoundingBox bounding_box(int dim, std::span<const double> points, std::span<cons
 /// Throws MeshError naming the first bad cell, marker element or marker.
 void validate(const Mesh& mesh);
 
+/// The same for a point cloud: no cells, markers of any boundary elements or
+/// of single nodes (vertex elements, in 2D and 3D). Methods that need no
+/// cells deform it (all but laplacian); nothing measures its quality.
+void validate_point_cloud(const Mesh& mesh);
+
 }  // namespace dgwarp

@@ -11,6 +11,7 @@
 #include "dgwarp/core/step_kernel.hpp"
 #include "dgwarp/methods/boundary_mover.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/dg_harmonic_solve.hpp"
 #include "dgwarp/methods/dg_harmonic_step.hpp"
 #include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
@@ -60,55 +61,7 @@ Active boundary_values(const DgHarmonicPlan& plan, const BoundaryMotion& motion,
     return active;
 }
 
-// Solves one system of `f` for the interior vertices' components
-// [Offset, Offset + C) of `values` (num_vertices × K; the boundary vertices'
-// rows are the data).
-template <int K, int Offset, int C>
-void solve_interior(const HarmonicFactors& f, const HarmonicFactors::System& sys, std::int32_t first_unknown,
-                    double* values) {
-    const std::int64_t n = f.num_unknowns();
-    if (n == 0) return;
-    std::vector<double> y(static_cast<std::size_t>(n) * C, 0.0);
-    // Right-hand side B g, in the factor's order.
-    for (std::int64_t i = 0; i < n; ++i) {
-        double* r = y.data() + static_cast<std::size_t>(f.perm[i]) * C;
-        for (std::int64_t p = f.coupling_start[i]; p < f.coupling_start[i + 1]; ++p) {
-            const double w = sys.coupling_weight[p];
-            const double* g = values + static_cast<std::size_t>(f.coupling_vertex[p]) * K + Offset;
-            for (int k = 0; k < C; ++k) r[k] += w * g[k];
-        }
-    }
-    // L z = y, z /= d, L^T x = z: all components at once, one pass over L each way.
-    const std::int64_t* start = f.l_start.data();
-    const std::int32_t* row = f.l_row.data();
-    const double* lv = sys.l_value.data();
-    for (std::int64_t j = 0; j < n; ++j) {
-        const double* yj = y.data() + j * C;
-        for (std::int64_t p = start[j]; p < start[j + 1]; ++p) {
-            double* yi = y.data() + static_cast<std::int64_t>(row[p]) * C;
-            const double l = lv[p];
-            for (int k = 0; k < C; ++k) yi[k] -= l * yj[k];
-        }
-    }
-    for (std::int64_t j = 0; j < n; ++j) {
-        const double inv = 1.0 / sys.d[j];
-        for (int k = 0; k < C; ++k) y[j * C + k] *= inv;
-    }
-    for (std::int64_t j = n - 1; j >= 0; --j) {
-        double* yj = y.data() + j * C;
-        double acc[C];
-        for (int k = 0; k < C; ++k) acc[k] = yj[k];
-        for (std::int64_t p = start[j]; p < start[j + 1]; ++p) {
-            const double* yi = y.data() + static_cast<std::int64_t>(row[p]) * C;
-            const double l = lv[p];
-            for (int k = 0; k < C; ++k) acc[k] -= l * yi[k];
-        }
-        for (int k = 0; k < C; ++k) yj[k] = acc[k];
-    }
-    for (std::int64_t i = 0; i < n; ++i)
-        std::copy_n(y.data() + static_cast<std::size_t>(f.perm[i]) * C, C,
-                    values + static_cast<std::size_t>(first_unknown + i) * K + Offset);
-}
+using harmonic_detail::solve_interior;
 
 // solve_interior for components [Offset, Offset + C), on two threads when
 // there are two: each solves half of the components (its own pass over the
