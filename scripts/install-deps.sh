@@ -4,7 +4,8 @@
 # and the MPI tests (docs/MPI.md); without it they are skipped. strace: the MPI
 # test that each process opens only its own processor folder of an OpenFOAM case.
 # python3-venv, python3-pip, python3-setuptools, python3-wheel: `pip install .`
-# of the Python package (docs/PYTHON.md) and its test.
+# of the Python package (docs/PYTHON.md) and its test. python3-mpi4py: its
+# prepare(comm=...).
 # libsuitesparse-dev: CHOLMOD, the laplacian method's 3D factorisation;
 # libopenblas0-serial: its dense blocks (3.5 x the reference BLAS; serial, so
 # results do not depend on a BLAS thread count).
@@ -20,7 +21,7 @@ packages=(
   libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
   libcgns-dev cgns-convert
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
-  python3-venv python3-pip python3-setuptools python3-wheel
+  python3-venv python3-pip python3-setuptools python3-wheel python3-mpi4py
   libgtest-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin strace
 )

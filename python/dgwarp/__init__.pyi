@@ -56,6 +56,8 @@ class Marker:
     def elements(self) -> dict[str, IdArray]: ...
 
 class Mesh:
+    @staticmethod
+    def point_cloud(points: npt.ArrayLike, markers: Mapping[str, npt.ArrayLike]) -> Mesh: ...
     def __getstate__(self) -> tuple[Any, ...]: ...
     def __setstate__(self, state: tuple[Any, ...]) -> None: ...
     @property
@@ -176,6 +178,8 @@ def prepare(
     shared_nodes: Literal["moving_wins", "static_wins"] = "moving_wins",
     shared_tolerance: float = 0.0,
     progress: Progress | None = None,
+    comm: Any | None = None,
+    global_ids: npt.ArrayLike | None = None,
     a_translation: float = ...,
     a_rotation: float = ...,
     length_scale: float | Literal["auto"] = ...,

@@ -6,12 +6,14 @@
 #include "dgwarp/core/version.hpp"
 #include "errors.hpp"
 #include "py_mesh.hpp"
+#include "py_mpi.hpp"
 
 namespace py = pybind11;
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "dgwarp's C++ library (import the dgwarp package, not this module)";
     m.attr("__version__") = std::string(dgwarp::version());
+    m.attr("_has_mpi") = dgwarp::python::has_mpi();  // prepare(comm=...) available
     dgwarp::python::bind_errors(m);
     dgwarp::python::bind_mesh(m);
     dgwarp::python::bind_quality(m);

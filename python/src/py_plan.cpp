@@ -97,18 +97,19 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
 
 /// What `dgwarp deform` warns about a plan (volume nodes outside the graph's hull).
 void warn_plan(const PyPlan& p) {
-    const PlanSummary s = plan_summary(p.plan);
+    const PlanSummary s = plan_summary(plan_of(p));
     if (s.outside_hull == 0) return;
     warn(std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
          " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
-         std::string(method_name(plan_method(p.plan))) +
+         std::string(method_name(plan_method(plan_of(p)))) +
          " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary (far "
          "field, walls), it should be a marker of the mesh");
 }
 
 std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle moving, py::handle static_markers,
                                      const std::string& method_name_arg, const std::string& shared_nodes,
-                                     double shared_tolerance, py::object progress, const py::kwargs& kwargs) {
+                                     double shared_tolerance, py::object progress, py::object comm,
+                                     py::object global_ids, const py::kwargs& kwargs) {
     if (!mesh) throw py::type_error("prepare(): mesh must be a dgwarp.Mesh, got None");
     const Method method = method_arg(method_name_arg);
     auto p = std::make_shared<PyPlan>();
@@ -116,6 +117,15 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     p->mesh = mesh;
     p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
                            p->shared_nodes, p->shared_tolerance);
+    if (!comm.is_none()) {
+        // This process's part, prepared with the others (py_mpi.hpp).
+        if (!progress.is_none()) throw py::value_error("prepare(comm=...) takes no progress callback");
+        p->distributed = prepare_distributed_plan(comm, method, mesh->mesh.dim, mesh->mesh.points, global_ids,
+                                                  p->boundary.boundary, p->options);
+        p->comm = comm;
+        return p;
+    }
+    if (!global_ids.is_none()) throw py::value_error("global_ids is for prepare(comm=...)");
     ProgressBridge bridge(progress);
     bridge.run([&] {
         p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells, p->boundary.boundary, p->options,
@@ -199,6 +209,8 @@ constexpr const char* plan_state_tag = "dgwarp.Plan";
 constexpr int plan_state_version = 1;
 
 py::tuple plan_state(const PyPlan& p) {
+    if (p.distributed)
+        throw py::type_error("a plan prepared with comm= does not pickle (each process prepares its own, together)");
     const Method method = plan_method(p.plan);
     py::object bytes = py::none();
     if (plan_can_be_saved(p.plan)) {
@@ -228,7 +240,8 @@ std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
     const py::list moving = t[5].cast<py::list>(), fixed = t[6].cast<py::list>();
     const std::string shared_nodes = t[7].cast<std::string>();
     const double tolerance = t[8].cast<double>();
-    if (t[9].is_none()) return prepare_plan(mesh, moving, fixed, method, shared_nodes, tolerance, py::none(), options);
+    if (t[9].is_none()) return prepare_plan(mesh, moving, fixed, method, shared_nodes, tolerance, py::none(), py::none(), py::none(),
+                                            options);
     const std::string bytes = t[9].cast<std::string>();
     Plan plan;
     {
@@ -299,11 +312,21 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     // As the CLI's frames (run/deform_frame.hpp): no guard where the boundary motion folds faces.
     const MethodOptions options = step_options(p.options, folded_faces);
     Stopwatch sw;
-    bridge.run([&] { report.step = deform(p.plan, mesh.points, boundary_motion, xs, options, bridge.function()); });
+    if (p.distributed) {
+        // Collective: every process steps together; the repair and the report measure whole cells, which
+        // a process's part does not have.
+        if ((!untangle.is_none() && py::isinstance<py::bool_>(untangle) && untangle.cast<bool>()) || want_report ||
+            !progress.is_none())
+            throw py::value_error("a plan prepared with comm= steps without untangle, report or progress");
+        py::gil_scoped_release release;
+        report.step = deform_distributed_plan(*p.distributed, mesh.points, boundary_motion, xs);
+    } else {
+        bridge.run([&] { report.step = deform(p.plan, mesh.points, boundary_motion, xs, options, bridge.function()); });
+    }
     report.step_seconds = sw.lap();
     report.warnings = std::move(warnings);
     for (Warning& w : step_warnings(report.step)) report.warnings.push_back(std::move(w));
-    finish_step(p, xs, untangle, untangle_target, want_report, report);
+    if (!p.distributed) finish_step(p, xs, untangle, untangle_target, want_report, report);
     warn_all(report.warnings);
     py::object points = out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
     if (!want_report) return points;
@@ -350,6 +373,7 @@ void bind_plan(py::module_& m) {
             [](const PyPlan& p, py::handle direction, py::handle out) {
                 const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
                 const auto rows = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
+                if (p.distributed) throw py::value_error("deform_derivative: not for a plan prepared with comm=");
                 const auto v = float_matrix(direction, "direction",
                                             static_cast<py::ssize_t>(p.boundary.boundary.nodes.size()), dim);
                 py::array_t<double> result = out.is_none() ? py::array_t<double>({rows, dim})
@@ -373,6 +397,8 @@ void bind_plan(py::module_& m) {
                 const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
                 const auto rows = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
                 const auto nb = static_cast<py::ssize_t>(p.boundary.boundary.nodes.size());
+                if (p.distributed)
+                    throw py::value_error("deform_derivative_transpose: not for a plan prepared with comm=");
                 const auto w = float_matrix(weights, "weights", rows, dim);
                 py::array_t<double> result = out.is_none() ? py::array_t<double>({nb, dim})
                                                            : output_matrix(out, "out", nb, dim);
@@ -392,6 +418,7 @@ void bind_plan(py::module_& m) {
                  // As `dgwarp prepare -o`: a plan file's name says what it is.
                  if (lower_case_extension(path) != ".plan")
                      throw py::value_error("save: a plan file's name ends in .plan, got " + path.string());
+                 if (p.distributed) throw py::value_error("save: not for a plan prepared with comm=");
                  py::gil_scoped_release release;
                  save_plan(path, p.plan);
              },
@@ -399,9 +426,9 @@ void bind_plan(py::module_& m) {
              "Writes the plan to `path`, a name ending in .plan (atomically; DG-IDW and DG-harmonic plans).\n"
              "dgwarp.load_plan(path, mesh)\n"
              "reads it back; so does `dgwarp deform --plan`.")
-        .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(p.plan))); },
+        .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(plan_of(p)))); },
                                "The method's name ('dg-idw', 'dgm', 'idw', 'rbf', 'dg-harmonic').")
-        .def_property_readonly("options", [](const PyPlan& p) { return options_dict(plan_method(p.plan), p.options); },
+        .def_property_readonly("options", [](const PyPlan& p) { return options_dict(plan_method(plan_of(p)), p.options); },
                                "The method's options as used (keyword-argument names).")
         .def_property_readonly("mesh", [](const PyPlan& p) { return std::const_pointer_cast<PyMesh>(p.mesh); },
                                "The mesh the plan was prepared for.")
@@ -440,12 +467,13 @@ void bind_plan(py::module_& m) {
                                "The markers that stay, in mesh order.")
         .def_property_readonly("shared_nodes", [](const PyPlan& p) { return std::string(shared_nodes_name(p.shared_nodes)); },
                                "What nodes on a moving and a static marker do: 'moving_wins' or 'static_wins'.")
-        .def_property_readonly("memory_bytes", [](const PyPlan& p) { return plan_memory_bytes(p.plan); },
+        .def_property_readonly("memory_bytes", [](const PyPlan& p) {
+            return p.distributed ? distributed_bytes(*p.distributed) : plan_memory_bytes(p.plan); },
                                "Bytes held by the plan's arrays.")
         .def_property_readonly(
             "summary",
             [](const PyPlan& p) {
-                const PlanSummary s = plan_summary(p.plan);
+                const PlanSummary s = plan_summary(plan_of(p));
                 py::dict d;
                 d["graph_simplices"] = s.graph_simplices;
                 d["outside_hull"] = s.outside_hull;
@@ -464,7 +492,7 @@ void bind_plan(py::module_& m) {
         .def("__repr__", [](const PyPlan& p) {
             std::string moving;
             for (const auto& name : p.boundary.moving_markers) moving += (moving.empty() ? "" : ", ") + name;
-            return "dgwarp.Plan(" + std::string(method_name(plan_method(p.plan))) + ", " +
+            return "dgwarp.Plan(" + std::string(method_name(plan_method(plan_of(p)))) + ", " +
                    std::to_string(p.mesh->mesh.num_points()) + " nodes, " +
                    std::to_string(p.boundary.boundary.nodes.size()) + " boundary nodes, moving: " +
                    (moving.empty() ? "none" : moving) + ")";
@@ -472,7 +500,8 @@ void bind_plan(py::module_& m) {
 
     m.def("prepare", &prepare_plan, py::arg("mesh").none(false), py::arg("moving"), py::arg("static") = py::none(),
           py::arg("method") = "dg-harmonic", py::kw_only(), py::arg("shared_nodes") = "moving_wins",
-          py::arg("shared_tolerance") = 0.0, py::arg("progress") = py::none(),
+          py::arg("shared_tolerance") = 0.0, py::arg("progress") = py::none(), py::arg("comm") = py::none(),
+          py::arg("global_ids") = py::none(),
           "Prepares `method`'s plan for `mesh`, once; Plan.deform then moves the mesh every step.\n"
           "  moving: the markers that move (a list of names, or one name), or a motion (dict or\n"
           "          dgwarp.Motion: the markers it moves, as `dgwarp prepare -m` classifies them);\n"
@@ -482,6 +511,9 @@ void bind_plan(py::module_& m) {
           "  shared_nodes: 'moving_wins' (default) or 'static_wins': what nodes on a moving and a\n"
           "          static marker do; shared_tolerance as in motion files (0: 1e-9 x the diagonal);\n"
           "  progress: a callable taking the fraction done;\n"
+          "  comm, global_ids: an mpi4py communicator and each local node's id in the whole mesh: `mesh`\n"
+          "          is then this process's part, prepared and stepped collectively with the others\n"
+          "          (bit-identical to one process; no untangle, report, save or pickle);\n"
           "  **options: the method's options, named as the CLI's flags with '_' for '-':\n"
           "          dg-idw: a_translation, a_rotation, length_scale (a number or 'auto'),\n"
           "          dg_idw_weights ('paper' or 'continuous'); dgm: dgm_substep (bool); idw:\n"

@@ -12,6 +12,7 @@
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/run/original_cells.hpp"
 #include "py_mesh.hpp"
+#include "py_mpi.hpp"
 
 namespace dgwarp::python {
 
@@ -21,7 +22,11 @@ struct PyPlan {
     SharedNodeRule shared_nodes = SharedNodeRule::moving_wins;
     double shared_tolerance = 0;  // as given to the classification (0: the default)
     MethodOptions options;       // as used (a loaded plan's own)
-    Plan plan;
+    Plan plan;                   // unused (default) when distributed
+    /// A plan over this process's part, prepared with comm= (py_mpi.hpp),
+    /// and the mpi4py communicator it uses (kept alive with the plan).
+    std::shared_ptr<const DistributedHolder> distributed;
+    pybind11::object comm;
 
     /// The original cells a step is repaired and judged against
     /// (measure_original, as `dgwarp deform`), computed on first use, once
@@ -32,5 +37,9 @@ private:
     mutable std::once_flag original_once_;
     mutable OriginalCells original_;
 };
+
+/// The method's plan a step of `p` runs: this process's part of a
+/// distributed plan, else p.plan.
+inline const Plan& plan_of(const PyPlan& p) { return p.distributed ? distributed_method_plan(*p.distributed) : p.plan; }
 
 }  // namespace dgwarp::python

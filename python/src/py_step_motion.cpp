@@ -87,7 +87,7 @@ bool finish_step(const PyPlan& p, std::span<double> points, const py::object& un
     FrameOptions options;
     options.untangle_target = target;
     if (!untangle.is_none()) options.repair = untangle.cast<bool>() ? Repair::untangle : Repair::none;
-    const Method method = plan_method(p.plan);
+    const Method method = plan_method(plan_of(p));
     const bool repairs = options.repair == Repair::untangle ||
                          (options.repair == Repair::method_default && method == Method::dg_harmonic);
     if (!repairs && !measure) return false;

@@ -1,0 +1,43 @@
+#pragma once
+// dgwarp.prepare(..., comm=..., global_ids=...) (docs/PYTHON.md, "MPI"): a
+// plan over this process's part of a partitioned mesh, prepared and stepped
+// collectively with mpi4py's communicator, as the C++ distributed API
+// (dgwarp/mpi/distributed_plan.hpp) does it: bit-identical to one process.
+// Built when CMake found MPI and mpi4py; otherwise comm= raises an Error.
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "dgwarp/methods/method.hpp"
+
+namespace dgwarp::python {
+
+/// A process's distributed plan (the C++ DistributedPlan), opaque here.
+struct DistributedHolder;
+
+/// Whether the module was built with MPI and mpi4py.
+bool has_mpi();
+
+/// Prepares `method` collectively over `comm` (an mpi4py.MPI.Comm) for this
+/// process's nodes: `points` (num_local × dim), `global_ids` (one integer
+/// per local node, its id in the whole mesh), `boundary` (its boundary nodes,
+/// classified from its markers). Releases the GIL while it waits for the others.
+std::shared_ptr<const DistributedHolder> prepare_distributed_plan(pybind11::handle comm, Method method, int dim,
+                                                                  std::span<const double> points,
+                                                                  pybind11::handle global_ids,
+                                                                  const BoundarySet& boundary,
+                                                                  const MethodOptions& options);
+
+/// One collective step (call without the GIL).
+StepReport deform_distributed_plan(const DistributedHolder& plan, std::span<const double> points,
+                                   const BoundaryMotion& motion, std::span<double> out);
+
+/// The method's plan over this process's working nodes.
+const Plan& distributed_method_plan(const DistributedHolder& plan);
+
+/// Bytes this process holds for the plan.
+std::size_t distributed_bytes(const DistributedHolder& plan);
+
+}  // namespace dgwarp::python
