@@ -65,6 +65,25 @@ class CMakeBuild(build_ext):
         shutil.copy2(built, target)
 
 
+def require_debian_packages():
+    """NumPy and wheel for the Python running pip: offline they cannot come from PyPI, and Debian's
+    are for Debian's Python (a pyenv or conda python3 first on PATH is another one)."""
+    missing = []
+    for name in ("numpy", "wheel"):
+        try:
+            __import__(name)
+        except ImportError:
+            missing.append(name)
+    if missing:
+        raise RuntimeError(
+            f"dgwarp: this Python ({sys.executable} -> {os.path.realpath(sys.executable)}) has no "
+            f"{' and no '.join(missing)}. Debian's python3-numpy and python3-wheel are for Debian's Python: "
+            "make the venv with /usr/bin/python3 -m venv --system-site-packages (scripts/install-deps.sh "
+            "installs them)")
+
+
+require_debian_packages()
+
 setup(
     version=project_version(),
     packages=["dgwarp"],

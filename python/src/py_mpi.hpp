@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <span>
 
@@ -29,6 +30,20 @@ std::shared_ptr<const DistributedHolder> prepare_distributed_plan(pybind11::hand
                                                                   pybind11::handle global_ids,
                                                                   const BoundarySet& boundary,
                                                                   const MethodOptions& options);
+
+/// The same from a file saved by save_distributed_plan_file (collective;
+/// load_distributed_plan's checks: the same partition and inputs).
+std::shared_ptr<const DistributedHolder> load_distributed_plan_file(pybind11::handle comm,
+                                                                    const std::filesystem::path& path, int dim,
+                                                                    std::span<const double> points,
+                                                                    pybind11::handle global_ids,
+                                                                    const BoundarySet& boundary);
+
+/// Writes every process's part into one file (collective; releases the GIL).
+void save_distributed_plan_file(const DistributedHolder& plan, const std::filesystem::path& path);
+
+/// The method a distributed plan runs.
+Method distributed_method(const DistributedHolder& plan);
 
 /// One collective step (call without the GIL).
 StepReport deform_distributed_plan(const DistributedHolder& plan, std::span<const double> points,

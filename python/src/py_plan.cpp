@@ -188,8 +188,24 @@ std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh
 
 std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::shared_ptr<PyMesh> mesh,
                                        py::handle moving, py::handle static_markers, const std::string& shared_nodes,
-                                       double shared_tolerance) {
+                                       double shared_tolerance, py::object comm, py::object global_ids) {
     if (!mesh) throw py::type_error("load_plan(): mesh must be a dgwarp.Mesh, got None");
+    if (!comm.is_none()) {
+        // This process's part of a plan saved by Plan.save with comm= (py_mpi.hpp).
+        if (moving.is_none())
+            throw py::value_error("load_plan(comm=...): give the moving markers (each process classifies its own part)");
+        auto p = std::make_shared<PyPlan>();
+        p->mesh = mesh;
+        p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
+                               p->shared_nodes, p->shared_tolerance);
+        p->distributed = load_distributed_plan_file(comm, path, mesh->mesh.dim, mesh->mesh.points, global_ids,
+                                                    p->boundary.boundary);
+        p->comm = comm;
+        if (const auto* d = std::get_if<DgIdwPlan>(&plan_of(*p))) p->options.dg_idw = d->options;
+        if (const auto* h = std::get_if<DgHarmonicPlan>(&plan_of(*p))) p->options.dg_harmonic = h->options;
+        return p;
+    }
+    if (!global_ids.is_none()) throw py::value_error("global_ids is for load_plan(comm=...)");
     Plan plan;
     {
         py::gil_scoped_release release;
@@ -418,12 +434,13 @@ void bind_plan(py::module_& m) {
                  // As `dgwarp prepare -o`: a plan file's name says what it is.
                  if (lower_case_extension(path) != ".plan")
                      throw py::value_error("save: a plan file's name ends in .plan, got " + path.string());
-                 if (p.distributed) throw py::value_error("save: not for a plan prepared with comm=");
+                 if (p.distributed) return save_distributed_plan_file(*p.distributed, path);  // collective
                  py::gil_scoped_release release;
                  save_plan(path, p.plan);
              },
              py::arg("path"),
-             "Writes the plan to `path`, a name ending in .plan (atomically; DG-IDW and DG-harmonic plans).\n"
+             "Writes the plan to `path`, a name ending in .plan (atomically; DG-IDW and DG-harmonic plans; a\n"
+             "plan prepared with comm=: collectively, every process's part in one file).\n"
              "dgwarp.load_plan(path, mesh)\n"
              "reads it back; so does `dgwarp deform --plan`.")
         .def_property_readonly("method", [](const PyPlan& p) { return std::string(method_name(plan_method(plan_of(p)))); },
@@ -528,11 +545,13 @@ void bind_plan(py::module_& m) {
 
     m.def("load_plan", &load_plan_file, py::arg("path"), py::arg("mesh").none(false), py::arg("moving") = py::none(),
           py::arg("static") = py::none(), py::kw_only(), py::arg("shared_nodes") = "moving_wins",
-          py::arg("shared_tolerance") = 0.0,
+          py::arg("shared_tolerance") = 0.0, py::arg("comm") = py::none(), py::arg("global_ids") = py::none(),
           "Reads a plan saved by Plan.save (or `dgwarp prepare`) for `mesh`, checked to be for this mesh\n"
           "(MeshError otherwise). The moving markers are the markers all of whose nodes the plan moves;\n"
           "give `moving` (and `static`, `shared_nodes`) when the plan was prepared otherwise. The plan\n"
-          "keeps its method and options. Raises IoError, ParseError for a damaged file.");
+          "keeps its method and options. Raises IoError, ParseError for a damaged file. With comm= and\n"
+          "global_ids (collective), this process's part of a plan saved by Plan.save of a plan prepared with\n"
+          "comm=: give `moving`; the same number of processes and the same parts (MeshError otherwise).");
 }
 
 }  // namespace dgwarp::python

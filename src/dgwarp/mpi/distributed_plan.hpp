@@ -99,6 +99,9 @@ struct DistributedPlan {
     /// report (those whose first boundary node it owns), as working boundary indices.
     std::vector<std::int32_t> counted_shared_offsets{0}, counted_shared_members;
     DistributedPrepareTimes times;
+    /// A hash of this process's inputs to prepare (points, global ids,
+    /// boundary): a saved plan is loaded only for the same ones.
+    std::uint64_t input_hash = 0;
 
     std::int64_t num_working_points() const {
         return static_cast<std::int64_t>(working_points.size()) / dim;

@@ -13,10 +13,12 @@
 #include "dgwarp/core/hash.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
+#include "dgwarp/methods/mesh_fingerprint.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/mpi/collective_checks.hpp"
 #include "dgwarp/mpi/distributed_coarse_points.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
+#include "dgwarp/mpi/distributed_plan_file.hpp"
 #include "dgwarp/mpi/gather_boundary.hpp"
 
 namespace dgwarp::mpi {
@@ -157,6 +159,9 @@ void keep_only_boundary_nodes_read(DistributedPlan& p, const std::vector<std::ui
     // The step report's shared vertices are counted by their owners (counted_shared_*).
     plan.shared_offsets = {0};
     plan.shared_members.clear();
+    // The plan is now one for the kept working nodes: its fingerprint says so, so that its plan file
+    // (save_distributed_plan) passes load_plan's consistency checks.
+    plan.mesh = mesh_fingerprint(dim, p.working_points, BoundarySet{plan.boundary_nodes, plan.boundary_moving});
 }
 
 // DG-IDW: who sends which motions to whom every step.
@@ -231,6 +236,7 @@ DistributedPlan prepare_distributed(MPI_Comm comm, Method method, int dim, std::
                                     const MethodOptions& options) {
     DistributedPlan p;
     p.comm = comm;
+    p.input_hash = distributed_inputs_hash(points, global_ids, boundary);
     MPI_Comm_rank(comm, &p.rank);
     MPI_Comm_size(comm, &p.size);
     p.method = method;
