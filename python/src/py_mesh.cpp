@@ -193,6 +193,16 @@ void check_write_target(const PyMesh& p, const std::filesystem::path& path, cons
                               " would be written without it (write a .vtu, or leave the data out)");
 }
 
+/// `mesh`'s dimension and points from `points`, (n, 2) or (n, 3) float64 (copied).
+void set_points(Mesh& mesh, py::handle points) {
+    const py::array pa = float_array(points, "points");
+    const py::ssize_t dim = pa.ndim() == 2 ? pa.shape(1) : 0;
+    if (dim != 2 && dim != 3) throw py::value_error("points must have shape (n, 2) or (n, 3), got " + shape_text(pa));
+    const auto xs = float_matrix(pa, "points", any_rows, dim);
+    mesh.dim = static_cast<int>(dim);
+    mesh.points.assign(xs.data(), xs.data() + xs.size());
+}
+
 }  // namespace
 
 std::span<const double> mesh_points_arg(const PyMesh& m, py::handle points, const char* name, py::object& keep) {
@@ -268,13 +278,8 @@ void bind_mesh(py::module_& m) {
             "from_arrays",
             [](py::handle points, py::handle cells, py::handle markers) {
                 auto p = std::make_shared<PyMesh>();
-                const py::array pa = float_array(points, "points");
-                const py::ssize_t dim = pa.ndim() == 2 ? pa.shape(1) : 0;
-                if (dim != 2 && dim != 3)
-                    throw py::value_error("points must have shape (n, 2) or (n, 3), got " + shape_text(pa));
-                const auto xs = float_matrix(pa, "points", any_rows, dim);
-                p->mesh.dim = static_cast<int>(dim);
-                p->mesh.points.assign(xs.data(), xs.data() + xs.size());
+                set_points(p->mesh, points);
+                const py::ssize_t dim = p->mesh.dim;
                 p->mesh.cells = element_list(cells, "cells", -1);
                 if (!markers.is_none()) {
                     if (!py::isinstance<py::dict>(markers))
@@ -300,13 +305,7 @@ void bind_mesh(py::module_& m) {
             "point_cloud",
             [](py::handle points, py::handle markers) {
                 auto p = std::make_shared<PyMesh>();
-                const py::array pa = float_array(points, "points");
-                const py::ssize_t dim = pa.ndim() == 2 ? pa.shape(1) : 0;
-                if (dim != 2 && dim != 3)
-                    throw py::value_error("points must have shape (n, 2) or (n, 3), got " + shape_text(pa));
-                const auto xs = float_matrix(pa, "points", any_rows, dim);
-                p->mesh.dim = static_cast<int>(dim);
-                p->mesh.points.assign(xs.data(), xs.data() + xs.size());
+                set_points(p->mesh, points);
                 if (!py::isinstance<py::dict>(markers)) throw py::type_error("markers must be a dict {name: node ids}");
                 for (auto item : py::reinterpret_borrow<py::dict>(markers)) {
                     const std::string name = py::str(item.first);

@@ -281,6 +281,27 @@ std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
     return p;
 }
 
+/// Plan.deform_derivative (J @ in) or, with `transpose`, deform_derivative_transpose (J.T @ in):
+/// `in` checked against the rows the product takes, into `out` or a new array.
+py::object derivative_product(const PyPlan& p, py::handle in, py::handle out, bool transpose) {
+    const char* name = transpose ? "deform_derivative_transpose" : "deform_derivative";
+    if (p.distributed) throw py::value_error(std::string(name) + ": not for a plan prepared with comm=");
+    const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
+    const auto points = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
+    const auto boundary = static_cast<py::ssize_t>(p.boundary.boundary.nodes.size());
+    const auto v = float_matrix(in, transpose ? "weights" : "direction", transpose ? points : boundary, dim);
+    const py::ssize_t rows = transpose ? boundary : points;
+    py::array_t<double> result = out.is_none() ? py::array_t<double>({rows, dim}) : output_matrix(out, "out", rows, dim);
+    {
+        py::gil_scoped_release release;
+        const std::span<const double> input(v.data(), static_cast<std::size_t>(v.size()));
+        const std::span<double> output(result.mutable_data(), static_cast<std::size_t>(result.size()));
+        if (transpose) deform_derivative_transpose(p.plan, input, output);
+        else deform_derivative(p.plan, input, output);
+    }
+    return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+}
+
 py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, py::handle translation,
                        py::handle rotation, py::handle center, py::handle out, const py::object& untangle,
                        double untangle_target, py::object progress, bool want_report) {
@@ -387,19 +408,7 @@ void bind_plan(py::module_& m) {
         .def(
             "deform_derivative",
             [](const PyPlan& p, py::handle direction, py::handle out) {
-                const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
-                const auto rows = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
-                if (p.distributed) throw py::value_error("deform_derivative: not for a plan prepared with comm=");
-                const auto v = float_matrix(direction, "direction",
-                                            static_cast<py::ssize_t>(p.boundary.boundary.nodes.size()), dim);
-                py::array_t<double> result = out.is_none() ? py::array_t<double>({rows, dim})
-                                                           : output_matrix(out, "out", rows, dim);
-                {
-                    py::gil_scoped_release release;
-                    deform_derivative(p.plan, std::span<const double>(v.data(), static_cast<std::size_t>(v.size())),
-                                      std::span<double>(result.mutable_data(), static_cast<std::size_t>(result.size())));
-                }
-                return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+                return derivative_product(p, direction, out, false);
             },
             py::arg("direction"), py::kw_only(), py::arg("out") = py::none(),
             "J @ direction, J = d(points) / d(boundary points) of a translation-only step (exact: such a\n"
@@ -410,21 +419,7 @@ void bind_plan(py::module_& m) {
         .def(
             "deform_derivative_transpose",
             [](const PyPlan& p, py::handle weights, py::handle out) {
-                const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
-                const auto rows = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
-                const auto nb = static_cast<py::ssize_t>(p.boundary.boundary.nodes.size());
-                if (p.distributed)
-                    throw py::value_error("deform_derivative_transpose: not for a plan prepared with comm=");
-                const auto w = float_matrix(weights, "weights", rows, dim);
-                py::array_t<double> result = out.is_none() ? py::array_t<double>({nb, dim})
-                                                           : output_matrix(out, "out", nb, dim);
-                {
-                    py::gil_scoped_release release;
-                    deform_derivative_transpose(
-                        p.plan, std::span<const double>(w.data(), static_cast<std::size_t>(w.size())),
-                        std::span<double>(result.mutable_data(), static_cast<std::size_t>(result.size())));
-                }
-                return out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
+                return derivative_product(p, weights, out, true);
             },
             py::arg("weights"), py::kw_only(), py::arg("out") = py::none(),
             "J.T @ weights (IDWarp's warpDeriv): weights (num_points, dim), e.g. an objective's gradient\n"
