@@ -217,7 +217,7 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
     const auto line_of = [&](std::int64_t c) -> std::size_t {
         std::int64_t first = nfaces;
         for (std::int64_t k = start[c]; k < start[c + 1]; ++k) first = std::min(first, face_of(faces[k]));
-        return first < nfaces ? where.line[static_cast<std::size_t>(first)] : 0;
+        return first < nfaces && !where.line.empty() ? where.line[static_cast<std::size_t>(first)] : 0;
     };
     const auto face_list = [&](std::int64_t c) {
         std::string s;

@@ -67,6 +67,14 @@ PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, const PolyMes
 /// largest, before the cells are built): a lower peak of memory.
 PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, PolyMeshFiles&& files, bool processor_patches);
 
+/// The PolyMeshPart of a polyMesh in memory (what read_poly_mesh_part does
+/// once its files are parsed; the OpenFOAM motion solver gives OpenFOAM's own
+/// arrays): cells_from_faces (errors name `where`'s files and lines, or line 0
+/// when where.line is empty), a marker per patch other than the processor
+/// patches, and the processor patches' nodes. Throws FormatError for
+/// polyhedra, MeshError from validate.
+PolyMeshPart poly_mesh_part(PolyMesh&& pm, std::int64_t num_cells, const FaceLines& where, Format points_format);
+
 /// The file dir/name, or dir/name.gz uncompressed (IoError when neither can be read).
 std::string read_mesh_file(const std::filesystem::path& dir, const char* name);
 

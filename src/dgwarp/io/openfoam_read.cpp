@@ -407,6 +407,14 @@ foam::PolyMeshPart read_part(const std::filesystem::path& dir, const PolyMeshFil
     Scanner boundary(name("boundary"), files.boundary);
     pm.patches = read_boundary(boundary, static_cast<std::int64_t>(pm.neighbour.size()), num_faces, processor_patches);
 
+    return foam::poly_mesh_part(std::move(pm), num_cells, where, points_header.format);
+}
+
+}  // namespace
+
+foam::PolyMeshPart foam::poly_mesh_part(PolyMesh&& pm, std::int64_t num_cells, const FaceLines& where,
+                                        Format points_format) {
+    const auto num_faces = static_cast<std::int64_t>(pm.num_faces());
     Mesh mesh;
     mesh.dim = 3;
     mesh.cells = foam::cells_from_faces(pm, num_cells, where);
@@ -431,10 +439,8 @@ foam::PolyMeshPart read_part(const std::filesystem::path& dir, const PolyMeshFil
     validate(mesh);
     std::sort(processor_nodes.begin(), processor_nodes.end());
     processor_nodes.erase(std::unique(processor_nodes.begin(), processor_nodes.end()), processor_nodes.end());
-    return {std::move(mesh), std::move(pm.patches), points_header.format, num_faces, std::move(processor_nodes)};
+    return {std::move(mesh), std::move(pm.patches), points_format, num_faces, std::move(processor_nodes)};
 }
-
-}  // namespace
 
 foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files,
                                              bool processor_patches) {

@@ -32,4 +32,15 @@ inline constexpr MethodOptionName method_option_names[] = {
 /// name that is not a method option.
 std::optional<Method> option_method(std::string_view name);
 
+/// Sets the method option `name` (as option_method takes it) of `options`
+/// from its text `value`, as the CLI's flag reads it: a number (C locale),
+/// `auto` for length-scale, `paper` or `continuous` for dg-idw-weights,
+/// `elasticity` or `laplacian` for laplacian-model, a whole number 1-64 for
+/// laplacian-increments, and for dgm-substep a switch (true/false, on/off,
+/// yes/no, 1/0). For callers that hold options as text: OpenFOAM's
+/// dictionary (the motion solver), a configuration file. Throws Error naming
+/// the option and the value for an unknown option or a value it cannot take;
+/// the ranges of numbers are checked by prepare, as for the CLI.
+void set_method_option(MethodOptions& options, std::string_view name, std::string_view value);
+
 }  // namespace dgwarp

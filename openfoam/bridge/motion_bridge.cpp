@@ -1,0 +1,242 @@
+#include "motion_bridge.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cstdio>
+#include <exception>
+#include <optional>
+#include <span>
+#include <sstream>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
+#include "dgwarp/methods/method.hpp"
+#include "dgwarp/methods/option_names.hpp"
+#include "dgwarp/run/deform_frame.hpp"
+#include "dgwarp/run/original_cells.hpp"
+#ifdef DGWARP_BRIDGE_MPI
+#include <mpi.h>
+
+#include "dgwarp/mpi/distributed_plan.hpp"
+#endif
+
+namespace dgwarp_bridge {
+
+namespace {
+
+using dgwarp::Method;
+using dgwarp::NodeId;
+
+#ifdef DGWARP_BRIDGE_MPI
+/// Every process learns whether one failed, and the first failing one's message:
+/// a failure on one process must not leave the others waiting in a collective call.
+void agree(const std::string& failure) {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    int first = failure.empty() ? INT_MAX : rank;
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first == INT_MAX) return;
+    int length = rank == first ? static_cast<int>(failure.size()) : 0;
+    MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
+    std::string message = rank == first ? failure : std::string(static_cast<std::size_t>(length), ' ');
+    MPI_Bcast(message.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
+    throw Error(rank == first ? message : "processor " + std::to_string(first) + ": " + message);
+}
+#endif
+
+/// Runs `f`, turning the library's exceptions into the bridge's.
+template <class F>
+auto translated(F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const Error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw Error("out of memory");
+    } catch (const std::exception& e) {
+        throw Error(e.what());
+    }
+}
+
+Method method_of(const std::string& name) {
+    if (const auto m = dgwarp::method_from_name(name)) return *m;
+    std::string list;
+    for (Method m : dgwarp::all_methods) list += (list.empty() ? "" : ", ") + std::string(dgwarp::method_name(m));
+    throw Error("unknown method '" + name + "'; the methods are " + list);
+}
+
+dgwarp::Repair repair_of(const std::string& name) {
+    if (name == "default") return dgwarp::Repair::method_default;
+    if (name == "untangle") return dgwarp::Repair::untangle;
+    if (name == "none") return dgwarp::Repair::none;
+    throw Error("repair must be default, untangle or none, got '" + name + "'");
+}
+
+}  // namespace
+
+struct Solver::Impl {
+    Method method = Method::dg_harmonic;
+    dgwarp::MethodOptions options;
+    std::string options_text;
+    dgwarp::FrameOptions frame;
+    dgwarp::Mesh mesh;
+    dgwarp::BoundarySet boundary;
+    dgwarp::OriginalCells original;
+    std::optional<dgwarp::Plan> plan;
+#ifdef DGWARP_BRIDGE_MPI
+    std::optional<dgwarp::mpi::DistributedPlan> distributed;
+#endif
+    bool parallel = false;
+    std::int64_t moving = 0, fixed = 0;
+    double prepare_seconds = 0;
+
+    /// The local checks and the mesh: everything that can fail on one process alone.
+    void build(PolyMesh&& in, const Settings& settings) {
+        method = method_of(settings.method);
+        for (const auto& [name, value] : settings.options) {
+            const std::optional<Method> owner = dgwarp::option_method(name);
+            if (owner && *owner != method)
+                throw Error("option " + name + " is an option of " + std::string(dgwarp::method_name(*owner)) +
+                            "; it does nothing with " + settings.method);
+            dgwarp::set_method_option(options, name, value);
+            options_text += " " + name + " " + value;
+        }
+        frame.repair = repair_of(settings.repair);
+        if (parallel && frame.repair != dgwarp::Repair::none && !(frame.repair == dgwarp::Repair::method_default &&
+                                                                  method != Method::dg_harmonic))
+            frame.repair = dgwarp::Repair::none;  // repairs move nodes of one process's cells: not in parallel
+
+        const auto num_points = static_cast<std::int64_t>(in.points.size() / 3);
+        if (in.face_offsets.empty() || in.owner.size() + 1 != in.face_offsets.size())
+            throw Error("the polyMesh has " + std::to_string(in.owner.size()) + " owners for " +
+                        std::to_string(in.face_offsets.empty() ? 0 : in.face_offsets.size() - 1) + " faces");
+        dgwarp::foam::PolyMesh pm;
+        pm.points = std::move(in.points);
+        pm.face_offsets = std::move(in.face_offsets);
+        pm.face_nodes = std::move(in.face_nodes);
+        pm.owner = std::move(in.owner);
+        pm.neighbour = std::move(in.neighbour);
+        for (const Patch& p : in.patches) {
+            dgwarp::foam::Patch patch;
+            patch.name = p.name;
+            patch.info.type = p.type;
+            patch.start = p.start;
+            patch.size = p.size;
+            patch.processor = p.role == PatchRole::interface;
+            pm.patches.push_back(std::move(patch));
+        }
+        const dgwarp::foam::FaceLines where{"polyMesh/faces", "polyMesh/owner", {}};
+        dgwarp::foam::PolyMeshPart part = dgwarp::foam::poly_mesh_part(std::move(pm), in.num_cells, where,
+                                                                       dgwarp::foam::Format::binary);
+        mesh = std::move(part.mesh);
+        if (static_cast<std::int64_t>(mesh.num_points()) != num_points) throw Error("points lost building the mesh");
+
+        // The boundary: every point of a moving or fixed patch, moving when on a moving patch.
+        std::vector<std::pair<NodeId, std::uint8_t>> nodes;
+        std::size_t marker = 0;
+        for (const Patch& p : in.patches) {
+            if (p.role == PatchRole::interface) continue;
+            const std::uint8_t is_moving = p.role == PatchRole::moving ? 1 : 0;
+            for (const NodeId n : mesh.markers[marker].elements.nodes) nodes.emplace_back(n, is_moving);
+            ++marker;
+        }
+        std::sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) {
+            return a.first != b.first ? a.first < b.first : a.second > b.second;  // moving first: it wins
+        });
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            if (i > 0 && nodes[i].first == nodes[i - 1].first) continue;
+            boundary.nodes.push_back(nodes[i].first);
+            boundary.moving.push_back(nodes[i].second);
+            (nodes[i].second ? moving : fixed) += 1;
+        }
+        original = dgwarp::measure_original(mesh);
+    }
+};
+
+Solver::Solver(PolyMesh mesh, const Settings& settings, const Parallel* parallel) : impl_(std::make_unique<Impl>()) {
+    Impl& s = *impl_;
+    s.parallel = parallel != nullptr;
+#ifndef DGWARP_BRIDGE_MPI
+    if (s.parallel) throw Error("this dgwarpFoam was built without MPI: it cannot run in parallel");
+#endif
+    std::string failure;
+    try {
+        translated([&] { s.build(std::move(mesh), settings); });
+    } catch (const Error& e) {
+        if (!s.parallel) throw;
+        failure = e.what();
+    }
+    dgwarp::Stopwatch sw;
+#ifdef DGWARP_BRIDGE_MPI
+    if (s.parallel) {
+        agree(failure);
+        // prepare_distributed agrees on its own failures (every process throws).
+        translated([&] {
+            s.distributed.emplace(dgwarp::mpi::prepare_distributed(MPI_COMM_WORLD, s.method, 3, s.mesh.points,
+                                                                   parallel->global_ids, s.boundary, s.options));
+        });
+        s.prepare_seconds = sw.lap();
+        return;
+    }
+#endif
+    translated([&] { s.plan.emplace(dgwarp::prepare(s.method, 3, s.mesh.points, s.mesh.cells, s.boundary, s.options)); });
+    s.prepare_seconds = sw.lap();
+}
+
+Solver::~Solver() = default;
+
+std::int64_t Solver::moving_points() const { return impl_->moving; }
+std::int64_t Solver::fixed_points() const { return impl_->fixed; }
+
+std::string Solver::summary() const {
+    const Impl& s = *impl_;
+    std::ostringstream o;
+    o << "dgwarp " << dgwarp::method_name(s.method) << (s.options_text.empty() ? "" : " (") << s.options_text
+      << (s.options_text.empty() ? "" : " )") << ": " << s.mesh.num_points() << " points, " << s.mesh.cells.size()
+      << " cells, " << s.moving << " moving and " << s.fixed << " fixed boundary points; prepared in ";
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.3f s", s.prepare_seconds);
+    o << seconds;
+    return o.str();
+}
+
+StepResult Solver::step(const double* displacement, double* new_points) {
+    Impl& s = *impl_;
+    return translated([&] {
+        dgwarp::BoundaryMotion motion(s.boundary.nodes.size());
+        for (std::size_t i = 0; i < motion.size(); ++i) {
+            if (!s.boundary.moving[i]) continue;
+            const double* d = displacement + 3 * static_cast<std::size_t>(s.boundary.nodes[i]);
+            motion[i].translation = {d[0], d[1], d[2]};
+        }
+        const std::span<double> out(new_points, s.mesh.points.size());
+        dgwarp::FrameReport report;
+        dgwarp::Stopwatch sw;
+#ifdef DGWARP_BRIDGE_MPI
+        if (s.distributed) report.step = dgwarp::mpi::deform_distributed(*s.distributed, s.mesh.points, motion, out);
+        else
+#endif
+            report.step = dgwarp::deform(*s.plan, s.mesh.points, motion, out, s.options);
+        report.step_seconds = sw.lap();
+        dgwarp::finish_frame(s.method, s.mesh, s.original, s.boundary.nodes, s.frame, out, report);
+
+        StepResult r;
+        r.cells = static_cast<std::int64_t>(s.mesh.cells.size());
+        r.inverted = report.inverted_by_motion;
+        r.worst_inverted = report.worst_inverted;
+        r.min_quality = report.quality.min;
+        r.mean_quality = report.quality.mean;
+        if (report.untangled) r.repaired = report.untangled->below_target_before - report.untangled->below_target_after;
+        r.last_resort = report.last_resort;
+        r.guard_redo = report.step.guard.kept_redo;
+        r.step_seconds = report.step_seconds;
+        r.repair_seconds = report.repair_seconds;
+        r.quality_seconds = report.quality_seconds;
+        for (const dgwarp::Warning& w : dgwarp::step_warnings(report.step)) r.warnings.push_back(w.text);
+        return r;
+    });
+}
+
+}  // namespace dgwarp_bridge
