@@ -19,7 +19,7 @@ SANITIZER_ENV = ASAN_OPTIONS=exitcode=86:detect_leaks=1:check_initialization_ord
   UBSAN_OPTIONS=exitcode=86:print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=exitcode=86:print_suppressions=0:suppressions=$(CURDIR)/tests/lsan.supp
 
-.PHONY: all deps build demo test build-sanitize test-sanitize clean
+.PHONY: all deps build demo test build-sanitize test-sanitize test-openfoam clean
 
 all: build
 
@@ -57,6 +57,13 @@ test-sanitize: build-sanitize
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory test-sanitize
+
+# dgwarp as OpenFOAM's motion solver: installs OpenFOAM (Debian's openfoam)
+# and its headers, builds and installs libdgwarpFoam.so, runs its tests
+# (docs/OPENFOAM.md). `make test` runs them too once the plugin is built.
+test-openfoam: deps
+	@BUILD_DIR=$(BUILD_DIR) JOBS=$(JOBS) scripts/build-openfoam-plugin.sh
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -L openfoam
 
 clean:
 	rm -rf $(BUILD_DIR) $(ASAN_DIR)
