@@ -1,9 +1,11 @@
 #include "motion_bridge.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <climits>
 #include <cstdio>
 #include <exception>
+#include <fenv.h>
 #include <optional>
 #include <span>
 #include <sstream>
@@ -46,9 +48,37 @@ void agree(const std::string& failure) {
 }
 #endif
 
-/// Runs `f`, turning the library's exceptions into the bridge's.
+/// Floating-point traps off while the library runs, on every OpenMP thread,
+/// and as they were afterwards. OpenFOAM traps invalid operations, division by
+/// zero and overflow (FOAM_SIGFPE, on by default); the library computes with
+/// IEEE arithmetic's infinities and NaNs where they are harmless (e.g. the
+/// barycentric coordinates of a degenerate graph simplex, then discarded), as
+/// every program but a trapping one does.
+class NoFloatingPointTraps {
+  public:
+    NoFloatingPointTraps() : saved_(fegetexcept()) { set_everywhere(0); }
+    ~NoFloatingPointTraps() { set_everywhere(saved_); }
+    NoFloatingPointTraps(const NoFloatingPointTraps&) = delete;
+    NoFloatingPointTraps& operator=(const NoFloatingPointTraps&) = delete;
+
+  private:
+    static void set(int traps) {
+        feclearexcept(FE_ALL_EXCEPT);
+        fedisableexcept(FE_ALL_EXCEPT);
+        if (traps) feenableexcept(traps);
+    }
+    static void set_everywhere(int traps) {
+        set(traps);
+#pragma omp parallel
+        set(traps);
+    }
+    int saved_;
+};
+
+/// Runs `f` without floating-point traps, turning the library's exceptions into the bridge's.
 template <class F>
 auto translated(F&& f) -> decltype(f()) {
+    const NoFloatingPointTraps no_traps;
     try {
         return f();
     } catch (const Error&) {
@@ -90,6 +120,9 @@ struct Solver::Impl {
 #endif
     bool parallel = false;
     std::int64_t moving = 0, fixed = 0;
+    std::vector<std::string> patch_names;  // every patch, in the mesh's order
+    std::vector<std::int32_t> slot_patch;  // per boundary slot: the first moving patch holding it, or -1
+    double diagonal = 0;                   // of this process's points0
     double prepare_seconds = 0;
 
     /// The local checks and the mesh: everything that can fail on one process alone.
@@ -151,6 +184,21 @@ struct Solver::Impl {
             boundary.moving.push_back(nodes[i].second);
             (nodes[i].second ? moving : fixed) += 1;
         }
+        slot_patch.assign(boundary.nodes.size(), -1);
+        marker = 0;
+        for (std::size_t p = 0; p < in.patches.size(); ++p) {
+            patch_names.push_back(in.patches[p].name);
+            if (in.patches[p].role == PatchRole::interface) continue;
+            if (in.patches[p].role == PatchRole::moving)
+                for (const NodeId n : mesh.markers[marker].elements.nodes) {
+                    const auto slot = std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), n) - boundary.nodes.begin();
+                    if (slot_patch[static_cast<std::size_t>(slot)] < 0)
+                        slot_patch[static_cast<std::size_t>(slot)] = static_cast<std::int32_t>(p);
+                }
+            ++marker;
+        }
+        const dgwarp::BoundingBox box = dgwarp::bounding_box(mesh);
+        diagonal = std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]);
         original = dgwarp::measure_original(mesh);
     }
 };
@@ -202,15 +250,42 @@ std::string Solver::summary() const {
     return o.str();
 }
 
-StepResult Solver::step(const double* displacement, double* new_points) {
+StepResult Solver::step(const double* displacement, const std::vector<RigidMotion>& rigid, double* new_points) {
     Impl& s = *impl_;
+    if (!rigid.empty() && rigid.size() != s.patch_names.size())
+        throw Error(std::to_string(rigid.size()) + " rigid motions for " + std::to_string(s.patch_names.size()) +
+                    " patches");
     return translated([&] {
         dgwarp::BoundaryMotion motion(s.boundary.nodes.size());
+        std::string mismatch;
         for (std::size_t i = 0; i < motion.size(); ++i) {
             if (!s.boundary.moving[i]) continue;
-            const double* d = displacement + 3 * static_cast<std::size_t>(s.boundary.nodes[i]);
-            motion[i].translation = {d[0], d[1], d[2]};
+            const auto node = static_cast<std::size_t>(s.boundary.nodes[i]);
+            const double* d = displacement + 3 * node;
+            const std::int32_t p = s.slot_patch[i];
+            if (p < 0 || rigid.empty() || !rigid[static_cast<std::size_t>(p)].rigid) {
+                motion[i].translation = {d[0], d[1], d[2]};
+                continue;
+            }
+            const RigidMotion& r = rigid[static_cast<std::size_t>(p)];
+            motion[i] = {{r.translation[0], r.translation[1], r.translation[2]},
+                         {r.rotation[0], r.rotation[1], r.rotation[2]},
+                         {r.centre[0], r.centre[1], r.centre[2]}};
+            // The rigid motion must put the point where its displacement does.
+            double moved[3];
+            dgwarp::apply_motion(motion[i], std::span<const double>(s.mesh.points.data() + 3 * node, 3), moved);
+            for (int k = 0; k < 3; ++k)
+                if (mismatch.empty() &&
+                    !(std::abs(moved[k] - (s.mesh.points[3 * node + k] + d[k])) <= 1e-9 * s.diagonal))
+                    mismatch = "patch " + s.patch_names[static_cast<std::size_t>(p)] +
+                               ": its rigid motion moves point " + std::to_string(node) + " elsewhere than its displacement (" +
+                               std::to_string(moved[k] - s.mesh.points[3 * node + k]) + " against " +
+                               std::to_string(d[k]) + " in coordinate " + std::to_string(k) + ")";
         }
+#ifdef DGWARP_BRIDGE_MPI
+        if (s.parallel) agree(mismatch);  // every process throws, or none
+#endif
+        if (!mismatch.empty()) throw Error(mismatch);
         const std::span<double> out(new_points, s.mesh.points.size());
         dgwarp::FrameReport report;
         dgwarp::Stopwatch sw;

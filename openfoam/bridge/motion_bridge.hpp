@@ -64,6 +64,19 @@ struct Parallel {
     std::vector<std::int64_t> global_ids;  // per local point: its point in the whole mesh (pointProcAddressing)
 };
 
+/// A moving patch's motion as a rigid body, when its condition knows it (a
+/// solidBodyMotionDisplacement): its points go to
+/// centre + R(rotation)(x - centre) + translation, R the rotation by the
+/// vector `rotation` (axis × angle, radians). The methods then interpolate the
+/// rotation and the translation apart (METHODS.md), rather than the
+/// displacement alone.
+struct RigidMotion {
+    bool rigid = false;
+    double rotation[3] = {0, 0, 0};
+    double centre[3] = {0, 0, 0};
+    double translation[3] = {0, 0, 0};
+};
+
 struct StepResult {
     std::int64_t cells = 0;          // this process's cells
     std::int64_t inverted = 0;       // of them, cells valid in points0 and inverted now (after the repair)
@@ -90,8 +103,12 @@ class Solver {
 
     /// One step from points0: `displacement` (num_points × 3) is read at the
     /// moving patches' points; writes every point's new position to
-    /// `new_points` (num_points × 3). Collective in a parallel run.
-    StepResult step(const double* displacement, double* new_points);
+    /// `new_points` (num_points × 3). `rigid`: empty, or one per patch (in
+    /// the mesh's order): a point of a moving patch whose motion is rigid
+    /// takes that motion (the first such patch of a point on several), and
+    /// must land where its displacement says (within 1e-9 of the mesh's
+    /// size: Error naming the patch otherwise). Collective in a parallel run.
+    StepResult step(const double* displacement, const std::vector<RigidMotion>& rigid, double* new_points);
 
     /// The points of the moving and of the fixed patches (this process's).
     std::int64_t moving_points() const;

@@ -5,6 +5,7 @@
 #include "labelIOList.H"
 #include "processorCyclicPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "solidBodyMotionDisplacementPointPatchVectorField.H"
 #include "valuePointPatchField.H"
 #include "wedgePolyPatch.H"
 
@@ -30,7 +31,8 @@ enum Role { fixedRole = 0, movingRole = 1, interfaceRole = 2 };
 // Entries of dgwarpCoeffs that are the motion solver's, not the method's.
 bool solverEntry(const Foam::word& key)
 {
-    return key == "method" || key == "repair" || key == "movingPatches" || key == "allowInverted";
+    return key == "method" || key == "repair" || key == "movingPatches" || key == "allowInverted" ||
+        key == "rotations";
 }
 
 // The one value of a method option's entry, as text.
@@ -178,6 +180,15 @@ void Foam::dgwarpMotionSolver::prepare()
         }
     }
 
+    // Each patch's bounding-box centre (the same on every processor).
+    rotations_ = coeffs.lookupOrDefault<bool>("rotations", true);
+    centres_.setSize(patches.size());
+    forAll(patches, patchi)
+    {
+        const pointField pts(points0(), patches[patchi].meshPoints());
+        centres_[patchi] = 0.5*(gMin(pts) + gMax(pts));
+    }
+
     // The mesh at points0, as plain arrays.
     dgwarp_bridge::PolyMesh m;
     const pointField& p0 = points0();
@@ -257,6 +268,37 @@ void Foam::dgwarpMotionSolver::prepare()
 }
 
 
+std::vector<dgwarp_bridge::RigidMotion> Foam::dgwarpMotionSolver::rigidMotions() const
+{
+    const polyBoundaryMesh& patches = mesh().boundaryMesh();
+    std::vector<dgwarp_bridge::RigidMotion> out(patches.size());
+    if (!rotations_) return out;
+    forAll(patches, patchi)
+    {
+        const pointPatchField<vector>& pf = pointDisplacement_.boundaryField()[patchi];
+        if (roles_[patchi] != movingRole || !isA<solidBodyMotionDisplacementPointPatchVectorField>(pf)) continue;
+        // x' = R(x - s) (septernion::transformPoint) = c + R(x - c) + t with t = R(c - s) - c.
+        const septernion tr =
+            refCast<const solidBodyMotionDisplacementPointPatchVectorField>(pf).motion().transformation();
+        quaternion q = tr.r();
+        if (q.w() < 0) q = quaternion(-q.w(), -q.v());  // the same rotation, by the smaller angle
+        const scalar s = mag(q.v());
+        const vector w = s > 0 ? (2*atan2(s, q.w())/s)*q.v() : vector::zero;
+        const vector& c = centres_[patchi];
+        const vector t = q.transform(c - tr.t()) - c;
+        dgwarp_bridge::RigidMotion& m = out[patchi];
+        m.rigid = true;
+        for (direction k = 0; k < 3; ++k)
+        {
+            m.rotation[k] = w[k];
+            m.centre[k] = c[k];
+            m.translation[k] = t[k];
+        }
+    }
+    return out;
+}
+
+
 void Foam::dgwarpMotionSolver::checkFixedPatches() const
 {
     const polyBoundaryMesh& patches = mesh().boundaryMesh();
@@ -305,7 +347,7 @@ void Foam::dgwarpMotionSolver::solve()
     dgwarp_bridge::StepResult r;
     try
     {
-        r = solver_->step(displacement.data(), out.data());
+        r = solver_->step(displacement.data(), rigidMotions(), out.data());
     }
     catch (const dgwarp_bridge::Error& e)
     {

@@ -7,9 +7,12 @@ hexahedra): ctest runs them when the plugin is built (label openfoam).
 
 TEST:
   serial       moveDynamicMesh, 3 steps: every time's points are `dgwarp deform`'s with the
-               same boundary displacement (read from the written pointDisplacement), within
-               1e-12 of the mesh's size; checkMesh says Mesh OK at the last time
-  options      the same with method dg-idw and two of its options from dgwarpCoeffs
+               same motion (the plate's pitch and plunge as a rigid motion, which the
+               solidBodyMotionDisplacement condition gives dgwarp), within 1e-12 of the mesh's
+               size; checkMesh says Mesh OK at the last time
+  options      the same with method dg-idw, two of its options, and rotations false: against
+               `dgwarp deform` with the displacement read from the written pointDisplacement
+  trapping     OpenFOAM's floating-point traps on, a set-up whose prepare divides by zero
   parallel     decomposePar (2 processors), mpirun -np 2 moveDynamicMesh -parallel: every
                point as in the serial run (within 1e-12 of the mesh's size)
   inverting    a plunge into the channel's wall (dg-idw): a FatalError naming the inverted cells, exit != 0
@@ -17,6 +20,8 @@ TEST:
                saying so, before any step
 """
 import argparse
+import json
+import math
 import os
 import re
 import shutil
@@ -116,8 +121,34 @@ def times(case):
     return sorted((t for t in os.listdir(case) if re.fullmatch(r"[0-9.e+-]+", t) and t != "0"), key=float)
 
 
-def check_against_deform(case, dgwarp, deform_args):
-    """Each written time's points against `dgwarp deform` of the case with the same body displacement."""
+def displacement_motion(case, t, body):
+    """The motion file for `dgwarp deform` of time t: the body's displacement as written in t/pointDisplacement."""
+    d = read_vectors(os.path.join(case, t, "pointDisplacement"), field=True)
+    csv = os.path.join(case, f"body-{t}.csv")
+    with open(csv, "w") as f:
+        f.write("node,dx,dy,dz\n")
+        for n in body:
+            f.write(f"{n},{d[n][0]!r},{d[n][1]!r},{d[n][2]!r}\n")
+    return '{"markers": {"body": {"displacement_file": "%s"}}}' % os.path.basename(csv)
+
+
+def rigid_motion(amplitude_deg, plunge, frequency):
+    """The motion file for `dgwarp deform` of time t from pitching_body.py's motion itself: multiMotion's
+    septernion product x' = R(x + D), a pitch R by amplitude_deg sin(2 pi f t) about z through the origin
+    (the plate's bounding-box centre) and D = (0, plunge sin(2 pi f t), 0), is the rotation about the
+    origin followed by the translation R D."""
+    def motion(case, t, body):
+        s = math.sin(2 * math.pi * frequency * float(t))
+        theta = math.radians(amplitude_deg * s)
+        dy = plunge * s
+        return json.dumps({"markers": {"body": {
+            "rotate": {"angle_deg": amplitude_deg * s, "axis": [0, 0, 1], "center": [0, 0, 0]},
+            "translate": [-math.sin(theta) * dy, math.cos(theta) * dy, 0]}}})
+    return motion
+
+
+def check_against_deform(case, dgwarp, deform_args, motion_of):
+    """Each written time's points against `dgwarp deform` of the case with the motion motion_of(case, t, body)."""
     poly_mesh = os.path.join(case, "constant", "polyMesh")
     points0 = read_vectors(os.path.join(poly_mesh, "points"))
     body = patch_points(poly_mesh, "body")
@@ -126,15 +157,9 @@ def check_against_deform(case, dgwarp, deform_args):
     if not written:
         fail("moveDynamicMesh wrote no time")
     for t in written:
-        d = read_vectors(os.path.join(case, t, "pointDisplacement"), field=True)
-        csv = os.path.join(case, f"body-{t}.csv")
-        with open(csv, "w") as f:
-            f.write("node,dx,dy,dz\n")
-            for n in body:
-                f.write(f"{n},{d[n][0]!r},{d[n][1]!r},{d[n][2]!r}\n")
         motion = os.path.join(case, f"motion-{t}.json")
         with open(motion, "w") as f:
-            f.write('{"markers": {"body": {"displacement_file": "%s"}}}\n' % os.path.basename(csv))
+            f.write(motion_of(case, t, body) + "\n")
         reference = os.path.join(case, "reference")
         shutil.rmtree(reference, ignore_errors=True)
         os.makedirs(reference)
@@ -169,18 +194,35 @@ def test_serial(a):
     steps = re.findall(r"dgwarp: step .* 0 of 6300 cells inverted", log)
     if len(steps) != 3:
         fail(f"{len(steps)} dgwarp steps without inverted cells in the log, expected 3")
-    if len(check_against_deform(case, a.dgwarp, [])) != 3:
+    if len(check_against_deform(case, a.dgwarp, [], rigid_motion(10.0, 0.25, 1.0))) != 3:
         fail("expected 3 written times")
     check_mesh_ok(case, a.plugin_dir)
 
 
 def test_options(a):
+    # rotations false: the plate's displacement alone, as for any other condition.
     case = make_case(a.work, "options", a.plugin_dir, "--steps", "2", "--dt", "0.05", "--write-interval", "1",
-                     "--method", "dg-idw", "--option", "a-translation=5", "--option", "length-scale=auto")
+                     "--method", "dg-idw", "--option", "a-translation=5", "--option", "length-scale=auto",
+                     "--option", "rotations=false")
     _, log = foam(case, "moveDynamicMesh", a.plugin_dir)
     if "dgwarp dg-idw ( a-translation 5 length-scale auto ):" not in log:
         fail("the log does not name the method and its options:\n" + log[-3000:])
-    check_against_deform(case, a.dgwarp, ["--method", "dg-idw", "--a-translation", "5", "--length-scale", "auto"])
+    check_against_deform(case, a.dgwarp, ["--method", "dg-idw", "--a-translation", "5", "--length-scale", "auto"],
+                         displacement_motion)
+
+
+def test_trapping(a):
+    # OpenFOAM traps floating-point exceptions (FOAM_SIGFPE); the library's prepare divides by
+    # zero where harmless: with harmonic-wall-spacing 4 on this mesh it did, and the run died of
+    # SIGFPE before the bridge turned the traps off around every call.
+    # (Without the guard: its redo, the laplacian reference, takes 15 s here.)
+    case = make_case(a.work, "trapping", a.plugin_dir, "--steps", "2", "--dt", "0.05", "--write-interval", "1",
+                     "--option", "harmonic-wall-spacing=4", "--option", "harmonic-redo-below=-1")
+    _, log = foam(case, "moveDynamicMesh", a.plugin_dir)
+    if "trapFpe: Floating point exception trapping enabled" not in log:
+        fail("OpenFOAM did not trap floating-point exceptions: the test tests nothing")
+    check_against_deform(case, a.dgwarp, ["--harmonic-wall-spacing", "4", "--harmonic-redo-below", "-1"],
+                         rigid_motion(10.0, 0.25, 1.0))
 
 
 def test_parallel(a):
@@ -246,7 +288,7 @@ def test_bad_options(a):
         print(f"{' '.join(args)}: refused ({message})")
 
 
-TESTS = {"serial": test_serial, "options": test_options, "parallel": test_parallel, "inverting": test_inverting,
+TESTS = {"serial": test_serial, "options": test_options, "trapping": test_trapping, "parallel": test_parallel, "inverting": test_inverting,
          "bad-options": test_bad_options}
 
 
