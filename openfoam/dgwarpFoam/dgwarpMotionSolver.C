@@ -5,6 +5,7 @@
 #include "labelIOList.H"
 #include "processorCyclicPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "pyramidPointFaceRef.H"
 #include "solidBodyMotionDisplacementPointPatchVectorField.H"
 #include "valuePointPatchField.H"
 #include "wedgePolyPatch.H"
@@ -32,7 +33,7 @@ enum Role { fixedRole = 0, movingRole = 1, interfaceRole = 2 };
 bool solverEntry(const Foam::word& key)
 {
     return key == "method" || key == "repair" || key == "movingPatches" || key == "allowInverted" ||
-        key == "rotations";
+        key == "rotations" || key == "invertedCells";
 }
 
 // The one value of a method option's entry, as text.
@@ -133,7 +134,16 @@ void Foam::dgwarpMotionSolver::prepare()
     const dictionary& coeffs = coeffDict();
     dgwarp_bridge::Settings settings;
     settings.method = coeffs.lookupOrDefault<word>("method", "dg-harmonic");
-    settings.repair = coeffs.lookupOrDefault<word>("repair", "default");
+    // No repair by default: a repair runs on one process only, and the points
+    // must not depend on the number of processes.
+    settings.repair = coeffs.lookupOrDefault<word>("repair", "none");
+    const word criterion = coeffs.lookupOrDefault<word>("invertedCells", "pyramids");
+    if (criterion != "pyramids" && criterion != "corners")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "dgwarpCoeffs: invertedCells must be pyramids (checkMesh's criterion) or corners (Knupp's), got "
+            << criterion << exit(FatalIOError);
+    }
     for (const entry& e : coeffs)
     {
         if (!solverEntry(e.keyword())) settings.options.emplace_back(e.keyword(), entryText(coeffs, e));
@@ -299,6 +309,71 @@ std::vector<dgwarp_bridge::RigidMotion> Foam::dgwarpMotionSolver::rigidMotions()
 }
 
 
+Foam::labelList Foam::dgwarpMotionSolver::invalidCells(const pointField& points) const
+{
+    const faceList& faces = mesh().faces();
+    const labelList& own = mesh().faceOwner();
+    const labelList& nei = mesh().faceNeighbour();
+    const label nCells = mesh().nCells();
+
+    // Face centres and areas, then cell centres and volumes, as fvMesh
+    // (primitiveMesh::makeCellCentresAndVols).
+    vectorField fCtrs(faces.size()), fAreas(faces.size());
+    forAll(faces, facei)
+    {
+        fCtrs[facei] = faces[facei].centre(points);
+        fAreas[facei] = faces[facei].areaNormal(points);
+    }
+    vectorField cEst(nCells, Zero);
+    labelList nCellFaces(nCells, 0);
+    forAll(own, facei)
+    {
+        cEst[own[facei]] += fCtrs[facei];
+        ++nCellFaces[own[facei]];
+    }
+    forAll(nei, facei)
+    {
+        cEst[nei[facei]] += fCtrs[facei];
+        ++nCellFaces[nei[facei]];
+    }
+    forAll(cEst, celli) cEst[celli] /= nCellFaces[celli];
+    vectorField cellCtrs(nCells, Zero);
+    scalarField cellVols(nCells, 0);
+    forAll(own, facei)
+    {
+        const scalar pyr3Vol = fAreas[facei] & (fCtrs[facei] - cEst[own[facei]]);
+        cellCtrs[own[facei]] += pyr3Vol*((3.0/4.0)*fCtrs[facei] + (1.0/4.0)*cEst[own[facei]]);
+        cellVols[own[facei]] += pyr3Vol;
+    }
+    forAll(nei, facei)
+    {
+        const scalar pyr3Vol = fAreas[facei] & (cEst[nei[facei]] - fCtrs[facei]);
+        cellCtrs[nei[facei]] += pyr3Vol*((3.0/4.0)*fCtrs[facei] + (1.0/4.0)*cEst[nei[facei]]);
+        cellVols[nei[facei]] += pyr3Vol;
+    }
+    forAll(cellCtrs, celli)
+    {
+        cellCtrs[celli] = mag(cellVols[celli]) > VSMALL ? cellCtrs[celli]/cellVols[celli] : cEst[celli];
+    }
+    cellVols /= 3.0;
+
+    // checkFacePyramids and checkCellVolumes.
+    boolList bad(nCells, false);
+    forAll(cellVols, celli) bad[celli] = cellVols[celli] < VSMALL;
+    forAll(faces, facei)
+    {
+        if (-pyramidPointFaceRef(faces[facei], cellCtrs[own[facei]]).mag(points) < -SMALL) bad[own[facei]] = true;
+        if (facei < nei.size() && pyramidPointFaceRef(faces[facei], cellCtrs[nei[facei]]).mag(points) < -SMALL)
+        {
+            bad[nei[facei]] = true;
+        }
+    }
+    DynamicList<label> out;
+    forAll(bad, celli) if (bad[celli]) out.append(celli);
+    return labelList(std::move(out));
+}
+
+
 void Foam::dgwarpMotionSolver::checkFixedPatches() const
 {
     const polyBoundaryMesh& patches = mesh().boundaryMesh();
@@ -379,22 +454,40 @@ void Foam::dgwarpMotionSolver::solve()
 
     if (inverted > 0)
     {
+        // Cells with a folded corner (Knupp's quality <= 0): does OpenFOAM refuse them too?
+        const labelList refused(r.inverted > 0 ? invalidCells(newPoints_) : labelList());
+        const label nRefused = returnReduce(refused.size(), sumOp<label>());
+        const bool corners = coeffDict().lookupOrDefault<word>("invertedCells", "pyramids") == "corners";
         if (r.inverted > 0)
         {
             std::ostringstream cellsText;
             for (const auto c : r.worst_inverted) cellsText << " " << c;
-            Pout<< "dgwarp: " << label(r.inverted) << " inverted cells here, the worst:" << cellsText.str().c_str()
-                << endl;
+            Pout<< "dgwarp: " << label(r.inverted) << " cells with a folded corner here, the worst:"
+                << cellsText.str().c_str();
+            if (refused.size())
+            {
+                Pout<< "; " << refused.size() << " with a negative face pyramid or volume:";
+                for (label i = 0; i < min(refused.size(), label(10)); ++i) Pout<< " " << refused[i];
+            }
+            Pout<< endl;
         }
-        if (coeffDict().lookupOrDefault<bool>("allowInverted", false))
+        const label bad = corners ? inverted : nRefused;
+        const word what = corners ? "folds a corner of" : "inverts (negative face pyramids or volumes)";
+        if (bad == 0)
         {
-            WarningInFunction << "dgwarp: the motion at time " << time().timeName() << " inverts " << inverted
+            WarningInFunction << "dgwarp: the motion at time " << time().timeName() << " folds a corner of "
+                << inverted << " cells (Knupp's quality <= 0), whose face pyramids are all positive: OpenFOAM's"
+                << " checkMesh accepts them; going on (invertedCells corners: an error)" << endl;
+        }
+        else if (coeffDict().lookupOrDefault<bool>("allowInverted", false))
+        {
+            WarningInFunction << "dgwarp: the motion at time " << time().timeName() << " " << what << " " << bad
                 << " cells (allowInverted: going on)" << endl;
         }
         else
         {
             FatalErrorInFunction
-                << "dgwarp: the motion at time " << time().timeName() << " inverts " << inverted << " of the "
+                << "dgwarp: the motion at time " << time().timeName() << " " << what << " " << bad << " of the "
                 << cells << " cells (listed above, the worst first); smaller time steps or motions, another method,"
                 << " or allowInverted true in dgwarpCoeffs to go on" << exit(FatalError);
         }

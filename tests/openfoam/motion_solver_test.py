@@ -16,6 +16,8 @@ TEST:
   parallel     decomposePar (2 processors), mpirun -np 2 moveDynamicMesh -parallel: every
                point as in the serial run (within 1e-12 of the mesh's size)
   inverting    a plunge into the channel's wall (dg-idw): a FatalError naming the inverted cells, exit != 0
+  folded-corners  cells with a folded corner but positive face pyramids: a warning (checkMesh
+               accepts them), a FatalError with invertedCells corners
   bad-options  an option of another method, an unknown option, an unknown patch: FatalErrors
                saying so, before any step
 """
@@ -262,9 +264,11 @@ def test_inverting(a):
     code, log = foam(case, "moveDynamicMesh", a.plugin_dir, expect_ok=False)
     if code == 0:
         fail("moveDynamicMesh exited 0 on an inverting motion")
-    if not re.search(r"dgwarp: the motion at time 0.25 inverts \d+ of the 6300 cells", log):
+    if not re.search(r"dgwarp: the motion at time 0.25 inverts \(negative face pyramids or volumes\) \d+ of the "
+                     r"6300 cells", log):
         fail("no FatalError naming the inverted cells:\n" + log[-3000:])
-    if not re.search(r"dgwarp: \d+ inverted cells here, the worst: \d+", log):
+    if not re.search(r"dgwarp: \d+ cells with a folded corner here, the worst: \d+.*; \d+ with a negative face "
+                     r"pyramid or volume: \d+", log):
         fail("the log does not list the worst inverted cells:\n" + log[-3000:])
     if os.path.exists(os.path.join(case, "0.25")):
         fail("a time folder was written for the inverting step")
@@ -288,7 +292,29 @@ def test_bad_options(a):
         print(f"{' '.join(args)}: refused ({message})")
 
 
-TESTS = {"serial": test_serial, "options": test_options, "trapping": test_trapping, "parallel": test_parallel, "inverting": test_inverting,
+def test_folded_corners(a):
+    # Pitch 4 degrees and plunge 0.05 at once (dg-idw): 8 cells get a folded corner
+    # (Knupp's quality <= 0) whose face pyramids stay positive. OpenFOAM's checkMesh accepts
+    # them: a warning and the run goes on; with invertedCells corners, a FatalError.
+    args = ["--steps", "1", "--dt", "0.25", "--plunge", "0.05", "--amplitude-deg", "4", "--method", "dg-idw"]
+    case = make_case(a.work, "corners", a.plugin_dir, *args)
+    code, log = foam(case, "moveDynamicMesh", a.plugin_dir, expect_ok=False)
+    m = re.search(r"dgwarp: step .* (\d+) of 6300 cells inverted", log)
+    if not m or int(m.group(1)) == 0:
+        fail("the set-up folds no corner: the test tests nothing\n" + log[-3000:])
+    if "with a negative face pyramid" in log:
+        fail("the set-up makes cells OpenFOAM refuses too: the test tests nothing\n" + log[-3000:])
+    if code != 0 or "whose face pyramids are all positive: OpenFOAM's checkMesh accepts them; going on" not in log:
+        fail(f"exit {code}: expected a warning and the run to go on\n" + log[-3000:])
+    check_mesh_ok(case, a.plugin_dir)
+    case = make_case(a.work, "corners-strict", a.plugin_dir, *args, "--option", "invertedCells=corners")
+    code, log = foam(case, "moveDynamicMesh", a.plugin_dir, expect_ok=False)
+    if code == 0 or not re.search(r"the motion at time 0.25 folds a corner of \d+ of the 6300 cells", log):
+        fail(f"invertedCells corners: expected a FatalError, got exit {code}\n" + log[-3000:])
+    print(f"{m.group(1)} cells with a folded corner: a warning (pyramids), a FatalError (corners)")
+
+
+TESTS = {"folded-corners": test_folded_corners, "serial": test_serial, "options": test_options, "trapping": test_trapping, "parallel": test_parallel, "inverting": test_inverting,
          "bad-options": test_bad_options}
 
 
