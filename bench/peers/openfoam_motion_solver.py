@@ -15,10 +15,12 @@ case folder:
     per solve: bench/peers/openfoam.sh's converged set-up), on one process and on
     --processors processes (decomposePar -copyZero, mpirun ... -parallel);
   - pimpleFoam (laminar) for --pimple-steps steps with each, on one process.
-Measured: per mesh update, the seconds from a time step's "Time = " line to the first line
-after the motion solve (the lines are time-stamped as OpenFOAM prints them: mesh.update(),
-i.e. the motion solve and OpenFOAM's geometry update), the first step (which prepares
-dgwarp) apart; the whole run's wall time; at every written time, checkMesh's worst
+Measured (moveDynamicMesh; the lines are time-stamped as OpenFOAM prints them), per time
+step: the motion solve, from the step's "Time = " line to the motion solver's last line
+(dgwarp's step line; displacementLaplacian's last GAMG solve), and the mesh update, to the
+first line after mesh.update() (checkMesh's), which adds OpenFOAM's own update of the mesh's
+geometry; medians and means over the steps after the first (which prepares dgwarp); the
+whole run's wall time (pimpleFoam: this alone, its lines after the update being its own); at every written time, checkMesh's worst
 non-orthogonality and skewness and dgwarp's Knupp quality (min) of the moved mesh; for the
 parallel dgwarp run, the largest difference of its points from the serial run's.
 OpenMP threads per process: --threads (1: OpenFOAM is single-threaded, one core each).
@@ -69,13 +71,18 @@ MOTION_LINE = re.compile(r"^(PIMPLE: iteration|dgwarp|GAMG:\s+Solving for cellDi
 
 
 def update_seconds(lines):
-    """Per time step, the seconds from its 'Time = ' line to the first line after the motion solve."""
-    out, start = [], None
+    """Per time step of moveDynamicMesh: (motion solve, mesh update) seconds: from its 'Time = ' line
+    to the motion solver's last line (dgwarp's step line, displacementLaplacian's last GAMG solve of
+    cellDisplacement), and to the first line after the update (checkMesh's), which adds OpenFOAM's
+    own update of the mesh's geometry (movePoints)."""
+    out, start, solved = [], None, None
     for t, line in lines:
         if line.startswith("Time = "):
-            start = t
+            start, solved = t, None
+        elif start is not None and (line.startswith("dgwarp: step") or "Solving for cellDisplacement" in line):
+            solved = t
         elif start is not None and not MOTION_LINE.match(line):
-            out.append(t - start)
+            out.append((solved - start if solved is not None else None, t - start))
             start = None
     return out
 
@@ -133,11 +140,14 @@ def run(a, name, solver, application, steps, parallel=False):
         command = f"mpirun -np {a.processors} --oversubscribe --bind-to none {application} -parallel"
     print(f"  {name}: {command} ...", flush=True)
     lines, wall = run_foam(case, command, a, os.path.join(case, "run.log"))
-    updates = update_seconds(lines)
     r = {"name": name, "solver": solver, "application": application, "processes": a.processors if parallel else 1,
-         "steps": steps, "wall_seconds": wall, "first_update": updates[0] if updates else None,
-         "update_median": statistics.median(updates[1:]) if len(updates) > 1 else None,
-         "update_mean": statistics.mean(updates[1:]) if len(updates) > 1 else None, "updates": len(updates)}
+         "steps": steps, "wall_seconds": wall}
+    if application == "moveDynamicMesh":  # (pimpleFoam's lines after the update are its own: whole run only)
+        updates = update_seconds(lines)
+        solves = [u[0] for u in updates[1:] if u[0] is not None]
+        r.update({"first_update": updates[0][1], "update_median": statistics.median(u[1] for u in updates[1:]),
+                  "update_mean": statistics.mean(u[1] for u in updates[1:]), "updates": len(updates),
+                  "solve_median": statistics.median(solves), "solve_mean": statistics.mean(solves)})
     r.update(check_mesh(case, a, parallel))
     if not parallel:
         written = mst.times(case)
@@ -200,22 +210,29 @@ def main():
     print(f"- pitching_body.py --resolution {a.resolution}: {cells.group(1) if cells else '?'} cells; "
           f"{a.steps} steps of {a.dt} s (moveDynamicMesh), {a.pimple_steps} (pimpleFoam)")
     print(f"- load before {' '.join(load_before)}, after {' '.join(load_after)}\n")
-    print("| run | processes | first update s | update s (median) | update s (mean) | whole run s | "
-          "min quality | max non-orth. | max skewness | checkMesh |")
+    def f(r, key, digits):
+        return f"{r[key]:.{digits}f}" if r.get(key) is not None else "-"
+
+    print("| run | processes | first update s | motion solve s (median, mean) | mesh update s (median, mean) | "
+          "whole run s | min quality | max non-orth. | max skewness | checkMesh |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for r in results:
-        q = f"{r['quality_min']:.4f}" if "quality_min" in r else "-"
         ok = "Mesh OK" if r["failed"] == 0 and r["mesh_ok"] else f"{r['failed']} failed"
-        print(f"| {r['name']} ({r['application']}) | {r['processes']} | {r['first_update']:.3f} | "
-              f"{r['update_median']:.4f} | {r['update_mean']:.4f} | {r['wall_seconds']:.1f} | {q} | "
+        print(f"| {r['name']} ({r['application']}) | {r['processes']} | {f(r, 'first_update', 3)} | "
+              f"{f(r, 'solve_median', 4)}, {f(r, 'solve_mean', 4)} | {f(r, 'update_median', 4)}, {f(r, 'update_mean', 4)} | "
+              f"{r['wall_seconds']:.1f} | {f(r, 'quality_min', 4)} | "
               f"{r['non_orthogonality']:.2f} | {r['skewness']:.3f} | {ok} |")
     by = {r["name"]: r for r in results}
     print()
-    for suffix in ["serial"] + ([f"P{a.processors}"] if not a.skip_parallel else []) + (["pimpleFoam"] if not a.skip_pimple else []):
+    for suffix in ["serial"] + ([f"P{a.processors}"] if not a.skip_parallel else []):
         d, l = by.get(f"dgwarp-{suffix}"), by.get(f"displacementLaplacian-{suffix}")
         if d and l:
-            print(f"- {suffix}: displacementLaplacian / dgwarp per mesh update (median) "
-                  f"{l['update_median'] / d['update_median']:.1f}x; whole run {l['wall_seconds'] / d['wall_seconds']:.1f}x")
+            print(f"- moveDynamicMesh, {suffix}: displacementLaplacian / dgwarp: motion solve (median) "
+                  f"{l['solve_median'] / d['solve_median']:.1f}x, mesh update {l['update_median'] / d['update_median']:.1f}x, "
+                  f"whole run {l['wall_seconds'] / d['wall_seconds']:.1f}x")
+    d, l = by.get("dgwarp-pimpleFoam"), by.get("displacementLaplacian-pimpleFoam")
+    if d and l:
+        print(f"- pimpleFoam, serial: whole run {l['wall_seconds'] / d['wall_seconds']:.1f}x")
     if "difference_from_serial" in by.get(f"dgwarp-P{a.processors}", {}):
         print(f"- dgwarp on {a.processors} processes against one: largest point difference "
               f"{by[f'dgwarp-P{a.processors}']['difference_from_serial']:.3g}")

@@ -148,6 +148,13 @@ void Foam::dgwarpMotionSolver::prepare()
     {
         if (!solverEntry(e.keyword())) settings.options.emplace_back(e.keyword(), entryText(coeffs, e));
     }
+    // dg-harmonic's guard off unless asked for: its redo (the laplacian reference on the
+    // whole mesh) needs the cells, which a parallel run's plan does not have, and takes
+    // seconds to minutes, too long for a time step.
+    if (settings.method == "dg-harmonic" && !coeffs.found("harmonic-redo-below"))
+    {
+        settings.options.emplace_back("harmonic-redo-below", "-1");
+    }
     const bool listed = coeffs.found("movingPatches");
     const wordRes movingNames(listed ? coeffs.get<wordRes>("movingPatches") : wordRes());
 
@@ -447,7 +454,9 @@ void Foam::dgwarpMotionSolver::solve()
     const scalar minQuality = returnReduce(r.min_quality, minOp<scalar>());
     const scalar meanQuality = returnReduce(r.mean_quality*r.cells, sumOp<scalar>())/max(cells, label(1));
     const scalar stepSeconds = returnReduce(r.step_seconds, maxOp<scalar>());
-    Info<< "dgwarp: step " << stepSeconds << " s, quality min " << minQuality << " mean " << meanQuality;
+    const scalar qualitySeconds = returnReduce(r.quality_seconds, maxOp<scalar>());
+    Info<< "dgwarp: step " << stepSeconds << " s, measure " << qualitySeconds << " s, quality min " << minQuality
+        << " mean " << meanQuality;
     if (redo) Info<< ", dg-harmonic's guard kept the laplacian reference's result";
     if (repaired) Info<< ", " << (r.last_resort ? "last resort" : "untangling") << " mended " << repaired << " cells";
     Info<< ", " << inverted << " of " << cells << " cells inverted" << endl;
