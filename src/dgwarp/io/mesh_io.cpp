@@ -1,6 +1,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cctype>
 
 #include "dgwarp/core/error.hpp"
@@ -61,6 +62,12 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
         if (progress) progress(1.0);
         return mesh;
     }
+    // No extension and nothing there (a case folder that is not there): say so, as for a
+    // missing file of a known type, not "files of type ''".
+    if (std::error_code ec; ext.empty() && !std::filesystem::exists(path, ec) && !ec)
+        throw IoError(path.string(), "cannot open file for reading: No such file or directory (dgwarp reads " +
+                                         joined(readable_extensions()) + " files and OpenFOAM case folders)",
+                      ENOENT);
     throw FormatError(path.string() + ": cannot read files of type '" + ext + "'; dgwarp reads " +
                       joined(readable_extensions()) + " and OpenFOAM case folders");
 }
