@@ -8,23 +8,15 @@
 #include <string>
 
 #include "dgwarp/core/error.hpp"
+#include "support/test_paths.hpp"
 
 using namespace dgwarp;
 
-namespace {
-
-std::filesystem::path scratch(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("dgwarp-mesh-io-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir / name;
-}
-
-}  // namespace
-
 TEST(ReadMesh, APathWithoutExtensionThatIsNotThereIsAMissingFile) {
+    const auto dir = test::scratch_dir();
     // Without an extension it would be an OpenFOAM case; it is not there at all.
     for (const std::string name : {"nosuchcase", "nosuch/"}) {
-        const auto path = scratch(name);
+        const auto path = dir / name;
         try {
             read_mesh(path);
             FAIL() << name << ": no error";
@@ -38,7 +30,8 @@ TEST(ReadMesh, APathWithoutExtensionThatIsNotThereIsAMissingFile) {
 }
 
 TEST(ReadMesh, AFileOfAnUnknownTypeSaysWhichTypesAreReadThereOrNot) {
-    const auto path = scratch("mesh.xyz"), missing = scratch("missing.xyz");
+    const auto dir = test::scratch_dir();
+    const auto path = dir / "mesh.xyz", missing = dir / "missing.xyz";
     std::ofstream(path) << "1 2 3\n";
     for (const auto& p : {path, missing}) {
         try {
@@ -49,5 +42,4 @@ TEST(ReadMesh, AFileOfAnUnknownTypeSaysWhichTypesAreReadThereOrNot) {
                                                           ".msh, .vtu, .cgns and OpenFOAM case folders");
         }
     }
-    std::filesystem::remove_all(path.parent_path());
 }
