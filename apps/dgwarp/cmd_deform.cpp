@@ -13,6 +13,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
@@ -244,6 +245,20 @@ void run_deform(const DeformArgs& given) {
     const std::size_t frames = frame_count(in.spec);
     WarningPrinter warnings(text);
     if (text) print_inputs(std::cout, in, frames, warnings);
+    // A decomposed case in its usual layout: which mesh this run reads and writes.
+    std::vector<std::string> layout_warnings;
+    if (reads_openfoam(a.setup.mesh))
+        if (const auto folders = openfoam_unread_processor_folders(a.setup.mesh); !folders.empty()) {
+            layout_warnings.push_back(
+                a.setup.mesh + " holds constant/polyMesh and " + std::to_string(folders.size()) + " processor folder" +
+                (folders.size() > 1 ? "s (" + folders.front().filename().string() + " ... " +
+                                          folders.back().filename().string() + ")"
+                                    : " (" + folders.front().filename().string() + ")") +
+                ": this run reads and writes the whole mesh (constant/polyMesh) only; a parallel run reads the "
+                "processor folders, which it does not change (to deform them, give dgwarp a folder holding only the "
+                "processor folders: docs/OPENFOAM.md)");
+            warnings.print(layout_warnings.back());
+        }
 
     std::vector<MethodRun> runs;
     for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, foam_times, progress, warnings));
@@ -287,6 +302,10 @@ void run_deform(const DeformArgs& given) {
             for (const auto& [key, value] : run.items()) j[key] = value;
         }
         for (const auto& w : stale_warnings) {
+            j["warnings"].push_back(w);
+            j["warning_items"].push_back(warning_json({WarningCode::other, w}));
+        }
+        for (const auto& w : layout_warnings) {
             j["warnings"].push_back(w);
             j["warning_items"].push_back(warning_json({WarningCode::other, w}));
         }

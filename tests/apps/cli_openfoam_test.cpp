@@ -251,3 +251,36 @@ TEST(CliOpenFoam, Su2MeshesConvertToOpenFoamAndBackInTheDocumentedOrder) {
     EXPECT_EQ(info.exit_code, 0) << info.err;
     EXPECT_NE(info.out.find("inverted      0 of " + std::to_string(original.cells.size())), std::string::npos) << info.out;
 }
+
+// decomposePar's usual layout (constant/polyMesh and processor folders): the
+// whole mesh is read and written, and a warning names the processor folders
+// a parallel run would read, which stay as they were (issue #30 item 4).
+TEST(CliOpenFoam, AnUsualDecomposedLayoutSaysOnlyTheWholeMeshIsDeformed) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    const auto c = foam_case_copy("mixed", dir);
+    for (const char* p : {"processor0", "processor1"})
+        std::filesystem::copy(openfoam_case("mixed-decomposed") / p, c / p, std::filesystem::copy_options::recursive);
+    const auto processors_before = foam_tree(c / "processor1");
+    CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string expected = c.string() +
+                                 " holds constant/polyMesh and 2 processor folders (processor0 ... processor1): this run "
+                                 "reads and writes the whole mesh (constant/polyMesh) only";
+    EXPECT_NE(r.err.find("warning: " + expected), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(c / "0" / "polyMesh" / "points"));
+    EXPECT_FALSE(std::filesystem::exists(c / "processor0" / "0"));
+    EXPECT_EQ(foam_tree(c / "processor1"), processors_before);
+    r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(dir / "out.su2") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    bool found = false;
+    for (const auto& w : j.at("warnings")) found = found || w.get<std::string>().starts_with(expected);
+    EXPECT_TRUE(found) << j.at("warnings").dump();
+    // Without constant/polyMesh the same folder is the decomposed case: no warning.
+    std::filesystem::remove_all(c / "constant" / "polyMesh");
+    std::filesystem::remove_all(c / "0");
+    r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("processor folders"), std::string::npos) << r.err;
+}

@@ -75,6 +75,12 @@ std::filesystem::path find_poly_mesh(const std::filesystem::path& path);
 /// collated decomposition (one processors<N> folder).
 std::vector<std::filesystem::path> openfoam_processor_meshes(const std::filesystem::path& path);
 
+/// The processorN folders of a decomposed case in its usual layout: `path`
+/// holds constant/polyMesh (which read_openfoam reads and deform writes) and
+/// processor folders beside it (which a parallel OpenFOAM run reads), sorted
+/// by N; empty when `path` has no constant/polyMesh or no processor folder.
+std::vector<std::filesystem::path> openfoam_unread_processor_folders(const std::filesystem::path& path);
+
 /// One processor of a decomposed case, read alone (under mpirun each process
 /// reads its own: docs/MPI.md). `mesh` is its polyMesh as read_openfoam reads
 /// a polyMesh, in the processor's numbering: its markers are the patches

@@ -82,6 +82,18 @@ foam::OrderedCell case_ordered_cell(const Mesh& m, std::size_t c, const std::vec
 
 }  // namespace
 
+std::vector<fs::path> openfoam_unread_processor_folders(const fs::path& path) {
+    if (!is_folder(path) || !is_folder(path / "constant" / "polyMesh")) return {};
+    std::map<long, fs::path> found;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(path, ec))
+        if (const long n = processor_number(entry.path().filename().string(), "processor"); n >= 0 && is_folder(entry.path()))
+            found[n] = entry.path();
+    std::vector<fs::path> folders;
+    for (const auto& [n, folder] : found) folders.push_back(folder);
+    return folders;
+}
+
 std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
     std::error_code ec;
     if (!is_folder(path) || is_folder(path / "constant" / "polyMesh")) return {};
