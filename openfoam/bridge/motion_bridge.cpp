@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <climits>
 #include <cstdio>
 #include <exception>
 #include <fenv.h>
@@ -20,6 +19,7 @@
 #ifdef DGWARP_BRIDGE_MPI
 #include <mpi.h>
 
+#include "dgwarp/mpi/collective_checks.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
 #endif
 
@@ -30,23 +30,6 @@ namespace {
 using dgwarp::Method;
 using dgwarp::NodeId;
 
-#ifdef DGWARP_BRIDGE_MPI
-/// Every process learns whether one failed, and the first failing one's message:
-/// a failure on one process must not leave the others waiting in a collective call.
-void agree(const std::string& failure) {
-    int rank = 0, size = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    int first = failure.empty() ? INT_MAX : rank;
-    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (first == INT_MAX) return;
-    int length = rank == first ? static_cast<int>(failure.size()) : 0;
-    MPI_Bcast(&length, 1, MPI_INT, first, MPI_COMM_WORLD);
-    std::string message = rank == first ? failure : std::string(static_cast<std::size_t>(length), ' ');
-    MPI_Bcast(message.data(), length, MPI_CHAR, first, MPI_COMM_WORLD);
-    throw Error(rank == first ? message : "processor " + std::to_string(first) + ": " + message);
-}
-#endif
 
 /// Floating-point traps off while the library runs, on every OpenMP thread,
 /// and as they were afterwards. OpenFOAM traps invalid operations, division by
@@ -219,7 +202,8 @@ Solver::Solver(PolyMesh mesh, const Settings& settings, const Parallel* parallel
     dgwarp::Stopwatch sw;
 #ifdef DGWARP_BRIDGE_MPI
     if (s.parallel) {
-        agree(failure);
+        // Every process throws, or none (the failing one with its message).
+        translated([&] { dgwarp::mpi::detail::throw_if_any_failed(MPI_COMM_WORLD, failure, "the mesh or the settings"); });
         // prepare_distributed agrees on its own failures (every process throws).
         translated([&] {
             s.distributed.emplace(dgwarp::mpi::prepare_distributed(MPI_COMM_WORLD, s.method, 3, s.mesh.points,
@@ -283,7 +267,7 @@ StepResult Solver::step(const double* displacement, const std::vector<RigidMotio
                                std::to_string(d[k]) + " in coordinate " + std::to_string(k) + ")";
         }
 #ifdef DGWARP_BRIDGE_MPI
-        if (s.parallel) agree(mismatch);  // every process throws, or none
+        if (s.parallel) dgwarp::mpi::detail::throw_if_any_failed(MPI_COMM_WORLD, mismatch, "a patch's rigid motion");
 #endif
         if (!mismatch.empty()) throw Error(mismatch);
         const std::span<double> out(new_points, s.mesh.points.size());
