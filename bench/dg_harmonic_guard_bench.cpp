@@ -1,7 +1,10 @@
 // DG-harmonic's guard on a mesh file (issue #26's speed acceptance): the
 // default's prepare and step with and without its guard against DG-IDW's, one
 // thread then two, on the first frame of a motion file; the guard's measure
-// alone, and the one pass's time inside a guarded step.
+// alone, and the one pass's time inside a guarded step; then what the run
+// layer (dgwarp deform, Python, the OpenFOAM plugin) runs: prepare_for_frames
+// and frames of step_frame + finish_frame, where the guard judges the one pass
+// on the frame's own measure.
 //
 // Usage: dgwarp_bench_guard MESH MOTION.json [--steps N]
 //   e.g. dgwarp case squeezed-sphere --size 2 -o s2.msh --motions s2 (865k nodes), then
@@ -9,6 +12,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +24,8 @@
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
+#include "dgwarp/run/deform_frame.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 #include "bench_timing.hpp"
 
 using namespace dgwarp;
@@ -66,6 +72,38 @@ void run(const Mesh& mesh, const BoundarySet& boundary, const BoundaryMotion& mo
                 guard_prepare, guard_prepare / idw_prepare, 1e3 * guard_step, guard_step / idw_step, 1e3 * measure,
                 r.guard.redone ? "yes" : "no", r.guard.one_pass.min_quality,
                 static_cast<long long>(r.guard.one_pass.inverted));
+
+    // What `dgwarp deform`, Python and the OpenFOAM plugin run (the run
+    // layer): prepare_for_frames (DG-harmonic's guard without its own
+    // measure), then per frame step_frame and finish_frame's measure, which
+    // every method's frame has; DG-harmonic's guard judges its one pass on it.
+    const OriginalCells original = measure_original(mesh);
+    Plan idw_run, harm_run;
+    const double idw_run_prepare =
+        median_seconds(3, [&] { idw_run = prepare_for_frames(Method::dg_idw, mesh, boundary); });
+    const double harm_run_prepare =
+        median_seconds(3, [&] { harm_run = prepare_for_frames(Method::dg_harmonic, mesh, boundary); });
+    const auto frame = [&](const Plan& p, double& step_seconds) {
+        std::vector<double> steps_seen;
+        const double whole = median_seconds(steps, [&] {
+            FrameReport report;
+            std::optional<FrameCells> cells =
+                step_frame(p, mesh, original, boundary.nodes, motion, {}, out, report);
+            finish_frame(plan_method(p), mesh, original, boundary.nodes, {}, out, report, {}, std::move(cells));
+            steps_seen.push_back(report.step_seconds);
+        });
+        std::sort(steps_seen.begin(), steps_seen.end());
+        step_seconds = steps_seen[steps_seen.size() / 2];
+        return whole;
+    };
+    double idw_run_step = 0, harm_run_step = 0;
+    const double idw_frame = frame(idw_run, idw_run_step), harm_frame = frame(harm_run, harm_run_step);
+    std::printf("  run layer (dgwarp deform): dg-idw prepare %.3f s, step %.2f ms, frame %.2f ms (step, repair, measure)\n",
+                idw_run_prepare, 1e3 * idw_run_step, 1e3 * idw_frame);
+    std::printf("  run layer (dgwarp deform): dg-harmonic prepare %.3f s (%.2f x), step %.2f ms (%.2f x; the guard "
+                "judges on the frame's measure), frame %.2f ms (%.2f x)\n",
+                harm_run_prepare, harm_run_prepare / idw_run_prepare, 1e3 * harm_run_step, harm_run_step / idw_run_step,
+                1e3 * harm_frame, harm_frame / idw_frame);
 }
 
 /// The mesh with its nodes renumbered along a Morton curve and its cells in

@@ -90,18 +90,14 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
     // all); errors anywhere else (reading a frame's motion, writing) end the command.
     bool in_step = false;
     std::vector<double> process_seconds;
-    on.step = [&](const ResolvedFrame& motion, std::span<double> out, const ProgressFn& report) {
-        in_step = true;
-        const StepReport step =
-            run.planned.distributed
-                ? mpi_deform(*run.planned.distributed, motion.motion, out, process_seconds)
-                // A frame whose boundary motion turns faces over (warned): no volume
-                // method mends their cells, so DG-harmonic's guard does not try.
-                : deform(run.planned.plan, in.mesh.points, motion.motion, out,
-                         step_options(run.planned.options, motion.folded_faces), report);
-        in_step = false;
-        return step;
-    };
+    on.step_running = [&](bool running) { in_step = running; };
+    // One process: the plan's own step (run/deform_frame.hpp's step_frame,
+    // DG-harmonic's guard on the frame's measure); spread over processes:
+    // theirs, together.
+    if (run.planned.distributed)
+        on.step = [&](const ResolvedFrame& motion, std::span<double> out, const ProgressFn&) {
+            return mpi_deform(*run.planned.distributed, motion.motion, out, process_seconds);
+        };
     on.frame_done = [&](const FrameView& v) {
         FrameResult f;
         static_cast<FrameReport&>(f) = v.report;

@@ -12,6 +12,7 @@
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/plan_file.hpp"
 #include "dgwarp/methods/option_names.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
 #include "report.hpp"
 
@@ -321,17 +322,14 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
             p.options.dg_harmonic.redo_below = asked.dg_harmonic.redo_below;
         }
         // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
-        if (auto* h = std::get_if<DgHarmonicPlan>(&loaded); h && !in.mesh.cells.empty())
-            h->guard = make_dg_harmonic_guard(in.mesh.dim, in.mesh.points, in.mesh.cells, in.boundary.boundary,
-                                              guard_laplacian_options(p.options.laplacian, p.options.dg_harmonic));
+        attach_frame_guard(loaded, in.mesh, in.boundary.boundary, p.options);
         refuse_other_methods_options(in.args, p.method);
         p.plan = std::move(loaded);
     } else {
         refuse_other_methods_options(in.args, method);
         const std::string phase = "preparing " + std::string(method_name(method));
         progress.phase(phase);
-        p.plan = prepare(method, in.mesh.dim, in.mesh.points, in.mesh.cells, in.boundary.boundary, p.options,
-                         progress.reporter(phase));
+        p.plan = prepare_for_frames(method, in.mesh, in.boundary.boundary, p.options, progress.reporter(phase));
     }
     p.prepare_seconds = sw.lap();
     progress.clear();

@@ -16,6 +16,7 @@
 #include "dgwarp/methods/option_names.hpp"
 #include "dgwarp/run/deform_frame.hpp"
 #include "dgwarp/run/original_cells.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 #ifdef DGWARP_BRIDGE_MPI
 #include <mpi.h>
 
@@ -213,7 +214,7 @@ Solver::Solver(PolyMesh mesh, const Settings& settings, const Parallel* parallel
         return;
     }
 #endif
-    translated([&] { s.plan.emplace(dgwarp::prepare(s.method, 3, s.mesh.points, s.mesh.cells, s.boundary, s.options)); });
+    translated([&] { s.plan.emplace(dgwarp::prepare_for_frames(s.method, s.mesh, s.boundary, s.options)); });
     s.prepare_seconds = sw.lap();
 }
 
@@ -272,14 +273,17 @@ StepResult Solver::step(const double* displacement, const std::vector<RigidMotio
         if (!mismatch.empty()) throw Error(mismatch);
         const std::span<double> out(new_points, s.mesh.points.size());
         dgwarp::FrameReport report;
-        dgwarp::Stopwatch sw;
+        std::optional<dgwarp::FrameCells> measured;
 #ifdef DGWARP_BRIDGE_MPI
-        if (s.distributed) report.step = dgwarp::mpi::deform_distributed(*s.distributed, s.mesh.points, motion, out);
-        else
+        if (s.distributed) {
+            dgwarp::Stopwatch sw;
+            report.step = dgwarp::mpi::deform_distributed(*s.distributed, s.mesh.points, motion, out);
+            report.step_seconds = sw.lap();
+        } else
 #endif
-            report.step = dgwarp::deform(*s.plan, s.mesh.points, motion, out, s.options);
-        report.step_seconds = sw.lap();
-        dgwarp::finish_frame(s.method, s.mesh, s.original, s.boundary.nodes, s.frame, out, report);
+            measured = dgwarp::step_frame(*s.plan, s.mesh, s.original, s.boundary.nodes, motion, s.options, out, report);
+        dgwarp::finish_frame(s.method, s.mesh, s.original, s.boundary.nodes, s.frame, out, report, {},
+                             std::move(measured));
 
         StepResult r;
         r.cells = static_cast<std::int64_t>(s.mesh.cells.size());

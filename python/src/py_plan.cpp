@@ -20,6 +20,7 @@
 #include "dgwarp/methods/derivative.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/run/report_json.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
 #include "py_motion.hpp"
@@ -128,8 +129,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     if (!global_ids.is_none()) throw py::value_error("global_ids is for prepare(comm=...)");
     ProgressBridge bridge(progress);
     bridge.run([&] {
-        p->plan = prepare(method, mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells, p->boundary.boundary, p->options,
-                          bridge.function());
+        p->plan = prepare_for_frames(method, mesh->mesh, p->boundary.boundary, p->options, bridge.function());
     });
     warn_plan(*p);
     return p;
@@ -177,9 +177,7 @@ std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh
         if (auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
             check_plan_fits(*h, mesh->mesh.points, p->boundary.boundary);
             // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
-            if (!mesh->mesh.cells.empty())
-                h->guard = make_dg_harmonic_guard(mesh->mesh.dim, mesh->mesh.points, mesh->mesh.cells,
-                                                  p->boundary.boundary, guard_laplacian_options(p->options.laplacian, p->options.dg_harmonic));
+            attach_frame_guard(p->plan, mesh->mesh, p->boundary.boundary, p->options);
         }
     }
     warn_plan(*p);
@@ -348,7 +346,7 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
     ProgressBridge bridge(progress);
     // As the CLI's frames (run/deform_frame.hpp): no guard where the boundary motion folds faces.
     const MethodOptions options = step_options(p.options, folded_faces);
-    Stopwatch sw;
+    std::optional<FrameCells> measured;
     if (p.distributed) {
         // Collective: every process steps together; the repair and the report measure whole cells, which
         // a process's part does not have.
@@ -356,14 +354,21 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
             !progress.is_none())
             throw py::value_error("a plan prepared with comm= steps without untangle, report or progress");
         py::gil_scoped_release release;
+        Stopwatch sw;
         report.step = deform_distributed_plan(*p.distributed, mesh.points, boundary_motion, xs);
+        report.step_seconds = sw.lap();
     } else {
-        bridge.run([&] { report.step = deform(p.plan, mesh.points, boundary_motion, xs, options, bridge.function()); });
+        // As the CLI's frames: DG-harmonic's guard judges its one pass on the frame's measure.
+        static const OriginalCells none;
+        const OriginalCells& original = guards_frames(p.plan, options) ? p.original() : none;  // measured once
+        bridge.run([&] {
+            measured = step_frame(p.plan, mesh, original, p.boundary.boundary.nodes, boundary_motion, options, xs,
+                                  report, bridge.function());
+        });
     }
-    report.step_seconds = sw.lap();
     report.warnings = std::move(warnings);
     for (Warning& w : step_warnings(report.step)) report.warnings.push_back(std::move(w));
-    if (!p.distributed) finish_step(p, xs, untangle, untangle_target, want_report, report);
+    if (!p.distributed) finish_step(p, xs, untangle, untangle_target, want_report, report, std::move(measured));
     warn_all(report.warnings);
     py::object points = out.is_none() ? py::object(result) : py::reinterpret_borrow<py::object>(out);
     if (!want_report) return points;

@@ -83,7 +83,7 @@ BoundaryMotion motion_from_arrays(const PyPlan& p, py::handle t, py::handle w, p
 }
 
 bool finish_step(const PyPlan& p, std::span<double> points, const py::object& untangle, double target, bool measure,
-                 FrameReport& report) {
+                 FrameReport& report, std::optional<FrameCells> measured) {
     FrameOptions options;
     options.untangle_target = target;
     if (!untangle.is_none()) options.repair = untangle.cast<bool>() ? Repair::untangle : Repair::none;
@@ -93,7 +93,7 @@ bool finish_step(const PyPlan& p, std::span<double> points, const py::object& un
     if (!repairs && !measure) return false;
     const Mesh& mesh = p.mesh->mesh;
     py::gil_scoped_release release;
-    finish_frame(method, mesh, p.original(), p.boundary.boundary.nodes, options, points, report);
+    finish_frame(method, mesh, p.original(), p.boundary.boundary.nodes, options, points, report, {}, std::move(measured));
     return true;
 }
 

@@ -29,8 +29,9 @@ BoundaryMotion motion_from_arrays(const PyPlan& p, pybind11::handle translation,
 /// at or below `target`), DG-harmonic's last resort when it is None, nothing
 /// when False, as `dgwarp deform` does (finish_frame), and the frame's
 /// quality in `report`. Nothing when there is no repair to run and not
-/// `measure`; returns whether it ran. Releases the GIL.
+/// `measure`; returns whether it ran. Releases the GIL. `measured`: the
+/// cells of `points` when the step measured them (step_frame).
 bool finish_step(const PyPlan& p, std::span<double> points, const pybind11::object& untangle, double target,
-                 bool measure, FrameReport& report);
+                 bool measure, FrameReport& report, std::optional<FrameCells> measured = std::nullopt);
 
 }  // namespace dgwarp::python

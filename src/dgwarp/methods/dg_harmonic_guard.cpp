@@ -32,7 +32,12 @@ struct LocalPoints {
 LocalPoints local_points(const DgHarmonicGuard& g, std::span<const double> points);
 /// Fills the guard's measure layout (simplex_nodes, simplex_flags, other_cells)
 /// from its judged cells, the simplices' flags signed by `simplex_orientation`.
-void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation);
+void build_measure_layout(const DgHarmonicGuard& g, int simplex_orientation);
+/// Builds the guard's own measure (its judged cells, orientations, layout and
+/// the original's minimum) once.
+void ensure_layout(const DgHarmonicGuard& g);
+/// measure_for_guard once the layout is built.
+GuardMeasure measure_built(const DgHarmonicGuard& g, std::span<const double> points);
 /// dominant_orientations of the guard's mesh, counted in the layout's order.
 std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g);
 /// The first simplex of the mesh (cells.size() when there is none).
@@ -41,7 +46,7 @@ std::size_t first_simplex(const DgHarmonicGuard& g);
 
 std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
                                                               const ElementList& cells, const BoundarySet& boundary,
-                                                              const LaplacianOptions& laplacian) {
+                                                              const LaplacianOptions& laplacian, bool measure_now) {
     // Cells of the dimension, ids in range, the laplacian options.
     check_laplacian_inputs(dim, points, cells, boundary, laplacian, "DG-harmonic's guard (laplacian)");
     auto guard = std::make_shared<DgHarmonicGuard>();
@@ -50,42 +55,52 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
     guard->mesh.cells = cells;
     guard->boundary = boundary;
     guard->laplacian_options = laplacian;
-    const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
-    std::vector<std::uint8_t> on_boundary(num_points, 0);
-    for (NodeId n : boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
-    guard->judged.resize(cells.size());
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        const auto nodes = cells.nodes_of(c);
-        const bool all = std::all_of(nodes.begin(), nodes.end(),
-                                     [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
-        guard->judged[c] = all ? 2 : 1;
-    }
-    std::vector<NodeId> all(num_points);
-    for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
-    const std::vector<std::uint32_t> order = morton_order(dim, points, all);
-    guard->local_order.assign(order.begin(), order.end());
-    // Judged as `dgwarp quality` judges a mesh on its own: against the
-    // majority orientation of each cell type (dominant_orientations), here
-    // counted in the layout's order, which gathers far fewer points from
-    // memory than the mesh's. A cell already inverted or flat in the
-    // original is not the step's doing and is not judged.
-    build_measure_layout(*guard, 1);
-    guard->orientations = layout_orientations(*guard);
-    if (guard->simplex_flags.size() > 0 && guard->orientations[first_simplex(*guard)] < 0)
-        for (std::int8_t& f : guard->simplex_flags) f = static_cast<std::int8_t>(-f);
-    const GuardMeasure original = measure_for_guard(*guard, points);
-    if (original.inverted > 0) {
-        const std::vector<double> quality = cell_qualities(guard->mesh, guard->orientations);
-        for (std::size_t c = 0; c < quality.size(); ++c)
-            if (!(quality[c] > 0)) guard->judged[c] = 0;
-        const std::size_t simplex = first_simplex(*guard);
-        build_measure_layout(*guard, simplex < cells.size() ? guard->orientations[simplex] : 1);
-        guard->original_min = measure_for_guard(*guard, points).min_quality;
-    } else {
-        guard->original_min = original.min_quality;
-    }
+    if (measure_now) ensure_layout(*guard);
     return guard;
 }
+
+namespace {
+void ensure_layout(const DgHarmonicGuard& g) {
+    std::call_once(g.layout_once, [&g] {
+        const ElementList& cells = g.mesh.cells;
+        const std::span<const double> points = g.mesh.points;
+        const std::size_t num_points = g.mesh.num_points();
+        std::vector<std::uint8_t> on_boundary(num_points, 0);
+        for (NodeId n : g.boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
+        g.judged.resize(cells.size());
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+            const auto nodes = cells.nodes_of(c);
+            const bool all = std::all_of(nodes.begin(), nodes.end(),
+                                         [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
+            g.judged[c] = all ? 2 : 1;
+        }
+        std::vector<NodeId> all(num_points);
+        for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
+        const std::vector<std::uint32_t> order = morton_order(g.mesh.dim, points, all);
+        g.local_order.assign(order.begin(), order.end());
+        // Judged as `dgwarp quality` judges a mesh on its own: against the
+        // majority orientation of each cell type (dominant_orientations), here
+        // counted in the layout's order, which gathers far fewer points from
+        // memory than the mesh's. A cell already inverted or flat in the
+        // original is not the step's doing and is not judged.
+        build_measure_layout(g, 1);
+        g.orientations = layout_orientations(g);
+        if (g.simplex_flags.size() > 0 && g.orientations[first_simplex(g)] < 0)
+            for (std::int8_t& f : g.simplex_flags) f = static_cast<std::int8_t>(-f);
+        const GuardMeasure original = measure_built(g, points);
+        if (original.inverted > 0) {
+            const std::vector<double> quality = cell_qualities(g.mesh, g.orientations);
+            for (std::size_t c = 0; c < quality.size(); ++c)
+                if (!(quality[c] > 0)) g.judged[c] = 0;
+            const std::size_t simplex = first_simplex(g);
+            build_measure_layout(g, simplex < cells.size() ? g.orientations[simplex] : 1);
+            g.original_min = measure_built(g, points).min_quality;
+        } else {
+            g.original_min = original.min_quality;
+        }
+    });
+}
+}  // namespace
 
 LaplacianOptions guard_laplacian_options(const LaplacianOptions& laplacian, const DgHarmonicOptions& harmonic) {
     LaplacianOptions o = laplacian;
@@ -229,7 +244,7 @@ void measure_simplices(const DgHarmonicGuard& g, const LocalPoints& local, std::
     if (where != m.simplex) m.key = best, m.simplex = where, m.cell = -1;
 }
 
-void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation) {
+void build_measure_layout(const DgHarmonicGuard& g, int simplex_orientation) {
     const ElementList& cells = g.mesh.cells;
     const CellType simplex = simplex_type(g.mesh.dim);
     const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
@@ -327,7 +342,8 @@ std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g) {
 
 }  // namespace
 
-GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double> points) {
+namespace {
+GuardMeasure measure_built(const DgHarmonicGuard& g, std::span<const double> points) {
     const auto simplices = static_cast<std::int64_t>(g.simplex_flags.size());
     const auto others = static_cast<std::int64_t>(g.other_cells.size());
     const LocalPoints local = local_points(g, points);
@@ -380,6 +396,62 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
     if (std::isnan(out.min_quality)) out.min_quality = -1;
     return out;
 }
+}  // namespace
+
+GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double> points) {
+    ensure_layout(g);
+    return measure_built(g, points);
+}
+
+void check_redo_below(double redo_below) {
+    if (std::isnan(redo_below) || redo_below >= 1)
+        throw Error("DG-harmonic: redo_below must be below 1 (a fraction of the original minimum quality; negative: "
+                    "never redo), got " + std::to_string(redo_below));
+}
+
+bool guard_verdict(const DgHarmonicPlan& plan, const GuardMeasure& one_pass, double original_min, double redo_below,
+                   DgHarmonicGuardReport& r) {
+    r.checked = true;
+    r.one_pass = one_pass;
+    r.bar = redo_below * original_min;
+    if (r.one_pass.inverted == 0 && r.one_pass.min_quality >= r.bar) return false;
+    if (r.one_pass.inverted_on_boundary > 0) {
+        r.boundary_folds = true;
+        return false;
+    }
+    const std::int64_t nodes = plan.num_points();
+    if (plan.dim == 3 && nodes > plan.options.redo_max_nodes_3d) {
+        // Not redone (redone stays false): the report says why.
+        r.redo_error = "the mesh has " + std::to_string(nodes) + " nodes, more than the guard solves again in 3D (" +
+                       std::to_string(plan.options.redo_max_nodes_3d) +
+                       "): a laplacian solve of this size would take many minutes";
+        return false;
+    }
+    return true;
+}
+
+bool guard_redo(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                std::span<double> redo, DgHarmonicGuardReport& r) {
+    r.redone = true;
+    try {
+        // A valid one pass below the bar: one solve of laplacian's own
+        // increments (a folded result would not be kept, so doubling them
+        // could only cost: 4 + 8 + ... + 64 solves on the twisted bar).
+        const LaplacianPlan& lp = laplacian_plan_of(*plan.guard);
+        r.increments = deform_laplacian_capped(lp, points, motion, redo,
+                                               r.one_pass.inverted == 0 ? lp.options.increments : lp.options.max_increments)
+                           .increments;
+        return true;
+    } catch (const InvalidResultError&) {
+        throw;
+    } catch (const Error& e) {
+        // laplacian cannot solve this mesh (a part no boundary node holds,
+        // found when its plan is built; a singular stiffness): the one pass
+        // stays, and the report says why.
+        r.redo_error = e.what();
+        return false;
+    }
+}
 
 namespace {
 /// Whether result a is better than b: fewer inverted cells, then a higher minimum.
@@ -389,12 +461,23 @@ bool better(const GuardMeasure& a, const GuardMeasure& b) {
 }
 }  // namespace
 
+bool guard_keep(const DgHarmonicPlan& plan, std::span<const double> redo, std::span<double> out,
+                DgHarmonicGuardReport& r) {
+    if (!better(r.redo, r.one_pass)) return false;
+    r.kept_redo = true;
+    // Points no cell uses: laplacian leaves them; the one pass moved them with the rest.
+    const LaplacianPlan& lp = plan.guard->laplacian;
+    const auto dim = static_cast<std::size_t>(plan.dim);
+    for (std::size_t node = 0; node < static_cast<std::size_t>(lp.num_points); ++node)
+        if (lp.unknown[node] != -2)
+            for (std::size_t d = 0; d < dim; ++d) out[node * dim + d] = redo[node * dim + d];
+    return true;
+}
+
 DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std::span<const double> points,
                                                  const BoundaryMotion& motion, std::span<double> out,
                                                  double redo_below, const ProgressFn& progress) {
-    if (std::isnan(redo_below) || redo_below >= 1)
-        throw Error("DG-harmonic: redo_below must be below 1 (a fraction of the original minimum quality; negative: "
-                    "never redo), got " + std::to_string(redo_below));
+    check_redo_below(redo_below);
     DgHarmonicGuardReport r;
     // `out` may alias `points`: the redo needs the original points, so keep them.
     std::vector<double> kept;
@@ -406,53 +489,15 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
     r.conflicting_shared_vertices = deform_dg_harmonic(plan, points, motion, out, progress).conflicting_shared_vertices;
     if (!plan.guard || redo_below < 0) return r;
     const DgHarmonicGuard& guard = *plan.guard;
-    r.checked = true;
     Stopwatch measure_time;
-    r.one_pass = measure_for_guard(guard, out);
+    const GuardMeasure one_pass = measure_for_guard(guard, out);
     r.measure_seconds = measure_time.lap();
-    r.bar = redo_below * guard.original_min;
-    if (r.one_pass.inverted == 0 && r.one_pass.min_quality >= r.bar) return r;
-    if (r.one_pass.inverted_on_boundary > 0) {
-        r.boundary_folds = true;
-        return r;
-    }
-    const auto nodes = static_cast<std::int64_t>(guard.mesh.num_points());
-    if (plan.dim == 3 && nodes > plan.options.redo_max_nodes_3d) {
-        // Not redone (redone stays false): the report says why.
-        r.redo_error = "the mesh has " + std::to_string(nodes) + " nodes, more than the guard solves again in 3D (" +
-                       std::to_string(plan.options.redo_max_nodes_3d) +
-                       "): a laplacian solve of this size would take many minutes";
-        return r;
-    }
-    r.redone = true;
+    if (!guard_verdict(plan, one_pass, guard.original_min, redo_below, r)) return r;
     Stopwatch sw;
     std::vector<double> redo(out.size());
-    try {
-        // A valid one pass below the bar: one solve of laplacian's own
-        // increments (a folded result would not be kept, so doubling them
-        // could only cost: 4 + 8 + ... + 64 solves on the twisted bar).
-        const LaplacianPlan& lp = laplacian_plan_of(guard);
-        r.increments = deform_laplacian_capped(lp, points, motion, redo,
-                                               r.one_pass.inverted == 0 ? lp.options.increments : lp.options.max_increments)
-                           .increments;
-    } catch (const InvalidResultError&) {
-        throw;
-    } catch (const Error& e) {
-        // laplacian cannot solve this mesh (a part no boundary node holds,
-        // found when its plan is built; a singular stiffness): the one pass
-        // stays, and the report says why.
-        r.redo_error = e.what();
-        r.redo_seconds = sw.lap();
-        return r;
-    }
-    r.redo = measure_for_guard(guard, redo);
-    if (better(r.redo, r.one_pass)) {
-        r.kept_redo = true;
-        // Points no cell uses: laplacian leaves them; the one pass moved them with the rest.
-        const auto dim = static_cast<std::size_t>(plan.dim);
-        for (std::size_t node = 0; node < static_cast<std::size_t>(guard.laplacian.num_points); ++node)
-            if (guard.laplacian.unknown[node] != -2)
-                for (std::size_t d = 0; d < dim; ++d) out[node * dim + d] = redo[node * dim + d];
+    if (guard_redo(plan, points, motion, redo, r)) {
+        r.redo = measure_for_guard(guard, redo);
+        guard_keep(plan, redo, out, r);
     }
     r.redo_seconds = sw.lap();
     return r;

@@ -32,12 +32,21 @@ struct DgHarmonicOptions;
 /// the first step that needs it: prepare stays cheap).
 struct DgHarmonicGuard {
     Mesh mesh;                               // dim, the original points and the cells (no markers)
-    std::vector<std::int8_t> orientations;   // dominant_orientations(mesh)
+    BoundarySet boundary;                    // the plan's
+    LaplacianOptions laplacian_options;
+
+    // The guard's own measure (measure_for_guard): built by
+    // make_dg_harmonic_guard, or by the first measure_for_guard when the
+    // guard was made without it (measure_now false: a run that measures its
+    // frames itself, run/deform_frame.hpp, never needs it). Read-only once
+    // built (layout_once).
+    mutable std::once_flag layout_once;
+    mutable std::vector<std::int8_t> orientations;  // dominant_orientations(mesh)
     /// Per cell: 0 not judged (inverted or flat in the original), 1 judged,
     /// 2 judged and every node a boundary node (the boundary motion alone
     /// places it: no volume method changes it).
-    std::vector<std::uint8_t> judged;
-    double original_min = 0;                 // the minimum quality of the judged cells in the original
+    mutable std::vector<std::uint8_t> judged;
+    mutable double original_min = 0;         // the minimum quality of the judged cells in the original
     /// The measure's layout (built from `judged`). The guard numbers the
     /// nodes its own way, along a Morton curve: local node k is mesh node
     /// local_order[k], and each measure first copies the points into that
@@ -49,12 +58,11 @@ struct DgHarmonicGuard {
     /// mesh's numbering; per simplex its orientation times `judged` (±1, or
     /// ±2 when every node is a boundary node). Judged cells of other types
     /// are measured by index, on the mesh's numbering.
-    std::vector<NodeId> local_order;         // num_points: Morton order of the nodes
-    std::vector<NodeId> simplex_nodes;       // (dim + 1) per simplex, local node ids
-    std::vector<std::int8_t> simplex_flags;  // orientation × judged
-    std::vector<std::int64_t> other_cells;   // ascending
-    BoundarySet boundary;                    // the plan's
-    LaplacianOptions laplacian_options;
+    mutable std::vector<NodeId> local_order;         // num_points: Morton order of the nodes
+    mutable std::vector<NodeId> simplex_nodes;       // (dim + 1) per simplex, local node ids
+    mutable std::vector<std::int8_t> simplex_flags;  // orientation × judged
+    mutable std::vector<std::int64_t> other_cells;   // ascending
+
     // Built once, by the first step that is solved again (laplacian_plan_of).
     mutable std::once_flag laplacian_once;
     mutable LaplacianPlan laplacian;
@@ -66,10 +74,14 @@ const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard);
 /// The guard of a mesh: `points` num_points × dim (the original), `cells`
 /// the mesh's cells, `boundary` the plan's boundary set. Throws as
 /// check_laplacian_cells does (MeshError for cells of another dimension or
-/// out of range).
+/// out of range). `measure_now`: build the guard's own measure (its layout
+/// and the original's measure: 0.7 s at 865k nodes, one thread) now, or on
+/// the first measure_for_guard (a run that measures each frame anyway
+/// judges the one pass on that measure: guard_frame_verdict below).
 std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
                                                               const ElementList& cells, const BoundarySet& boundary,
-                                                              const LaplacianOptions& laplacian = {});
+                                                              const LaplacianOptions& laplacian = {},
+                                                              bool measure_now = true);
 
 /// The laplacian options of the guard: `laplacian` with its increments
 /// doubled at most up to harmonic.redo_max_increments.
@@ -117,6 +129,32 @@ struct DgHarmonicGuardReport {
 DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std::span<const double> points,
                                                  const BoundaryMotion& motion, std::span<double> out,
                                                  double redo_below, const ProgressFn& progress = {});
+
+/// The guard's pieces, for a caller that measures the one pass itself: the
+/// run layer (run/deform_frame.hpp) measures every frame anyway, so there the
+/// guard judges the one pass on that measure and a frame is measured once.
+/// deform_dg_harmonic_guarded is the same sequence on the guard's own measure.
+///
+/// Throws Error unless `redo_below` is below 1 (NaN included).
+void check_redo_below(double redo_below);
+/// 1. The verdict on a one pass measured `one_pass`, against the bar
+/// redo_below × `original_min` (the lowest quality of the cells valid in the
+/// original): fills r.checked, one_pass and bar, and says why not in
+/// r.boundary_folds or (a 3D mesh above redo_max_nodes_3d) r.redo_error;
+/// true when laplacian should solve the step again.
+bool guard_verdict(const DgHarmonicPlan& plan, const GuardMeasure& one_pass, double original_min, double redo_below,
+                   DgHarmonicGuardReport& r);
+/// 2. laplacian's solve of the step into `redo` (num_points × dim, not
+/// aliasing `points`, the original): r.redone and r.increments; false, with
+/// r.redo_error, when laplacian cannot solve this mesh (the one pass stays).
+/// Throws InvalidResultError as laplacian does. The plan must have a guard.
+bool guard_redo(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
+                std::span<double> redo, DgHarmonicGuardReport& r);
+/// 3. With r.redo the redo's measure: when it is better than the one pass
+/// (fewer inverted cells, then a higher minimum), copies it into `out` (the
+/// nodes the cells use: laplacian leaves the others) and sets r.kept_redo.
+bool guard_keep(const DgHarmonicPlan& plan, std::span<const double> redo, std::span<double> out,
+                DgHarmonicGuardReport& r);
 
 /// One line for a report: what the guard measured and did, e.g. "one pass
 /// min 0.0250 (bar 0.363, measured in 4.1 ms): solved again by laplacian in 4 increments, min

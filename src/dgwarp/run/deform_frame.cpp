@@ -1,6 +1,7 @@
 #include "dgwarp/run/deform_frame.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -51,9 +52,68 @@ FrameCells measure_frame(const Mesh& mesh, std::span<const double> points, const
     return c;
 }
 
+GuardMeasure guard_measure_of(const FrameCells& cells, const OriginalCells& original) {
+    GuardMeasure m;
+    m.inverted = static_cast<std::int64_t>(cells.inverted.size());
+    m.inverted_on_boundary = static_cast<std::int64_t>(cells.inverted_on_boundary.size());
+    bool any = false;
+    for (std::size_t c = 0; c < cells.quality.size(); ++c) {
+        if (!(original.quality[c] > 0)) continue;
+        const double q = std::isnan(cells.quality[c]) ? -1.0 : cells.quality[c];
+        if (!any || q < m.min_quality) m.min_quality = q, any = true;
+    }
+    return m;
+}
+
+bool guards_frames(const Plan& plan, const MethodOptions& options) {
+    const auto* harmonic = std::get_if<DgHarmonicPlan>(&plan);
+    return harmonic && harmonic->guard && options.dg_harmonic.redo_below >= 0;
+}
+
+std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
+                                     std::span<const NodeId> fixed, const BoundaryMotion& motion,
+                                     const MethodOptions& options, std::span<double> out, FrameReport& report,
+                                     const ProgressFn& progress) {
+    MethodOptions step = options;
+    const auto* harmonic = std::get_if<DgHarmonicPlan>(&plan);
+    const double redo_below = step.dg_harmonic.redo_below;
+    if (harmonic) check_redo_below(redo_below);
+    const bool guarded = guards_frames(plan, options);
+    if (guarded) step.dg_harmonic.redo_below = -1;  // the one pass: the guard judges it below, on the frame's measure
+    // `out` may alias the mesh's points: a redo needs the original ones, so keep them.
+    std::span<const double> points = mesh.points;
+    std::vector<double> kept;
+    if (guarded && out.data() < points.data() + points.size() && points.data() < out.data() + out.size()) {
+        kept.assign(points.begin(), points.end());
+        points = kept;
+    }
+    Stopwatch sw;
+    report.step = deform(plan, points, motion, out, step, progress);
+    report.step_seconds += sw.lap();
+    if (!guarded) return std::nullopt;
+    DgHarmonicGuardReport& guard = report.step.guard;
+    FrameCells cells = measure_frame(mesh, out, original, fixed);
+    guard.measure_seconds = sw.lap();
+    report.quality_seconds += guard.measure_seconds;
+    if (!guard_verdict(*harmonic, guard_measure_of(cells, original), original.valid_min, redo_below, guard))
+        return cells;
+    std::vector<double> redo(out.size());
+    if (guard_redo(*harmonic, points, motion, redo, guard)) {
+        FrameCells redone = measure_frame(mesh, redo, original, fixed);
+        guard.redo = guard_measure_of(redone, original);
+        if (guard_keep(*harmonic, redo, out, guard)) {
+            cells = std::move(redone);
+            report.step.substeps = guard.increments;
+        }
+    }
+    guard.redo_seconds = sw.lap();
+    report.step_seconds += guard.redo_seconds;
+    return cells;
+}
+
 FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& original, std::span<const NodeId> fixed,
                         const FrameOptions& options, std::span<double> points, FrameReport& report,
-                        const RepairStarted& repair_started) {
+                        const RepairStarted& repair_started, std::optional<FrameCells> measured) {
     Stopwatch sw;
     if (options.repair == Repair::untangle) {
         if (repair_started) repair_started();
@@ -63,7 +123,8 @@ FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& or
         if (u.below_target_before > 0) report.untangled = u;
         report.repair_seconds += sw.lap();
     }
-    FrameCells cells = measure_frame(mesh, points, original, fixed);
+    FrameCells cells = measured && options.repair != Repair::untangle ? std::move(*measured)
+                                                                       : measure_frame(mesh, points, original, fixed);
     if (options.repair == Repair::method_default && method == Method::dg_harmonic) {
         // DG-harmonic's last resort (docs/dg-harmonic.md): where the step
         // folded cells (a moving face bounded by fixed walls), repair them
@@ -94,12 +155,12 @@ FrameReport deform_frame(const Plan& plan, const Mesh& mesh, const OriginalCells
                          const FrameOptions& frame_options, std::span<double> out, FrameCells* cells,
                          const ProgressFn& progress) {
     FrameReport report;
-    Stopwatch sw;
-    report.step = deform(plan, mesh.points, motion.motion, out, step_options(options, motion.folded_faces), progress);
-    report.step_seconds = sw.lap();
+    std::optional<FrameCells> stepped =
+        step_frame(plan, mesh, original, boundary.boundary.nodes, motion.motion, step_options(options, motion.folded_faces),
+                   out, report, progress);
     report.warnings = frame_warnings(motion, report.step);
-    FrameCells measured =
-        finish_frame(plan_method(plan), mesh, original, boundary.boundary.nodes, frame_options, out, report);
+    FrameCells measured = finish_frame(plan_method(plan), mesh, original, boundary.boundary.nodes, frame_options, out,
+                                       report, {}, std::move(stepped));
     if (cells) *cells = std::move(measured);
     return report;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
@@ -81,6 +82,33 @@ std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, std::span
 FrameCells measure_frame(const Mesh& mesh, std::span<const double> points, const OriginalCells& original,
                          std::span<const NodeId> fixed);
 
+/// What DG-harmonic's guard reads of a frame's cells (its GuardMeasure): the
+/// cells the motion inverted, those of them with only boundary nodes, and the
+/// lowest quality of the cells valid in the original (a NaN counts as -1).
+GuardMeasure guard_measure_of(const FrameCells& cells, const OriginalCells& original);
+
+/// Whether step_frame measures `plan`'s step with DG-harmonic's guard (a
+/// DG-harmonic plan with a guard, and options.dg_harmonic.redo_below not negative).
+bool guards_frames(const Plan& plan, const MethodOptions& options);
+
+/// A frame's step: deform with DG-harmonic's guard off; then, when `plan` is
+/// DG-harmonic's with a guard and options.dg_harmonic.redo_below is not
+/// negative (step_options turns it off where the boundary motion folds
+/// faces), the guard judges the one pass on the frame's own measure
+/// (measure_frame: the one every frame has, so a frame is measured once) and
+/// a one pass below its bar (redo_below × original.valid_min) or folded is
+/// solved again by the laplacian reference, the better result kept
+/// (dg_harmonic_guard.hpp; report.step.guard says what it did,
+/// report.step.substeps laplacian's increments when its result is kept).
+/// Adds to report's step_seconds (the one pass and any redo) and
+/// quality_seconds (the measure); sets report.step. Returns the cells of
+/// `out` as it is on return when they were measured (pass them to
+/// finish_frame), nullopt otherwise. `fixed`: the boundary nodes (sorted).
+std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
+                                     std::span<const NodeId> fixed, const BoundaryMotion& motion,
+                                     const MethodOptions& options, std::span<double> out, FrameReport& report,
+                                     const ProgressFn& progress = {});
+
 /// Called when a repair starts (for a progress display: it may take seconds).
 using RepairStarted = std::function<void()>;
 
@@ -88,12 +116,14 @@ using RepairStarted = std::function<void()>;
 /// `options` ask for, then the frame's cells (returned) and report's
 /// untangled, last_resort, quality, ratio, inverted and worst fields, and
 /// its repair and quality seconds. `fixed`: the boundary nodes (sorted).
+/// `measured`: the cells of `points` as they are, when the step measured
+/// them (step_frame): not measured again.
 FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& original, std::span<const NodeId> fixed,
                         const FrameOptions& options, std::span<double> points, FrameReport& report,
-                        const RepairStarted& repair_started = {});
+                        const RepairStarted& repair_started = {}, std::optional<FrameCells> measured = std::nullopt);
 
-/// One frame: deform(plan, mesh.points, motion.motion, out, step_options(...)),
-/// then finish_frame; the report's warnings are frame_warnings'. `out`: num_points × dim, the frame's coordinates
+/// One frame: step_frame (deform(plan, mesh.points, motion.motion, out,
+/// step_options(...)) and DG-harmonic's guard), then finish_frame; the report's warnings are frame_warnings'. `out`: num_points × dim, the frame's coordinates
 /// (measured from the original mesh, not the previous frame). `cells`, when
 /// not null, receives the frame's cells. Throws as deform does.
 FrameReport deform_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,

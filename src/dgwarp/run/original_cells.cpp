@@ -7,12 +7,23 @@
 
 namespace dgwarp {
 
+namespace {
+double lowest_valid(const std::vector<double>& quality) {
+    double lowest = 0;
+    bool any = false;
+    for (double q : quality)
+        if (q > 0 && (!any || q < lowest)) lowest = q, any = true;
+    return lowest;
+}
+}  // namespace
+
 OriginalCells measure_original(const Mesh& mesh) {
     OriginalCells o;
     o.own_orientation = cell_orientations(mesh);
     o.orientation = dominant_orientations(mesh, o.own_orientation);
     o.quality = cell_qualities(mesh, o.orientation);
     o.summary = summarize_quality(o.quality);
+    o.valid_min = lowest_valid(o.quality);
     return o;
 }
 
@@ -27,6 +38,7 @@ OriginalCells measure_original(const Mesh& mesh, std::vector<std::int8_t> own_or
     o.orientation = std::move(orientation);
     o.quality = cell_qualities(mesh, o.orientation);
     o.summary = summarize_quality(o.quality);
+    o.valid_min = lowest_valid(o.quality);
     return o;
 }
 

@@ -18,6 +18,7 @@ struct OriginalCells {
     std::vector<std::int8_t> own_orientation;  // per cell, its own in the original (untangle keeps it)
     std::vector<double> quality;               // per cell, judged by `orientation`
     QualitySummary summary;                    // of `quality`
+    double valid_min = 0;  // the lowest quality of the cells valid in the original (quality > 0); 0 when none is
 };
 
 /// The original cells of `mesh`, judged by the majority orientation of each cell type. Threaded.

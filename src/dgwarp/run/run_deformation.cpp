@@ -3,8 +3,27 @@
 #include <utility>
 
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/methods/dg_harmonic_guard.hpp"
 
 namespace dgwarp {
+
+Plan prepare_for_frames(Method method, const Mesh& mesh, const BoundarySet& boundary, const MethodOptions& options,
+                        const ProgressFn& progress) {
+    if (method != Method::dg_harmonic || mesh.cells.empty())
+        return prepare(method, mesh.dim, mesh.points, mesh.cells, boundary, options, progress);
+    Plan plan = prepare(method, mesh.dim, mesh.points, boundary, options, progress);
+    Stopwatch sw;
+    attach_frame_guard(plan, mesh, boundary, options);
+    std::get<DgHarmonicPlan>(plan).stats.guard_seconds = sw.lap();
+    return plan;
+}
+
+void attach_frame_guard(Plan& plan, const Mesh& mesh, const BoundarySet& boundary, const MethodOptions& options) {
+    auto* h = std::get_if<DgHarmonicPlan>(&plan);
+    if (!h || mesh.cells.empty()) return;
+    h->guard = make_dg_harmonic_guard(mesh.dim, mesh.points, mesh.cells, boundary,
+                                      guard_laplacian_options(options.laplacian, options.dg_harmonic), false);
+}
 
 Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method method, const MethodOptions& options,
                                 const ProgressFn& progress) {
@@ -16,7 +35,7 @@ Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method
     d.resolve_seconds = sw.lap();
     d.original = measure_original(mesh);
     d.original_seconds = sw.lap();
-    d.plan = prepare(method, mesh.dim, mesh.points, mesh.cells, d.boundary.boundary, options, progress);
+    d.plan = prepare_for_frames(method, mesh, d.boundary.boundary, options, progress);
     d.prepare_seconds = sw.lap();
     return d;
 }
@@ -30,17 +49,22 @@ RunReport run_frames(const RunContext& ctx, const RunOptions& options, const Run
         const ProgressFn progress = callbacks.frame_started ? callbacks.frame_started(k) : ProgressFn{};
         const ResolvedFrame motion = resolve_frame(ctx.mesh, ctx.spec, ctx.boundary, k);
         FrameReport report;
-        Stopwatch sw;
-        if (callbacks.step)
+        std::optional<FrameCells> stepped;
+        if (callbacks.step_running) callbacks.step_running(true);
+        if (callbacks.step) {
+            Stopwatch sw;
             report.step = callbacks.step(motion, points, progress);
-        else
-            report.step = deform(ctx.plan, ctx.mesh.points, motion.motion, points,
-                                 step_options(ctx.options, motion.folded_faces), progress);
-        report.step_seconds = sw.lap();
+            report.step_seconds = sw.lap();
+        } else {
+            stepped = step_frame(ctx.plan, ctx.mesh, ctx.original, ctx.boundary.boundary.nodes, motion.motion,
+                                 step_options(ctx.options, motion.folded_faces), points, report, progress);
+        }
+        if (callbacks.step_running) callbacks.step_running(false);
         report.warnings = frame_warnings(motion, report.step);
         const FrameCells cells =
             finish_frame(method, ctx.mesh, ctx.original, ctx.boundary.boundary.nodes, options.frame, points, report,
-                         callbacks.repair_started ? [&] { callbacks.repair_started(k); } : RepairStarted{});
+                         callbacks.repair_started ? [&] { callbacks.repair_started(k); } : RepairStarted{},
+                         std::move(stepped));
         const bool valid = report.valid();
         if (!valid && run.first_invalid < 0) run.first_invalid = static_cast<std::int64_t>(k);
         run.frames.push_back(report);

@@ -35,6 +35,19 @@ struct Deformation {
     double resolve_seconds = 0, original_seconds = 0, prepare_seconds = 0;
 };
 
+/// `method`'s plan for frames of `mesh`: prepare with the mesh's cells,
+/// except that DG-harmonic's guard is made without its own measure
+/// (make_dg_harmonic_guard's measure_now false): step_frame judges each one
+/// pass on the frame's measure, so the guard's layout and the original's
+/// second measure are not built. Throws as prepare does.
+Plan prepare_for_frames(Method method, const Mesh& mesh, const BoundarySet& boundary,
+                        const MethodOptions& options = {}, const ProgressFn& progress = {});
+
+/// The same guard on a DG-harmonic plan read from a file (a plan file keeps
+/// the plan's arrays, not the guard); other plans, and meshes without cells,
+/// are left as they are.
+void attach_frame_guard(Plan& plan, const Mesh& mesh, const BoundarySet& boundary, const MethodOptions& options);
+
 /// Resolves `spec`'s boundary on `mesh` (resolve_boundary: throws MeshError
 /// naming the marker or node), measures the original cells and prepares
 /// `method`'s plan with the mesh's cells. Throws as prepare does.
@@ -78,6 +91,11 @@ struct RunCallbacks {
     /// The step, when not the plan's own deform (e.g. a plan spread over MPI
     /// processes): fills `out` and returns the step's report.
     std::function<StepReport(const ResolvedFrame& motion, std::span<double> out, const ProgressFn& progress)> step;
+    /// Called with true right before a frame's step (the plan's deform and
+    /// DG-harmonic's guard, or `step`) and with false right after it, e.g. to
+    /// tell a step's errors from the others (resolving the frame's motion,
+    /// writing it).
+    std::function<void(bool)> step_running;
     /// Each finished frame, valid or not; false stops the run.
     std::function<bool(const FrameView&)> frame_done;
 };
