@@ -80,9 +80,9 @@ void run(const Mesh& mesh, const BoundarySet& boundary, const BoundaryMotion& mo
     const OriginalCells original = measure_original(mesh);
     Plan idw_run, harm_run;
     const double idw_run_prepare =
-        median_seconds(3, [&] { idw_run = prepare_for_frames(Method::dg_idw, mesh, boundary); });
+        median_seconds(5, [&] { idw_run = prepare_for_frames(Method::dg_idw, mesh, boundary); });
     const double harm_run_prepare =
-        median_seconds(3, [&] { harm_run = prepare_for_frames(Method::dg_harmonic, mesh, boundary); });
+        median_seconds(5, [&] { harm_run = prepare_for_frames(Method::dg_harmonic, mesh, boundary); });
     const auto frame = [&](const Plan& p, double& step_seconds) {
         std::vector<double> steps_seen;
         const double whole = median_seconds(steps, [&] {

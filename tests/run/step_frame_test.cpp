@@ -85,7 +85,10 @@ TEST(StepFrame, TheGuardOnTheFramesMeasureDecidesAndWritesAsItsOwnMeasure) {
         // guard's own measure (its layout) was never built.
         ASSERT_TRUE(cells.has_value()) << what;
         EXPECT_EQ(cells->quality, measure_frame(c.mesh, out, original, c.boundary.boundary.nodes).quality) << what;
-        EXPECT_TRUE(std::get<DgHarmonicPlan>(plan).guard->local_order.empty()) << what;
+        const DgHarmonicGuard& frame_guard = *std::get<DgHarmonicPlan>(plan).guard;
+        EXPECT_TRUE(frame_guard.for_frames) << what;
+        EXPECT_TRUE(frame_guard.mesh.cells.empty() && frame_guard.mesh.points.empty()) << what;
+        EXPECT_TRUE(frame_guard.local_order.empty()) << what;
         EXPECT_GT(report.quality_seconds, 0) << what;
     }
 }
@@ -114,6 +117,17 @@ TEST(StepFrame, TheBarIsAFractionOfTheLowestValidOriginalQuality) {
     }
     EXPECT_EQ(m.min_quality, min);
     EXPECT_EQ(m.inverted, inverted);
+}
+
+TEST(StepFrame, ABareDeformStepsAFrameGuardsPlanUnchecked) {
+    // A frame guard has no cells to measure with: deform() gives its one pass, and says it was not checked.
+    const CaseFrame c = case_frame("rect-box", "rotate-90");
+    const Plan plan = prepare_for_frames(Method::dg_harmonic, c.mesh, c.boundary.boundary);
+    std::vector<double> out(c.mesh.points.size()), one_pass(c.mesh.points.size());
+    EXPECT_FALSE(deform(plan, c.mesh.points, c.frame.motion, out).guard.checked);
+    const Plan cloud = prepare(Method::dg_harmonic, c.mesh.dim, c.mesh.points, c.boundary.boundary);
+    deform(cloud, c.mesh.points, c.frame.motion, one_pass);
+    EXPECT_EQ(out, one_pass);
 }
 
 TEST(StepFrame, NoGuardNoMeasureAndOtherMethodsStepAsDeform) {
@@ -150,8 +164,10 @@ TEST(StepFrame, OutputAliasingTheMeshsPointsGivesTheSameBits) {
     FrameReport report;
     step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, c.frame.motion, options, out, report);
     ASSERT_TRUE(report.step.guard.redone);
+    // A fresh plan: laplacian's is built on the first redo, from the original points.
+    const Plan fresh = prepare_for_frames(Method::dg_harmonic, c.mesh, c.boundary.boundary);
     Mesh in_place = c.mesh;
     FrameReport again;
-    step_frame(plan, in_place, original, c.boundary.boundary.nodes, c.frame.motion, options, in_place.points, again);
+    step_frame(fresh, in_place, original, c.boundary.boundary.nodes, c.frame.motion, options, in_place.points, again);
     EXPECT_EQ(in_place.points, out);
 }

@@ -32,12 +32,7 @@ struct LocalPoints {
 LocalPoints local_points(const DgHarmonicGuard& g, std::span<const double> points);
 /// Fills the guard's measure layout (simplex_nodes, simplex_flags, other_cells)
 /// from its judged cells, the simplices' flags signed by `simplex_orientation`.
-void build_measure_layout(const DgHarmonicGuard& g, int simplex_orientation);
-/// Builds the guard's own measure (its judged cells, orientations, layout and
-/// the original's minimum) once.
-void ensure_layout(const DgHarmonicGuard& g);
-/// measure_for_guard once the layout is built.
-GuardMeasure measure_built(const DgHarmonicGuard& g, std::span<const double> points);
+void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation);
 /// dominant_orientations of the guard's mesh, counted in the layout's order.
 std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g);
 /// The first simplex of the mesh (cells.size() when there is none).
@@ -46,7 +41,7 @@ std::size_t first_simplex(const DgHarmonicGuard& g);
 
 std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
                                                               const ElementList& cells, const BoundarySet& boundary,
-                                                              const LaplacianOptions& laplacian, bool measure_now) {
+                                                              const LaplacianOptions& laplacian) {
     // Cells of the dimension, ids in range, the laplacian options.
     check_laplacian_inputs(dim, points, cells, boundary, laplacian, "DG-harmonic's guard (laplacian)");
     auto guard = std::make_shared<DgHarmonicGuard>();
@@ -55,52 +50,54 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
     guard->mesh.cells = cells;
     guard->boundary = boundary;
     guard->laplacian_options = laplacian;
-    if (measure_now) ensure_layout(*guard);
+    const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
+    std::vector<std::uint8_t> on_boundary(num_points, 0);
+    for (NodeId n : boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
+    guard->judged.resize(cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        const auto nodes = cells.nodes_of(c);
+        const bool all = std::all_of(nodes.begin(), nodes.end(),
+                                     [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
+        guard->judged[c] = all ? 2 : 1;
+    }
+    std::vector<NodeId> all(num_points);
+    for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
+    const std::vector<std::uint32_t> order = morton_order(dim, points, all);
+    guard->local_order.assign(order.begin(), order.end());
+    // Judged as `dgwarp quality` judges a mesh on its own: against the
+    // majority orientation of each cell type (dominant_orientations), here
+    // counted in the layout's order, which gathers far fewer points from
+    // memory than the mesh's. A cell already inverted or flat in the
+    // original is not the step's doing and is not judged.
+    build_measure_layout(*guard, 1);
+    guard->orientations = layout_orientations(*guard);
+    if (guard->simplex_flags.size() > 0 && guard->orientations[first_simplex(*guard)] < 0)
+        for (std::int8_t& f : guard->simplex_flags) f = static_cast<std::int8_t>(-f);
+    const GuardMeasure original = measure_for_guard(*guard, points);
+    if (original.inverted > 0) {
+        const std::vector<double> quality = cell_qualities(guard->mesh, guard->orientations);
+        for (std::size_t c = 0; c < quality.size(); ++c)
+            if (!(quality[c] > 0)) guard->judged[c] = 0;
+        const std::size_t simplex = first_simplex(*guard);
+        build_measure_layout(*guard, simplex < cells.size() ? guard->orientations[simplex] : 1);
+        guard->original_min = measure_for_guard(*guard, points).min_quality;
+    } else {
+        guard->original_min = original.min_quality;
+    }
     return guard;
 }
 
-namespace {
-void ensure_layout(const DgHarmonicGuard& g) {
-    std::call_once(g.layout_once, [&g] {
-        const ElementList& cells = g.mesh.cells;
-        const std::span<const double> points = g.mesh.points;
-        const std::size_t num_points = g.mesh.num_points();
-        std::vector<std::uint8_t> on_boundary(num_points, 0);
-        for (NodeId n : g.boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
-        g.judged.resize(cells.size());
-        for (std::size_t c = 0; c < cells.size(); ++c) {
-            const auto nodes = cells.nodes_of(c);
-            const bool all = std::all_of(nodes.begin(), nodes.end(),
-                                         [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
-            g.judged[c] = all ? 2 : 1;
-        }
-        std::vector<NodeId> all(num_points);
-        for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
-        const std::vector<std::uint32_t> order = morton_order(g.mesh.dim, points, all);
-        g.local_order.assign(order.begin(), order.end());
-        // Judged as `dgwarp quality` judges a mesh on its own: against the
-        // majority orientation of each cell type (dominant_orientations), here
-        // counted in the layout's order, which gathers far fewer points from
-        // memory than the mesh's. A cell already inverted or flat in the
-        // original is not the step's doing and is not judged.
-        build_measure_layout(g, 1);
-        g.orientations = layout_orientations(g);
-        if (g.simplex_flags.size() > 0 && g.orientations[first_simplex(g)] < 0)
-            for (std::int8_t& f : g.simplex_flags) f = static_cast<std::int8_t>(-f);
-        const GuardMeasure original = measure_built(g, points);
-        if (original.inverted > 0) {
-            const std::vector<double> quality = cell_qualities(g.mesh, g.orientations);
-            for (std::size_t c = 0; c < quality.size(); ++c)
-                if (!(quality[c] > 0)) g.judged[c] = 0;
-            const std::size_t simplex = first_simplex(g);
-            build_measure_layout(g, simplex < cells.size() ? g.orientations[simplex] : 1);
-            g.original_min = measure_built(g, points).min_quality;
-        } else {
-            g.original_min = original.min_quality;
-        }
-    });
+std::shared_ptr<const DgHarmonicGuard> make_frame_guard(int dim, std::span<const double> points,
+                                                        const ElementList& cells, const BoundarySet& boundary,
+                                                        const LaplacianOptions& laplacian) {
+    check_laplacian_inputs(dim, points, cells, boundary, laplacian, "DG-harmonic's guard (laplacian)");
+    auto guard = std::make_shared<DgHarmonicGuard>();
+    guard->mesh.dim = dim;
+    guard->boundary = boundary;
+    guard->laplacian_options = laplacian;
+    guard->for_frames = true;
+    return guard;
 }
-}  // namespace
 
 LaplacianOptions guard_laplacian_options(const LaplacianOptions& laplacian, const DgHarmonicOptions& harmonic) {
     LaplacianOptions o = laplacian;
@@ -108,10 +105,10 @@ LaplacianOptions guard_laplacian_options(const LaplacianOptions& laplacian, cons
     return o;
 }
 
-const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard) {
+const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard, std::span<const double> points,
+                                       const ElementList& cells) {
     std::call_once(guard.laplacian_once, [&] {
-        guard.laplacian = prepare_laplacian(guard.mesh.dim, guard.mesh.points, guard.mesh.cells, guard.boundary,
-                                            guard.laplacian_options);
+        guard.laplacian = prepare_laplacian(guard.mesh.dim, points, cells, guard.boundary, guard.laplacian_options);
     });
     return guard.laplacian;
 }
@@ -244,7 +241,7 @@ void measure_simplices(const DgHarmonicGuard& g, const LocalPoints& local, std::
     if (where != m.simplex) m.key = best, m.simplex = where, m.cell = -1;
 }
 
-void build_measure_layout(const DgHarmonicGuard& g, int simplex_orientation) {
+void build_measure_layout(DgHarmonicGuard& g, int simplex_orientation) {
     const ElementList& cells = g.mesh.cells;
     const CellType simplex = simplex_type(g.mesh.dim);
     const auto corners = static_cast<std::size_t>(g.mesh.dim + 1);
@@ -342,8 +339,7 @@ std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g) {
 
 }  // namespace
 
-namespace {
-GuardMeasure measure_built(const DgHarmonicGuard& g, std::span<const double> points) {
+GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double> points) {
     const auto simplices = static_cast<std::int64_t>(g.simplex_flags.size());
     const auto others = static_cast<std::int64_t>(g.other_cells.size());
     const LocalPoints local = local_points(g, points);
@@ -396,12 +392,6 @@ GuardMeasure measure_built(const DgHarmonicGuard& g, std::span<const double> poi
     if (std::isnan(out.min_quality)) out.min_quality = -1;
     return out;
 }
-}  // namespace
-
-GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double> points) {
-    ensure_layout(g);
-    return measure_built(g, points);
-}
 
 void check_redo_below(double redo_below) {
     if (std::isnan(redo_below) || redo_below >= 1)
@@ -430,14 +420,14 @@ bool guard_verdict(const DgHarmonicPlan& plan, const GuardMeasure& one_pass, dou
     return true;
 }
 
-bool guard_redo(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                std::span<double> redo, DgHarmonicGuardReport& r) {
+bool guard_redo(const DgHarmonicPlan& plan, const ElementList& cells, std::span<const double> points,
+                const BoundaryMotion& motion, std::span<double> redo, DgHarmonicGuardReport& r) {
     r.redone = true;
     try {
         // A valid one pass below the bar: one solve of laplacian's own
         // increments (a folded result would not be kept, so doubling them
         // could only cost: 4 + 8 + ... + 64 solves on the twisted bar).
-        const LaplacianPlan& lp = laplacian_plan_of(*plan.guard);
+        const LaplacianPlan& lp = laplacian_plan_of(*plan.guard, points, cells);
         r.increments = deform_laplacian_capped(lp, points, motion, redo,
                                                r.one_pass.inverted == 0 ? lp.options.increments : lp.options.max_increments)
                            .increments;
@@ -481,13 +471,14 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
     DgHarmonicGuardReport r;
     // `out` may alias `points`: the redo needs the original points, so keep them.
     std::vector<double> kept;
-    if (plan.guard && redo_below >= 0 && out.data() < points.data() + points.size() &&
+    const bool checks = plan.guard && !plan.guard->for_frames && redo_below >= 0;
+    if (checks && out.data() < points.data() + points.size() &&
         points.data() < out.data() + out.size()) {
         kept.assign(points.begin(), points.end());
         points = kept;
     }
     r.conflicting_shared_vertices = deform_dg_harmonic(plan, points, motion, out, progress).conflicting_shared_vertices;
-    if (!plan.guard || redo_below < 0) return r;
+    if (!checks) return r;
     const DgHarmonicGuard& guard = *plan.guard;
     Stopwatch measure_time;
     const GuardMeasure one_pass = measure_for_guard(guard, out);
@@ -495,7 +486,7 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
     if (!guard_verdict(plan, one_pass, guard.original_min, redo_below, r)) return r;
     Stopwatch sw;
     std::vector<double> redo(out.size());
-    if (guard_redo(plan, points, motion, redo, r)) {
+    if (guard_redo(plan, guard.mesh.cells, points, motion, redo, r)) {
         r.redo = measure_for_guard(guard, redo);
         guard_keep(plan, redo, out, r);
     }

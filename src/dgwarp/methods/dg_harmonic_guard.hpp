@@ -34,19 +34,17 @@ struct DgHarmonicGuard {
     Mesh mesh;                               // dim, the original points and the cells (no markers)
     BoundarySet boundary;                    // the plan's
     LaplacianOptions laplacian_options;
-
-    // The guard's own measure (measure_for_guard): built by
-    // make_dg_harmonic_guard, or by the first measure_for_guard when the
-    // guard was made without it (measure_now false: a run that measures its
-    // frames itself, run/deform_frame.hpp, never needs it). Read-only once
-    // built (layout_once).
-    mutable std::once_flag layout_once;
-    mutable std::vector<std::int8_t> orientations;  // dominant_orientations(mesh)
+    /// A guard for frames (make_frame_guard): no cells and no measure of
+    /// its own. The run layer (run/deform_frame.hpp's step_frame) judges the
+    /// one pass on the frame's measure and gives laplacian's plan the run's
+    /// mesh; a bare deform() steps such a plan's one pass unchecked.
+    bool for_frames = false;
+    std::vector<std::int8_t> orientations;   // dominant_orientations(mesh)
     /// Per cell: 0 not judged (inverted or flat in the original), 1 judged,
     /// 2 judged and every node a boundary node (the boundary motion alone
     /// places it: no volume method changes it).
-    mutable std::vector<std::uint8_t> judged;
-    mutable double original_min = 0;         // the minimum quality of the judged cells in the original
+    std::vector<std::uint8_t> judged;
+    double original_min = 0;                 // the minimum quality of the judged cells in the original
     /// The measure's layout (built from `judged`). The guard numbers the
     /// nodes its own way, along a Morton curve: local node k is mesh node
     /// local_order[k], and each measure first copies the points into that
@@ -58,30 +56,36 @@ struct DgHarmonicGuard {
     /// mesh's numbering; per simplex its orientation times `judged` (±1, or
     /// ±2 when every node is a boundary node). Judged cells of other types
     /// are measured by index, on the mesh's numbering.
-    mutable std::vector<NodeId> local_order;         // num_points: Morton order of the nodes
-    mutable std::vector<NodeId> simplex_nodes;       // (dim + 1) per simplex, local node ids
-    mutable std::vector<std::int8_t> simplex_flags;  // orientation × judged
-    mutable std::vector<std::int64_t> other_cells;   // ascending
-
+    std::vector<NodeId> local_order;         // num_points: Morton order of the nodes
+    std::vector<NodeId> simplex_nodes;       // (dim + 1) per simplex, local node ids
+    std::vector<std::int8_t> simplex_flags;  // orientation × judged
+    std::vector<std::int64_t> other_cells;   // ascending
     // Built once, by the first step that is solved again (laplacian_plan_of).
     mutable std::once_flag laplacian_once;
     mutable LaplacianPlan laplacian;
 };
 
-/// The guard's laplacian plan, built on the first call (thread-safe).
-const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard);
+/// The guard's laplacian plan, built on the first call (thread-safe) on the
+/// original `points` and the `cells`: the guard's own, or for a frame guard
+/// the run's mesh's.
+const LaplacianPlan& laplacian_plan_of(const DgHarmonicGuard& guard, std::span<const double> points,
+                                       const ElementList& cells);
 
 /// The guard of a mesh: `points` num_points × dim (the original), `cells`
 /// the mesh's cells, `boundary` the plan's boundary set. Throws as
 /// check_laplacian_cells does (MeshError for cells of another dimension or
-/// out of range). `measure_now`: build the guard's own measure (its layout
-/// and the original's measure: 0.7 s at 865k nodes, one thread) now, or on
-/// the first measure_for_guard (a run that measures each frame anyway
-/// judges the one pass on that measure: guard_frame_verdict below).
+/// out of range).
 std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
                                                               const ElementList& cells, const BoundarySet& boundary,
-                                                              const LaplacianOptions& laplacian = {},
-                                                              bool measure_now = true);
+                                                              const LaplacianOptions& laplacian = {});
+
+/// A guard for frames (DgHarmonicGuard::for_frames): checks `cells` as
+/// make_dg_harmonic_guard does and keeps neither them nor a measure (the
+/// run has the mesh, and measures each frame anyway: 0.5-0.7 s of prepare
+/// and 130 MB less at 865k nodes).
+std::shared_ptr<const DgHarmonicGuard> make_frame_guard(int dim, std::span<const double> points,
+                                                        const ElementList& cells, const BoundarySet& boundary,
+                                                        const LaplacianOptions& laplacian = {});
 
 /// The laplacian options of the guard: `laplacian` with its increments
 /// doubled at most up to harmonic.redo_max_increments.
@@ -145,11 +149,12 @@ void check_redo_below(double redo_below);
 bool guard_verdict(const DgHarmonicPlan& plan, const GuardMeasure& one_pass, double original_min, double redo_below,
                    DgHarmonicGuardReport& r);
 /// 2. laplacian's solve of the step into `redo` (num_points × dim, not
-/// aliasing `points`, the original): r.redone and r.increments; false, with
+/// aliasing `points`, the original), its plan built on `points` and `cells`
+/// the first time (laplacian_plan_of): r.redone and r.increments; false, with
 /// r.redo_error, when laplacian cannot solve this mesh (the one pass stays).
 /// Throws InvalidResultError as laplacian does. The plan must have a guard.
-bool guard_redo(const DgHarmonicPlan& plan, std::span<const double> points, const BoundaryMotion& motion,
-                std::span<double> redo, DgHarmonicGuardReport& r);
+bool guard_redo(const DgHarmonicPlan& plan, const ElementList& cells, std::span<const double> points,
+                const BoundaryMotion& motion, std::span<double> redo, DgHarmonicGuardReport& r);
 /// 3. With r.redo the redo's measure: when it is better than the one pass
 /// (fewer inverted cells, then a higher minimum), copies it into `out` (the
 /// nodes the cells use: laplacian leaves the others) and sets r.kept_redo.

@@ -21,8 +21,8 @@ Plan prepare_for_frames(Method method, const Mesh& mesh, const BoundarySet& boun
 void attach_frame_guard(Plan& plan, const Mesh& mesh, const BoundarySet& boundary, const MethodOptions& options) {
     auto* h = std::get_if<DgHarmonicPlan>(&plan);
     if (!h || mesh.cells.empty()) return;
-    h->guard = make_dg_harmonic_guard(mesh.dim, mesh.points, mesh.cells, boundary,
-                                      guard_laplacian_options(options.laplacian, options.dg_harmonic), false);
+    h->guard = make_frame_guard(mesh.dim, mesh.points, mesh.cells, boundary,
+                                guard_laplacian_options(options.laplacian, options.dg_harmonic));
 }
 
 Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method method, const MethodOptions& options,

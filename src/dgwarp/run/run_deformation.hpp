@@ -36,10 +36,10 @@ struct Deformation {
 };
 
 /// `method`'s plan for frames of `mesh`: prepare with the mesh's cells,
-/// except that DG-harmonic's guard is made without its own measure
-/// (make_dg_harmonic_guard's measure_now false): step_frame judges each one
-/// pass on the frame's measure, so the guard's layout and the original's
-/// second measure are not built. Throws as prepare does.
+/// except that DG-harmonic's guard is a frame guard (make_frame_guard):
+/// step_frame judges each one pass on the frame's measure and builds
+/// laplacian's plan on the run's mesh, so the guard keeps no copy of the
+/// cells and no measure of its own. Throws as prepare does.
 Plan prepare_for_frames(Method method, const Mesh& mesh, const BoundarySet& boundary,
                         const MethodOptions& options = {}, const ProgressFn& progress = {});
 
