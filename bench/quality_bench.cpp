@@ -15,6 +15,7 @@
 #include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/quality/quality_layout.hpp"
 #include "dgwarp/run/deform_frame.hpp"
 #include "dgwarp/run/original_cells.hpp"
 
@@ -68,6 +69,18 @@ int main(int argc, char** argv) {
                     1e9 * t_quality / static_cast<double>(mesh.cells.size()), 1e3 * t_summary, 1e3 * t_ratio_summary);
         std::printf("   measure_original %.1f ms, measure_frame %.1f ms (min %.6f, mean %.6f)\n", 1e3 * t_original,
                     1e3 * t_frame, s.min, s.mean);
+        // Over the layout (quality_layout.hpp), what measure_original builds and measure_frame uses.
+        QualityLayout layout;
+        const double t_layout = median_seconds(repeats, [&] { layout = make_quality_layout(mesh); });
+        const double t_own_layout = median_seconds(repeats, [&] { (void)cell_orientations(layout, mesh); });
+        std::vector<double> q_layout;
+        const double t_quality_layout =
+            median_seconds(repeats, [&] { q_layout = cell_qualities(layout, mesh, moved, orientation); });
+        std::printf("   layout: make_quality_layout %.1f ms, cell_orientations %.1f ms, cell_qualities %.1f ms "
+                    "(%.1f ns/cell; %s)\n",
+                    1e3 * t_layout, 1e3 * t_own_layout, 1e3 * t_quality_layout,
+                    1e9 * t_quality_layout / static_cast<double>(mesh.cells.size()),
+                    q_layout == q ? "the same values" : "DIFFERENT VALUES");
     }
     return 0;
 }

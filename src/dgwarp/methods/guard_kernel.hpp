@@ -9,19 +9,17 @@
 // the loop spills registers.)
 #include <cstddef>
 
+#include "dgwarp/quality/simplex_kernel.hpp"
+
 namespace dgwarp::guard_detail {
 
 /// Simplices per block of the kernel (its columns stay in L1).
-constexpr std::size_t kernel_block = 256;
+constexpr std::size_t kernel_block = quality_detail::simplex_block;
 
 /// The edge vectors of up to kernel_block simplices from their first node,
-/// column by column: 3D a1 = (e[0], e[1], e[2]), a2 = (e[3], e[4], e[5]),
-/// a3 = (e[6], e[7], e[8]); 2D a1 = (e[0], e[1]), a2 = (e[2], e[3]). `sign`:
-/// the orientation each simplex is judged against (+1 or -1).
-struct SimplexEdges {
-    double e[9][kernel_block];
-    double sign[kernel_block];
-};
+/// column by column, and the orientation each is judged against: the quality
+/// pass's block (quality/simplex_kernel.hpp).
+using SimplexEdges = quality_detail::SimplexBlock;
 
 /// For i < count: alpha[i] = sign × α (six times the signed volume, twice the
 /// signed area) and key[i] the guard's key of a plainly valid simplex

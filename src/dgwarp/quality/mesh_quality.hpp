@@ -32,6 +32,17 @@ std::vector<double> cell_qualities(const Mesh& mesh, std::span<const std::int8_t
 std::vector<double> cell_qualities(const Mesh& mesh, std::span<const double> points,
                                    std::span<const std::int8_t> orientations);
 
+struct QualityLayout;  // quality_layout.hpp
+
+/// cell_qualities and cell_orientations over a layout of `mesh`
+/// (make_quality_layout): the same values to the bit, several times faster
+/// on a mesh of simplices (the points copied in the layout's order, the
+/// simplices by a vectorised kernel). A layout that does not fit the mesh
+/// (QualityLayout::fits) takes the cells one by one, as above.
+std::vector<double> cell_qualities(const QualityLayout& layout, const Mesh& mesh, std::span<const double> points,
+                                   std::span<const std::int8_t> orientations);
+std::vector<std::int8_t> cell_orientations(const QualityLayout& layout, const Mesh& mesh);
+
 struct QualityHistogram {
     std::vector<double> edges;          // bin edges, size counts.size() + 1; first bin is (-inf, 0]
     std::vector<std::int64_t> counts;   // cells per bin

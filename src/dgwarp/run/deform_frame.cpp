@@ -45,7 +45,8 @@ std::vector<std::int64_t> worst_cells(std::vector<std::int64_t> cells, std::span
 FrameCells measure_frame(const Mesh& mesh, std::span<const double> points, const OriginalCells& original,
                          std::span<const NodeId> fixed) {
     FrameCells c;
-    c.quality = cell_qualities(mesh, points, original.orientation);
+    c.quality = original.layout ? cell_qualities(*original.layout, mesh, points, original.orientation)
+                                : cell_qualities(mesh, points, original.orientation);
     c.ratio = quality_ratios(c.quality, original.quality);
     c.inverted = newly_inverted_cells(c.quality, original.quality);
     c.inverted_on_boundary = cells_with_only_fixed_nodes(mesh.cells, fixed, c.inverted);
@@ -98,7 +99,7 @@ std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const O
     if (!guard_verdict(*harmonic, guard_measure_of(cells, original), original.valid_min, redo_below, guard))
         return cells;
     std::vector<double> redo(out.size());
-    if (guard_redo(*harmonic, points, motion, redo, guard)) {
+    if (guard_redo(*harmonic, mesh.cells, points, motion, redo, guard)) {
         FrameCells redone = measure_frame(mesh, redo, original, fixed);
         guard.redo = guard_measure_of(redone, original);
         if (guard_keep(*harmonic, redo, out, guard)) {

@@ -19,9 +19,10 @@ double lowest_valid(const std::vector<double>& quality) {
 
 OriginalCells measure_original(const Mesh& mesh) {
     OriginalCells o;
-    o.own_orientation = cell_orientations(mesh);
+    o.layout = std::make_shared<const QualityLayout>(make_quality_layout(mesh));
+    o.own_orientation = cell_orientations(*o.layout, mesh);
     o.orientation = dominant_orientations(mesh, o.own_orientation);
-    o.quality = cell_qualities(mesh, o.orientation);
+    o.quality = cell_qualities(*o.layout, mesh, mesh.points, o.orientation);
     o.summary = summarize_quality(o.quality);
     o.valid_min = lowest_valid(o.quality);
     return o;
@@ -34,9 +35,10 @@ OriginalCells measure_original(const Mesh& mesh, std::vector<std::int8_t> own_or
             throw MeshError(std::to_string(given->size()) + " cell orientations for a mesh of " +
                             std::to_string(mesh.cells.size()) + " cells");
     OriginalCells o;
+    o.layout = std::make_shared<const QualityLayout>(make_quality_layout(mesh));
     o.own_orientation = std::move(own_orientation);
     o.orientation = std::move(orientation);
-    o.quality = cell_qualities(mesh, o.orientation);
+    o.quality = cell_qualities(*o.layout, mesh, mesh.points, o.orientation);
     o.summary = summarize_quality(o.quality);
     o.valid_min = lowest_valid(o.quality);
     return o;

@@ -3,10 +3,12 @@
 // measured once. A cell flipped in the input counts as inverted before and
 // after (reported as already inverted, never as the motion's doing).
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/quality/quality_layout.hpp"
 
 namespace dgwarp {
 
@@ -19,6 +21,9 @@ struct OriginalCells {
     std::vector<double> quality;               // per cell, judged by `orientation`
     QualitySummary summary;                    // of `quality`
     double valid_min = 0;  // the lowest quality of the cells valid in the original (quality > 0); 0 when none is
+    /// The cells laid out for the quality pass (quality_layout.hpp), built
+    /// here once: measure_frame measures every frame over it.
+    std::shared_ptr<const QualityLayout> layout;
 };
 
 /// The original cells of `mesh`, judged by the majority orientation of each cell type. Threaded.
