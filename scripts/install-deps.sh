@@ -9,13 +9,15 @@
 # libsuitesparse-dev: CHOLMOD, the laplacian method's 3D factorisation;
 # libopenblas0-serial: its dense blocks (3.5 x the reference BLAS; serial, so
 # results do not depend on a BLAS thread count).
+# ccache: a fresh clone on a machine that has built dgwarp compiles only what
+# changed (CMakeLists.txt, DGWARP_CCACHE).
 # Idempotent: prints nothing and touches nothing when everything is present.
 # `install-deps.sh fuzz` also installs what scripts/fuzz.sh needs (clang,
 # libFuzzer and the sanitizer runtimes, LLVM's OpenMP).
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config python3 python3-jsonschema
+  build-essential cmake ccache pkg-config python3 python3-jsonschema
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libmetis-dev libsuitesparse-dev libopenblas0-serial libnanoflann-dev libcli11-dev nlohmann-json3-dev
   libgmsh-dev libcairo2-dev zlib1g-dev python3-meshio
