@@ -15,6 +15,7 @@
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "support/case_frame.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -28,14 +29,8 @@ struct Scene {
 };
 
 Scene case_scene(const std::string& name, const std::string& motion_name) {
-    Scene s;
-    s.mesh = make_case(name);
-    for (const CaseMotion& m : case_motions(name, s.mesh))
-        if (m.name == motion_name) {
-            s.boundary = resolve_boundary(s.mesh, m.spec);
-            s.motion = resolve_frame(s.mesh, m.spec, s.boundary, 0).motion;
-        }
-    return s;
+    test::CaseFrame c = test::case_frame(name, motion_name);
+    return {std::move(c.mesh), std::move(c.boundary), std::move(c.frame.motion)};
 }
 
 // Random 2D scene 1 (docs/ROBUSTNESS-2D.md): a circle and a rounded rectangle

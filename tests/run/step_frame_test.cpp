@@ -8,33 +8,19 @@
 #include <string>
 #include <vector>
 
-#include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/run/deform_frame.hpp"
 #include "dgwarp/run/run_deformation.hpp"
+#include "support/case_frame.hpp"
 
 using namespace dgwarp;
 
 namespace {
 
-struct CaseFrame {
-    Mesh mesh;
-    MotionSpec spec;
-    ResolvedBoundary boundary;
-    ResolvedFrame frame;
-};
-
-CaseFrame case_frame(const std::string& name, const std::string& motion) {
-    CaseFrame c;
-    c.mesh = make_case(name);
-    for (const CaseMotion& m : case_motions(name, c.mesh))
-        if (m.name == motion) c.spec = m.spec;
-    c.boundary = resolve_boundary(c.mesh, c.spec);
-    c.frame = resolve_frame(c.mesh, c.spec, c.boundary, 0);
-    return c;
-}
+using test::case_frame;
+using test::CaseFrame;
 
 void expect_same_measure(const GuardMeasure& a, const GuardMeasure& b, const std::string& what) {
     EXPECT_EQ(a.inverted, b.inverted) << what;

@@ -39,17 +39,26 @@ std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g);
 std::size_t first_simplex(const DgHarmonicGuard& g);
 }  // namespace
 
-std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
-                                                              const ElementList& cells, const BoundarySet& boundary,
-                                                              const LaplacianOptions& laplacian) {
-    // Cells of the dimension, ids in range, the laplacian options.
+namespace {
+/// A guard with its boundary and laplacian options, the cells checked (of the
+/// dimension, ids in range) as check_laplacian_cells checks them.
+std::shared_ptr<DgHarmonicGuard> checked_guard(int dim, std::span<const double> points, const ElementList& cells,
+                                               const BoundarySet& boundary, const LaplacianOptions& laplacian) {
     check_laplacian_inputs(dim, points, cells, boundary, laplacian, "DG-harmonic's guard (laplacian)");
     auto guard = std::make_shared<DgHarmonicGuard>();
     guard->mesh.dim = dim;
-    guard->mesh.points.assign(points.begin(), points.end());
-    guard->mesh.cells = cells;
     guard->boundary = boundary;
     guard->laplacian_options = laplacian;
+    return guard;
+}
+}  // namespace
+
+std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span<const double> points,
+                                                              const ElementList& cells, const BoundarySet& boundary,
+                                                              const LaplacianOptions& laplacian) {
+    auto guard = checked_guard(dim, points, cells, boundary, laplacian);
+    guard->mesh.points.assign(points.begin(), points.end());
+    guard->mesh.cells = cells;
     const std::size_t num_points = points.size() / static_cast<std::size_t>(dim);
     std::vector<std::uint8_t> on_boundary(num_points, 0);
     for (NodeId n : boundary.nodes) on_boundary[static_cast<std::size_t>(n)] = 1;
@@ -90,11 +99,7 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
 std::shared_ptr<const DgHarmonicGuard> make_frame_guard(int dim, std::span<const double> points,
                                                         const ElementList& cells, const BoundarySet& boundary,
                                                         const LaplacianOptions& laplacian) {
-    check_laplacian_inputs(dim, points, cells, boundary, laplacian, "DG-harmonic's guard (laplacian)");
-    auto guard = std::make_shared<DgHarmonicGuard>();
-    guard->mesh.dim = dim;
-    guard->boundary = boundary;
-    guard->laplacian_options = laplacian;
+    auto guard = checked_guard(dim, points, cells, boundary, laplacian);
     guard->for_frames = true;
     return guard;
 }
