@@ -297,14 +297,11 @@ void run_deform(const DeformArgs& given) {
             const nlohmann::json run = run_json(in, runs[0]);
             for (const auto& [key, value] : run.items()) j[key] = value;
         }
-        for (const auto& w : stale_warnings) {
-            j["warnings"].push_back(w);
-            j["warning_items"].push_back(warning_json({WarningCode::other, w}));
-        }
-        for (const auto& w : layout_warnings) {
-            j["warnings"].push_back(w);
-            j["warning_items"].push_back(warning_json({WarningCode::other, w}));
-        }
+        for (const auto* texts : {&stale_warnings, &layout_warnings})
+            for (const auto& w : *texts) {
+                j["warnings"].push_back(w);
+                j["warning_items"].push_back(warning_json({WarningCode::other, w}));
+            }
         j["valid"] = std::none_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.invalid; });
         std::cout << j.dump(2) << "\n";
     }

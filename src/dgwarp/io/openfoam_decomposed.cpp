@@ -82,35 +82,37 @@ foam::OrderedCell case_ordered_cell(const Mesh& m, std::size_t c, const std::vec
 
 }  // namespace
 
-std::vector<fs::path> openfoam_unread_processor_folders(const fs::path& path) {
-    if (!is_folder(path) || !is_folder(path / "constant" / "polyMesh")) return {};
+namespace {
+/// The folders of `path` named `prefix` and a number (processor0, ...), by number.
+std::map<long, fs::path> numbered_folders(const fs::path& path, const char* prefix) {
     std::map<long, fs::path> found;
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(path, ec))
-        if (const long n = processor_number(entry.path().filename().string(), "processor"); n >= 0 && is_folder(entry.path()))
+        if (const long n = processor_number(entry.path().filename().string(), prefix); n >= 0 && is_folder(entry.path()))
             found[n] = entry.path();
+    return found;
+}
+}  // namespace
+
+std::vector<fs::path> openfoam_unread_processor_folders(const fs::path& path) {
+    if (!is_folder(path) || !is_folder(path / "constant" / "polyMesh")) return {};
     std::vector<fs::path> folders;
-    for (const auto& [n, folder] : found) folders.push_back(folder);
+    for (const auto& [n, folder] : numbered_folders(path, "processor")) folders.push_back(folder);
     return folders;
 }
 
 std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
-    std::error_code ec;
     if (!is_folder(path) || is_folder(path / "constant" / "polyMesh")) return {};
-    std::map<long, fs::path> found;
-    for (const auto& entry : fs::directory_iterator(path, ec)) {
-        const std::string name = entry.path().filename().string();
-        if (!is_folder(entry.path())) continue;
-        if (processor_number(name, "processors") >= 0)
-            throw FormatError(entry.path().string() +
-                              ": a collated decomposed case (one processors<N> folder); dgwarp reads the uncollated "
-                              "layout (processor0, processor1, ...: decomposePar -fileHandler uncollated) or the "
-                              "reconstructed case");
-        if (const long n = processor_number(name, "processor"); n >= 0) found[n] = entry.path() / "constant" / "polyMesh";
-    }
+    if (const auto collated = numbered_folders(path, "processors"); !collated.empty())
+        throw FormatError(collated.begin()->second.string() +
+                          ": a collated decomposed case (one processors<N> folder); dgwarp reads the uncollated "
+                          "layout (processor0, processor1, ...: decomposePar -fileHandler uncollated) or the "
+                          "reconstructed case");
+    const std::map<long, fs::path> found = numbered_folders(path, "processor");
     if (found.empty()) return {};
     std::vector<fs::path> meshes;
-    for (const auto& [n, mesh] : found) {
+    for (const auto& [n, folder] : found) {
+        const fs::path mesh = folder / "constant" / "polyMesh";
         if (n != static_cast<long>(meshes.size()))
             throw FormatError(path.string() + ": a decomposed case whose processor folders are not processor0 to processor" +
                               str(static_cast<std::int64_t>(found.size()) - 1) + " (processor" +

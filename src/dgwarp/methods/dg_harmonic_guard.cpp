@@ -15,16 +15,15 @@
 #include "dgwarp/methods/guard_kernel.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/core/parallel_for.hpp"
-#include "dgwarp/graph/morton_order.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/quality/quality_layout.hpp"
 
 namespace dgwarp {
 
 namespace {
-/// The points in the guard's local order (DgHarmonicGuard::local_order),
-/// copied on the threads; not initialised first (a pass less over 20 MB at
-/// 865k nodes).
+/// The points in the guard's local order (DgHarmonicGuard::local_order;
+/// quality_layout.hpp's points_in_order).
 struct LocalPoints {
     std::unique_ptr<double[]> values;  // num_points × dim
     std::size_t num_points = 0;
@@ -69,10 +68,7 @@ std::shared_ptr<const DgHarmonicGuard> make_dg_harmonic_guard(int dim, std::span
                                      [&](NodeId n) { return on_boundary[static_cast<std::size_t>(n)] != 0; });
         guard->judged[c] = all ? 2 : 1;
     }
-    std::vector<NodeId> all(num_points);
-    for (std::size_t i = 0; i < num_points; ++i) all[i] = static_cast<NodeId>(i);
-    const std::vector<std::uint32_t> order = morton_order(dim, points, all);
-    guard->local_order.assign(order.begin(), order.end());
+    guard->local_order = morton_numbering(dim, points);
     // Judged as `dgwarp quality` judges a mesh on its own: against the
     // majority orientation of each cell type (dominant_orientations), here
     // counted in the layout's order, which gathers far fewer points from
@@ -166,22 +162,7 @@ double exact_simplex_quality(const DgHarmonicGuard& g, const LocalPoints& local,
 }
 
 LocalPoints local_points(const DgHarmonicGuard& g, std::span<const double> points) {
-    const auto d = static_cast<std::size_t>(g.mesh.dim);
-    const std::size_t n = g.local_order.size();
-    LocalPoints local{std::unique_ptr<double[]>(new double[n * d]), n};
-    double* out = local.values.get();
-    const auto nodes = static_cast<std::int64_t>(n);
-    parallel_for(
-        (nodes + pass_block - 1) / pass_block,
-        [&](std::int64_t b) {
-            const auto end = static_cast<std::size_t>(std::min(nodes, (b + 1) * pass_block));
-            for (auto k = static_cast<std::size_t>(b * pass_block); k < end; ++k) {
-                const double* x = points.data() + static_cast<std::size_t>(g.local_order[k]) * d;
-                for (std::size_t j = 0; j < d; ++j) out[k * d + j] = x[j];
-            }
-        },
-        1);
-    return local;
+    return {points_in_order(g.local_order, g.mesh.dim, points), g.local_order.size()};
 }
 
 /// Runs the guard's kernel over the layout's simplices [first, end), on the
@@ -398,6 +379,15 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
     return out;
 }
 
+std::span<const double> points_kept_from(std::span<const double> points, std::span<const double> out,
+                                         std::vector<double>& kept) {
+    if (out.data() < points.data() + points.size() && points.data() < out.data() + out.size()) {
+        kept.assign(points.begin(), points.end());
+        return kept;
+    }
+    return points;
+}
+
 void check_redo_below(double redo_below) {
     if (std::isnan(redo_below) || redo_below >= 1)
         throw Error("DG-harmonic: redo_below must be below 1 (a fraction of the original minimum quality; negative: "
@@ -474,14 +464,9 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
                                                  double redo_below, const ProgressFn& progress) {
     check_redo_below(redo_below);
     DgHarmonicGuardReport r;
-    // `out` may alias `points`: the redo needs the original points, so keep them.
     std::vector<double> kept;
     const bool checks = plan.guard && !plan.guard->for_frames && redo_below >= 0;
-    if (checks && out.data() < points.data() + points.size() &&
-        points.data() < out.data() + out.size()) {
-        kept.assign(points.begin(), points.end());
-        points = kept;
-    }
+    if (checks) points = points_kept_from(points, out, kept);
     r.conflicting_shared_vertices = deform_dg_harmonic(plan, points, motion, out, progress).conflicting_shared_vertices;
     if (!checks) return r;
     const DgHarmonicGuard& guard = *plan.guard;

@@ -134,6 +134,12 @@ DgHarmonicGuardReport deform_dg_harmonic_guarded(const DgHarmonicPlan& plan, std
                                                  const BoundaryMotion& motion, std::span<double> out,
                                                  double redo_below, const ProgressFn& progress = {});
 
+/// The original points a step's redo needs, when the step writes `out`:
+/// `points` itself, or a copy of them in `kept` when `out` overlaps them (a
+/// step in place).
+std::span<const double> points_kept_from(std::span<const double> points, std::span<const double> out,
+                                         std::vector<double>& kept);
+
 /// The guard's pieces, for a caller that measures the one pass itself: the
 /// run layer (run/deform_frame.hpp) measures every frame anyway, so there the
 /// guard judges the one pass on that measure and a frame is measured once.

@@ -27,6 +27,41 @@ constexpr std::int64_t pass_block = 1 << 14;
 
 }  // namespace
 
+std::vector<NodeId> morton_numbering(int dim, std::span<const double> points) {
+    std::vector<NodeId> all(points.size() / static_cast<std::size_t>(dim));
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<NodeId>(i);
+    const std::vector<std::uint32_t> order = morton_order(dim, points, all);
+    return {order.begin(), order.end()};
+}
+
+std::unique_ptr<double[]> points_in_order(std::span<const NodeId> order, int dim, std::span<const double> points,
+                                          double* largest) {
+    const auto d = static_cast<std::size_t>(dim);
+    const std::size_t n = order.size();
+    std::unique_ptr<double[]> local(new double[n * d]);
+    double* out = local.get();
+    const auto nodes = static_cast<std::int64_t>(n);
+    const std::int64_t blocks = (nodes + pass_block - 1) / pass_block;
+    std::vector<double> block_largest(static_cast<std::size_t>(blocks), 0.0);
+    parallel_for(
+        blocks,
+        [&](std::int64_t b) {
+            const auto end = static_cast<std::size_t>(std::min(nodes, (b + 1) * pass_block));
+            double most = 0;
+            for (auto k = static_cast<std::size_t>(b * pass_block); k < end; ++k) {
+                const double* x = points.data() + static_cast<std::size_t>(order[k]) * d;
+                for (std::size_t j = 0; j < d; ++j) {
+                    out[k * d + j] = x[j];
+                    most = std::fabs(x[j]) > most ? std::fabs(x[j]) : most;  // NaN passed over
+                }
+            }
+            block_largest[static_cast<std::size_t>(b)] = most;
+        },
+        1);
+    if (largest) *largest = block_largest.empty() ? 0.0 : *std::max_element(block_largest.begin(), block_largest.end());
+    return local;
+}
+
 QualityLayout make_quality_layout(const Mesh& mesh) {
     QualityLayout g;
     const ElementList& cells = mesh.cells;
@@ -34,10 +69,7 @@ QualityLayout make_quality_layout(const Mesh& mesh) {
     g.dim = mesh.dim;
     g.num_points = mesh.num_points();
     g.num_cells = cells.size();
-    std::vector<NodeId> all(g.num_points);
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<NodeId>(i);
-    const std::vector<std::uint32_t> order = morton_order(mesh.dim, mesh.points, all);
-    g.local_order.assign(order.begin(), order.end());
+    g.local_order = morton_numbering(mesh.dim, mesh.points);
     std::vector<NodeId> local_id(g.num_points);
     for (std::size_t k = 0; k < g.num_points; ++k)
         local_id[static_cast<std::size_t>(g.local_order[k])] = static_cast<NodeId>(k);
@@ -70,33 +102,13 @@ std::size_t layout_bytes(const QualityLayout& g) {
 
 namespace {
 
-/// The points in the layout's order, copied on the threads; nullptr when a
-/// coordinate is beyond 2^400 (or infinite): cell_shape_quality scales such
-/// cells' points first, and the passes then take every cell one by one.
+/// The points in the layout's order; nullptr when a coordinate is beyond
+/// 2^400 (or infinite): cell_shape_quality scales such cells' points first,
+/// and the passes then take every cell one by one.
 std::unique_ptr<double[]> local_points(const QualityLayout& g, std::span<const double> points) {
-    const auto d = static_cast<std::size_t>(g.dim);
-    const std::size_t n = g.num_points;
-    std::unique_ptr<double[]> local(new double[n * d]);
-    double* out = local.get();
-    const auto nodes = static_cast<std::int64_t>(n);
-    const std::int64_t blocks = (nodes + pass_block - 1) / pass_block;
-    std::vector<std::uint8_t> huge(static_cast<std::size_t>(blocks), 0);
-    parallel_for(
-        blocks,
-        [&](std::int64_t b) {
-            const auto end = static_cast<std::size_t>(std::min(nodes, (b + 1) * pass_block));
-            double largest = 0;
-            for (auto k = static_cast<std::size_t>(b * pass_block); k < end; ++k) {
-                const double* x = points.data() + static_cast<std::size_t>(g.local_order[k]) * d;
-                for (std::size_t j = 0; j < d; ++j) {
-                    out[k * d + j] = x[j];
-                    largest = std::fabs(x[j]) > largest ? std::fabs(x[j]) : largest;  // NaN passed over
-                }
-            }
-            huge[static_cast<std::size_t>(b)] = largest > 0x1p400;
-        },
-        1);
-    if (std::find(huge.begin(), huge.end(), 1) != huge.end()) return nullptr;
+    double largest = 0;
+    std::unique_ptr<double[]> local = points_in_order(g.local_order, g.dim, points, &largest);
+    if (largest > 0x1p400) return nullptr;
     return local;
 }
 

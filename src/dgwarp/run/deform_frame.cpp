@@ -81,13 +81,9 @@ std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const O
     if (harmonic) check_redo_below(redo_below);
     const bool guarded = guards_frames(plan, options);
     if (guarded) step.dg_harmonic.redo_below = -1;  // the one pass: the guard judges it below, on the frame's measure
-    // `out` may alias the mesh's points: a redo needs the original ones, so keep them.
-    std::span<const double> points = mesh.points;
+    // `out` may alias the mesh's points: a redo needs the original ones.
     std::vector<double> kept;
-    if (guarded && out.data() < points.data() + points.size() && points.data() < out.data() + out.size()) {
-        kept.assign(points.begin(), points.end());
-        points = kept;
-    }
+    const std::span<const double> points = guarded ? points_kept_from(mesh.points, out, kept) : mesh.points;
     Stopwatch sw;
     report.step = deform(plan, points, motion, out, step, progress);
     report.step_seconds += sw.lap();
