@@ -21,7 +21,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/graph/delaunay_graph.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "bench_timing.hpp"

@@ -14,7 +14,7 @@
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 

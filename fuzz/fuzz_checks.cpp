@@ -17,7 +17,7 @@
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/openfoam.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/vtu.hpp"
 

@@ -5,7 +5,7 @@
 #include "commands.hpp"
 #include "deform_setup.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "output_files.hpp"
 
 namespace dgwarp::cli {

@@ -10,7 +10,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/number_text.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/option_names.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"

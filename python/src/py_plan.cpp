@@ -1,5 +1,5 @@
 // dgwarp.prepare, dgwarp.load_plan and dgwarp.Plan: the library's prepare /
-// deform (methods/method.hpp) and plan files (io/plan_file.hpp) for Python,
+// deform (methods/method.hpp) and plan files (plan/plan_file.hpp) for Python,
 // with the boundary classified and each step's motion resolved as the CLI's
 // `dgwarp prepare` / `dgwarp deform` do (apps/dgwarp/deform_setup.cpp,
 // cmd_deform.cpp), through the same library calls.
@@ -16,7 +16,7 @@
 #include "bindings.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/derivative.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/run/report_json.hpp"

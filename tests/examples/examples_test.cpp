@@ -14,7 +14,7 @@
 
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"

@@ -19,7 +19,7 @@
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/motion_file.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "fuzz_checks.hpp"
 #include "support/box_in_box.hpp"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "support/box_in_box.hpp"
 #include "support/test_paths.hpp"
 

@@ -12,7 +12,7 @@
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/mpi/large_transfers.hpp"
 
 namespace dgwarp::mpi {

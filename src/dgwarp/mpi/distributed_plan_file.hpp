@@ -7,7 +7,7 @@
 // chained over the header and the parts). A part: its rank, the method, the
 // dimension, its counts, a hash of the process's inputs (points, global ids,
 // boundary nodes and flags), the arrays of DistributedPlan and the method's
-// plan file (io/plan_file.hpp: dg-idw and dg-harmonic plans can be saved).
+// plan file (plan/plan_file.hpp: dg-idw and dg-harmonic plans can be saved).
 #include <mpi.h>
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "dgwarp/io/plan_file_detail.hpp"
+#include "dgwarp/plan/plan_file_detail.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include "dgwarp/io/plan_file_detail.hpp"
+#include "dgwarp/plan/plan_file_detail.hpp"
 
 namespace dgwarp::plan_detail {
 

@@ -1,4 +1,4 @@
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 
 #include <gtest/gtest.h>
 

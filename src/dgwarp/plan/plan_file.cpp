@@ -1,4 +1,4 @@
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,7 +13,7 @@
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
-#include "dgwarp/io/plan_file_detail.hpp"
+#include "dgwarp/plan/plan_file_detail.hpp"
 
 namespace dgwarp {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/plan_file.hpp"
+#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "support/box_in_box.hpp"
 #include "support/test_paths.hpp"
