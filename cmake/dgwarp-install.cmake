@@ -14,6 +14,12 @@
 # CGAL's GMP and MPFR, METIS, CHOLMOD and OpenMP, not Cairo, Gmsh or CGNS.
 include(CMakePackageConfigHelpers)
 
+# As a subproject, installed only when asked (the parent's install is its own).
+option(DGWARP_INSTALL "Install dgwarp's libraries, headers and CMake package with cmake --install" ${PROJECT_IS_TOP_LEVEL})
+if(NOT DGWARP_INSTALL)
+  return()
+endif()
+
 get_property(dgwarp_installed_folders GLOBAL PROPERTY DGWARP_FOLDERS)
 set(dgwarp_install_targets "")
 foreach(folder ${dgwarp_installed_folders})

@@ -1,14 +1,16 @@
 # The installed CMake package, as a solver outside the tree uses it
 # (examples/installed_package, docs/API.md "Linking"). Run by ctest:
 #
-#   cmake -DMODE=full|library-only -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=...
+#   cmake -DMODE=full|library-only|subproject -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=...
 #         -DMPIEXEC=... -DIN_TREE_EXAMPLE=... -P installed_package_test.cmake
 #
 # full: installs the build tree BUILD_DIR (every folder library and the CLI).
 # library-only: configures dgwarp afresh with DGWARP_LIBRARY_ONLY=ON, checks
 # that the configuration looked for none of Gmsh, Cairo, CLI11, CGNS and
 # pybind11, builds and installs it.
-# Then, either way: the example solver is configured against the installed
+# subproject: configures tests/install/subproject, which adds dgwarp with
+# add_subdirectory and checks that only its libraries are defined.
+# Then, for full and library-only: the example solver is configured against the installed
 # package (find_package(dgwarp COMPONENTS methods mpi)), built and run on two
 # processes; its link line and the package's link interface name no file
 # format library (Cairo, Gmsh, CGNS, HDF5), and it prints what the in-tree
@@ -36,6 +38,17 @@ function(refuse_names what text)
     endif()
   endforeach()
 endfunction()
+
+if(MODE STREQUAL "subproject")
+  # Configured only: the parent project checks which targets dgwarp defines.
+  file(REMOVE_RECURSE ${WORK_DIR}/${MODE})
+  run("configuring a project that adds dgwarp with add_subdirectory"
+      ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install/subproject -B ${WORK_DIR}/${MODE} -DDGWARP_SOURCE=${SOURCE_DIR})
+  if(NOT run_output MATCHES "dgwarp as a subproject: libraries only")
+    message(FATAL_ERROR "the parent project did not finish its checks:\n${run_output}")
+  endif()
+  return()
+endif()
 
 set(prefix ${WORK_DIR}/${MODE}/prefix)
 file(REMOVE_RECURSE ${prefix} ${WORK_DIR}/${MODE}/solver)
