@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <chrono>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -212,8 +213,15 @@ TEST_P(MethodProperties, OneAndTwoThreadsGiveTheSameBits) {
         std::vector<double> reported(m.points.size());
         for (int attempt = 0; attempt < 10 && reporters.size() < 2; ++attempt)
             deform(two_plan, m.points, motion, reported, variant().options(1.0), [&](double) {
-                const std::lock_guard<std::mutex> hold(lock);
-                reporters.insert(std::this_thread::get_id());
+                {
+                    const std::lock_guard<std::mutex> hold(lock);
+                    reporters.insert(std::this_thread::get_id());
+                }
+                // The reporting thread pauses, so that the other one takes
+                // the next block even on a machine busy with other processes
+                // (one CI run saw one thread take every block ten times; with
+                // 20 ms, none of 8 runs beside three busy loops on two cores did).
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
             });
         set_num_threads(threads);
         EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0) << dim << "D";
