@@ -88,7 +88,7 @@ void run(const Mesh& mesh, const BoundarySet& boundary, const BoundaryMotion& mo
         const double whole = median_seconds(steps, [&] {
             FrameReport report;
             std::optional<FrameCells> cells =
-                step_frame(p, mesh, original, boundary.nodes, motion, {}, out, report);
+                step_frame(p, mesh, original, boundary.nodes, nullptr, motion, {}, out, report);
             finish_frame(plan_method(p), mesh, original, boundary.nodes, {}, out, report, {}, std::move(cells));
             steps_seen.push_back(report.step_seconds);
         });

@@ -126,8 +126,9 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         return add_frame(run, std::move(f), a.allow_invalid);
     };
     try {
-        run_frames(RunContext{in.mesh, in.spec, in.boundary, in.original, run.planned.plan, run.planned.options}, options,
-                   on);
+        run_frames(RunContext{in.mesh, in.spec, in.boundary, in.original, run.planned.plan, run.planned.options,
+                              run.planned.slide ? &*run.planned.slide : nullptr},
+                   options, on);
     } catch (const InvalidResultError& e) {
         if (!several || !in_step) throw;
         run.error = e.what();

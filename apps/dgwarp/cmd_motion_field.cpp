@@ -10,6 +10,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/run/slide_pass.hpp"
 #include "output_files.hpp"
 
 namespace dgwarp::cli {
@@ -69,7 +70,10 @@ void run_motion_field(const MotionFieldArgs& a) {
         throw FormatError(a.setup.mesh + ": a pointDisplacement field lists values in the patches' point order, " +
                           "so MESH must be the OpenFOAM case it is for (convert the mesh first: dgwarp convert " +
                           a.setup.mesh + " CASE/; a decomposed case: reconstructPar first)");
-    const ResolvedFrame frame = resolve_frame(in.mesh, in.spec, in.boundary, static_cast<std::size_t>(a.frame));
+    ResolvedFrame frame = resolve_frame(in.mesh, in.spec, in.boundary, static_cast<std::size_t>(a.frame));
+    // Sliding nodes: the motion the default method's first pass gives them (docs/MOTION.md).
+    if (!in.boundary.slides.empty())
+        slide_motion(prepare_slide_pass(Method::dg_harmonic, in.mesh, in.boundary), frame.motion);
     WarningPrinter warnings(!a.quiet);
     for (const auto& w : in.boundary.warnings) warnings.print(w.text);
     for (const auto& w : frame.warnings) warnings.print(w.text);

@@ -177,7 +177,15 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         }
         in.spec.shared_tolerance = 1e-9 * std::sqrt(sum);
     }
-    mpi_collectively([&] { in.boundary = resolve_boundary(in.mesh, in.spec); });
+    mpi_collectively([&] {
+        in.boundary = resolve_boundary(in.mesh, in.spec);
+        // Each process holds its processor's part only; the sliding nodes'
+        // first pass needs every boundary node (run/slide_pass.hpp).
+        if (!in.boundary.sliding_markers.empty())
+            throw Error("marker '" + in.boundary.sliding_markers.front() +
+                        "' slides: sliding markers are not supported when each process reads its own processor "
+                        "folder; run on one process, or on the reconstructed case");
+    });
     const MeshCounts counts = case_counts(in.mesh, part);
     std::int64_t boundary_nodes = 0, moving_nodes = 0;
     for (std::size_t b = 0; b < in.boundary.boundary.nodes.size(); ++b)

@@ -331,6 +331,7 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         progress.phase(phase);
         p.plan = prepare_for_frames(method, in.mesh, in.boundary.boundary, p.options, progress.reporter(phase));
     }
+    if (!in.boundary.slides.empty()) p.slide = prepare_slide_pass(p.method, in.mesh, in.boundary, p.options);
     p.prepare_seconds = sw.lap();
     progress.clear();
     return p;
@@ -350,9 +351,12 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
     const auto& b = in.boundary.boundary;
     out << "mesh      " << in.args.mesh << ": " << describe_mesh(in.mesh) << "\n";
     out << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
-        << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers)
-        << "\n";
-    out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving)\n";
+        << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers);
+    if (!in.boundary.sliding_markers.empty()) out << "; sliding: " << joined(in.boundary.sliding_markers);
+    out << "\n";
+    out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving";
+    if (!in.boundary.slides.empty()) out << ", of them " << in.boundary.slides.size() << " sliding";
+    out << ")\n";
     for (const auto& w : in.boundary.warnings) warnings.print(w.text);
 }
 
@@ -400,7 +404,9 @@ nlohmann::json boundary_json(const Inputs& in) {
     return {{"nodes", b.nodes.size()},
             {"moving_nodes", moving_count(b)},
             {"moving_markers", in.boundary.moving_markers},
-            {"static_markers", in.boundary.static_markers}};
+            {"static_markers", in.boundary.static_markers},
+            {"sliding_markers", in.boundary.sliding_markers},
+            {"sliding_nodes", in.boundary.slides.size()}};
 }
 
 nlohmann::json inputs_json(const Inputs& in, const std::string& command) {

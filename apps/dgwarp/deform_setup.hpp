@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
@@ -109,6 +110,8 @@ struct PlannedMethod {
     /// process's prepare seconds; null and empty otherwise.
     std::shared_ptr<DistributedRun> distributed;
     std::vector<double> process_prepare_seconds;
+    /// With sliding markers: their first pass (run/slide_pass.hpp), on this process.
+    std::optional<SlidePass> slide;
 };
 
 /// `distributed`: prepare on every process of an mpirun (mpi_session.hpp);

@@ -281,7 +281,8 @@ StepResult Solver::step(const double* displacement, const std::vector<RigidMotio
             report.step_seconds = sw.lap();
         } else
 #endif
-            measured = dgwarp::step_frame(*s.plan, s.mesh, s.original, s.boundary.nodes, motion, s.options, out, report);
+            measured = dgwarp::step_frame(*s.plan, s.mesh, s.original, s.boundary.nodes, nullptr, motion, s.options, out,
+                                          report);
         dgwarp::finish_frame(s.method, s.mesh, s.original, s.boundary.nodes, s.frame, out, report, {},
                              std::move(measured));
 

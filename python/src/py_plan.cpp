@@ -92,6 +92,10 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
         py::gil_scoped_release release;
         resolved = resolve_boundary(mesh.mesh, spec);
     }
+    if (!resolved.sliding_markers.empty())
+        throw py::value_error("marker '" + resolved.sliding_markers.front() +
+                              "' slides: sliding markers are not supported by the Python package yet (the CLI's "
+                              "`dgwarp deform` supports them, docs/MOTION.md)");
     warn_all(resolved.warnings);
     return resolved;
 }
@@ -362,8 +366,8 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
         static const OriginalCells none;
         const OriginalCells& original = guards_frames(p.plan, options) ? p.original() : none;  // measured once
         bridge.run([&] {
-            measured = step_frame(p.plan, mesh, original, p.boundary.boundary.nodes, boundary_motion, options, xs,
-                                  report, bridge.function());
+            measured = step_frame(p.plan, mesh, original, p.boundary.boundary.nodes, nullptr, boundary_motion, options,
+                                  xs, report, bridge.function());
         });
     }
     report.warnings = std::move(warnings);

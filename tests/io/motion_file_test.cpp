@@ -76,6 +76,13 @@ TEST(MotionFile, DefaultRuleAndTolerance) {
     EXPECT_EQ(spec.shared_tolerance, 1e-6);
 }
 
+TEST(MotionFile, SlideIsAMarkerMotion) {
+    const MotionSpec spec = parse(R"({"markers": {"sym": "slide", "wing": {"translate": [0, 0, 1]}}})");
+    EXPECT_TRUE(std::holds_alternative<SlideMotion>(spec.frames[0].markers.at("sym")));
+    EXPECT_STREQ(motion_kind_name(spec.frames[0].markers.at("sym")), "slide");
+    EXPECT_THROW(parse(R"({"markers": {"sym": "slides"}})"), ParseError);
+}
+
 TEST(MotionFile, FilesAreReadRelativeToTheMotionFile) {
     const auto dir = test::scratch_dir();
     std::filesystem::create_directories(dir / "sub");

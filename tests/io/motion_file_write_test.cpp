@@ -123,6 +123,7 @@ TEST(MotionFileWrite, EveryKindOfMotionReadsBackBitForBit) {
     frames.frames[0].markers["top"] = PrescribedDisplacements{displacements};
     frames.frames[0].markers["side"] = PrescribedNodeMotions{twist};
     frames.frames[0].markers["bottom"] = FixedMotion{};
+    frames.frames[0].markers["sym"] = frames.frames[1].markers["sym"] = SlideMotion{};
     // A rotation vector from degrees (17°), as the case motions make them.
     frames.frames[1].markers["top"] = RigidMotion{{{1, 2, 3}, {0, 17 * (std::numbers::pi / 180), 0}, {0.5, 0.5, 0.5}}};
     frames.frames[1].markers["bottom"] = PrescribedPositions{positions};  // one source: one file for both

@@ -54,7 +54,7 @@ TEST(StepFrame, TheGuardOnTheFramesMeasureDecidesAndWritesAsItsOwnMeasure) {
         std::vector<double> out(c.mesh.points.size());
         FrameReport report;
         const std::optional<FrameCells> cells =
-            step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, c.frame.motion, options, out, report);
+            step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, nullptr, c.frame.motion, options, out, report);
         EXPECT_EQ(out, expected) << what;
         const DgHarmonicGuardReport& g = report.step.guard;
         EXPECT_TRUE(g.checked) << what;
@@ -90,7 +90,7 @@ TEST(StepFrame, TheBarIsAFractionOfTheLowestValidOriginalQuality) {
     std::vector<double> out(c.mesh.points.size());
     FrameReport report;
     const std::optional<FrameCells> cells =
-        step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, c.frame.motion, {}, out, report);
+        step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, nullptr, c.frame.motion, {}, out, report);
     EXPECT_EQ(report.step.guard.bar, DgHarmonicOptions{}.redo_below * lowest);
     // The guard's measure of a frame from its cells, by brute force.
     const GuardMeasure m = guard_measure_of(*cells, original);
@@ -125,7 +125,7 @@ TEST(StepFrame, NoGuardNoMeasureAndOtherMethodsStepAsDeform) {
         const Plan plan = prepare_for_frames(method, c.mesh, c.boundary.boundary);
         std::vector<double> out(c.mesh.points.size()), expected(c.mesh.points.size());
         FrameReport report;
-        EXPECT_FALSE(step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, c.frame.motion, off, out, report));
+        EXPECT_FALSE(step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, nullptr, c.frame.motion, off, out, report));
         EXPECT_FALSE(report.step.guard.checked);
         deform(plan, c.mesh.points, c.frame.motion, expected, off);
         EXPECT_EQ(out, expected) << method_name(method);
@@ -136,7 +136,7 @@ TEST(StepFrame, NoGuardNoMeasureAndOtherMethodsStepAsDeform) {
     const Plan plan = prepare_for_frames(Method::dg_harmonic, c.mesh, c.boundary.boundary);
     std::vector<double> out(c.mesh.points.size());
     FrameReport report;
-    EXPECT_THROW(step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, c.frame.motion, bad, out, report),
+    EXPECT_THROW(step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, nullptr, c.frame.motion, bad, out, report),
                  Error);
 }
 
@@ -148,12 +148,12 @@ TEST(StepFrame, OutputAliasingTheMeshsPointsGivesTheSameBits) {
     const OriginalCells original = measure_original(c.mesh);
     std::vector<double> out(c.mesh.points.size());
     FrameReport report;
-    step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, c.frame.motion, options, out, report);
+    step_frame(plan, c.mesh, original, c.boundary.boundary.nodes, nullptr, c.frame.motion, options, out, report);
     ASSERT_TRUE(report.step.guard.redone);
     // A fresh plan: laplacian's is built on the first redo, from the original points.
     const Plan fresh = prepare_for_frames(Method::dg_harmonic, c.mesh, c.boundary.boundary);
     Mesh in_place = c.mesh;
     FrameReport again;
-    step_frame(fresh, in_place, original, c.boundary.boundary.nodes, c.frame.motion, options, in_place.points, again);
+    step_frame(fresh, in_place, original, c.boundary.boundary.nodes, nullptr, c.frame.motion, options, in_place.points, again);
     EXPECT_EQ(in_place.points, out);
 }

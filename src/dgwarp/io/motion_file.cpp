@@ -102,10 +102,11 @@ MotionFrame MotionParser::parse_markers(const Json& markers, const JsonPlace& at
 
 MarkerMotion MotionParser::parse_marker_motion(const Json& value, const JsonPlace& at, bool in_frames) {
     constexpr const char* kinds =
-        "\"fixed\" or one motion object: {\"rotate\": ..., \"translate\": ...}, {\"displacement_file\": ...}, "
-        "{\"surface_file\": ...}, {\"node_motion_file\": ...} or {\"periodic\": ...}";
+        "\"fixed\", \"slide\" or one motion object: {\"rotate\": ..., \"translate\": ...}, "
+        "{\"displacement_file\": ...}, {\"surface_file\": ...}, {\"node_motion_file\": ...} or {\"periodic\": ...}";
     if (value.is_string()) {
         if (value.get<std::string>() == "fixed") return FixedMotion{};
+        if (value.get<std::string>() == "slide") return SlideMotion{};
         json_fail(at, kinds, value);
     }
     check_object(value, at, {"rotate", "translate", "displacement_file", "surface_file", "node_motion_file", "periodic"});

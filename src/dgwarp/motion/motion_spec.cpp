@@ -54,8 +54,8 @@ const MarkerMotion& marker_motion(const MotionSpec& spec, const MotionFrame& fra
 }
 
 const char* motion_kind_name(const MarkerMotion& motion) {
-    static constexpr const char* names[] = {"fixed",        "rigid",        "periodic", "displacement_file",
-                                            "surface_file", "node_motion_file"};
+    static constexpr const char* names[] = {"fixed",        "rigid",            "periodic", "displacement_file",
+                                            "surface_file", "node_motion_file", "slide"};
     static_assert(std::variant_size_v<MarkerMotion> == std::size(names));
     return names[motion.index()];
 }

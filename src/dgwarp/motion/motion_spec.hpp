@@ -88,8 +88,17 @@ struct PrescribedNodeMotions {
 };
 
 /// How one marker moves.
+/// The marker's nodes slide in the planes of its faces (a symmetry plane,
+/// OpenFOAM's empty and wedge patches): they are not boundary nodes for the
+/// methods, which move them as volume nodes, and their motion out of those
+/// planes is removed (motion/slide_planes.hpp). A sliding marker slides in
+/// every frame.
+struct SlideMotion {
+    bool operator==(const SlideMotion&) const = default;
+};
+
 using MarkerMotion = std::variant<FixedMotion, RigidMotion, PeriodicMotion, PrescribedDisplacements,
-                                  PrescribedPositions, PrescribedNodeMotions>;
+                                  PrescribedPositions, PrescribedNodeMotions, SlideMotion>;
 
 /// One frame of a motion: the motion of each named marker.
 struct MotionFrame {

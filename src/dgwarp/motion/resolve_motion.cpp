@@ -61,7 +61,22 @@ struct Series {
     SeriesContext context;
     BoundarySet boundary;
     std::vector<char> on_static, on_moving;
+    SlideSet slides;
 };
+
+/// Whether marker m slides: SlideMotion in every frame. Throws MeshError
+/// when it slides in some frames only.
+bool marker_slides(const MotionSpec& spec, const std::string& name) {
+    std::size_t sliding = 0;
+    for (const MotionFrame& frame : spec.frames)
+        sliding += std::holds_alternative<SlideMotion>(marker_motion(spec, frame, name));
+    if (sliding > 0 && sliding < spec.frames.size())
+        throw MeshError((spec.source.empty() ? std::string("motion") : spec.source) + ": marker '" + name +
+                            "' slides in " + std::to_string(sliding) + " of the " + std::to_string(spec.frames.size()) +
+                            " frames: a sliding marker slides in every frame",
+                        name);
+    return sliding > 0;
+}
 
 Series make_series(const Mesh& mesh, const MotionSpec& spec) {
     check_marker_names(mesh, spec);
@@ -71,10 +86,18 @@ Series make_series(const Mesh& mesh, const MotionSpec& spec) {
     c.marker_nodes.reserve(n_markers);
     for (const Marker& m : mesh.markers) c.marker_nodes.push_back(marker_nodes(m));
     c.marker_moving.assign(n_markers, 0);
-    for (std::size_t m = 0; m < n_markers; ++m)
+    c.marker_sliding.assign(n_markers, 0);
+    std::vector<std::size_t> sliding;
+    for (std::size_t m = 0; m < n_markers; ++m) {
+        if (marker_slides(spec, mesh.markers[m].name)) {
+            c.marker_sliding[m] = 1;
+            sliding.push_back(m);
+            continue;
+        }
         for (const MotionFrame& frame : spec.frames)
             if (!std::holds_alternative<FixedMotion>(marker_motion(spec, frame, mesh.markers[m].name)))
                 c.marker_moving[m] = 1;
+    }
 
     BoundarySet& boundary = s.boundary;
     for (const auto& nodes : c.marker_nodes) boundary.nodes.insert(boundary.nodes.end(), nodes.begin(), nodes.end());
@@ -90,13 +113,29 @@ Series make_series(const Mesh& mesh, const MotionSpec& spec) {
             const auto slot = static_cast<std::int32_t>(
                 std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), node) - boundary.nodes.begin());
             c.slots[m].push_back(slot);
-            (c.marker_moving[m] ? s.on_moving : s.on_static)[static_cast<std::size_t>(slot)] = 1;
+            if (!c.marker_sliding[m]) (c.marker_moving[m] ? s.on_moving : s.on_static)[static_cast<std::size_t>(slot)] = 1;
         }
     }
     boundary.moving.resize(n);
     for (std::size_t b = 0; b < n; ++b)
         boundary.moving[b] =
             s.on_moving[b] && !(spec.shared_nodes == SharedNodeRule::static_wins && s.on_static[b]) ? 1 : 0;
+    // The sliding nodes: on sliding markers only, and not at a corner (which
+    // stays: neither moving nor static markers hold it, so it is static).
+    // They move, by the motion the step's first pass gives them (SlidePass).
+    if (!sliding.empty()) {
+        std::vector<NodeId> held;
+        for (std::size_t b = 0; b < n; ++b)
+            if (s.on_moving[b] || s.on_static[b]) held.push_back(boundary.nodes[b]);
+        s.slides = slide_planes(mesh, sliding, held).slides;
+        s.slides.slots.reserve(s.slides.size());
+        for (const NodeId node : s.slides.nodes) {
+            const auto b = static_cast<std::size_t>(
+                std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), node) - boundary.nodes.begin());
+            s.slides.slots.push_back(static_cast<std::int32_t>(b));
+            boundary.moving[b] = 1;
+        }
+    }
     c.diagonal = bounding_box_diagonal(mesh);
     c.tolerance = spec.shared_tolerance > 0 ? spec.shared_tolerance : 1e-9 * c.diagonal;
     return s;
@@ -295,6 +334,7 @@ std::int64_t warn_folded_faces(const Context& c, const BoundaryMotion& motion, c
         return cross(sub(x[1], x[0]), sub(x[2], x[0]));
     };
     for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
+        if (c.series.marker_sliding[m]) continue;  // its faces move with the volume
         const ElementList& faces = mesh.markers[m].elements;
         std::size_t folded = 0, example = 0;
         std::vector<P> before, after;
@@ -429,7 +469,10 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
     const Context c{mesh, spec, series.context, series.boundary};
     ResolvedBoundary out;
     for (std::size_t m = 0; m < mesh.markers.size(); ++m)
-        (c.series.marker_moving[m] ? out.moving_markers : out.static_markers).push_back(mesh.markers[m].name);
+        (c.series.marker_sliding[m]  ? out.sliding_markers
+         : c.series.marker_moving[m] ? out.moving_markers
+                                     : out.static_markers)
+            .push_back(mesh.markers[m].name);
 
     std::size_t shared = 0;
     for (std::size_t b = 0; b < c.boundary.nodes.size(); ++b) shared += series.on_moving[b] && series.on_static[b];
@@ -458,6 +501,7 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
         resolve_at(c, spec.frames[f], 0.0, where(spec, f), out.warnings);
     out.boundary = std::move(series.boundary);
     out.context = std::move(series.context);
+    out.slides = std::move(series.slides);
     return out;
 }
 

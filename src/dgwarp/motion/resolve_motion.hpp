@@ -29,6 +29,7 @@
 #include "dgwarp/core/warning.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/motion/motion_spec.hpp"
+#include "dgwarp/motion/slide_planes.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -41,6 +42,7 @@ struct SeriesContext {
     std::vector<std::vector<NodeId>> marker_nodes;  // per mesh marker: its nodes, sorted
     std::vector<std::vector<std::int32_t>> slots;   // per marker node: its index in the BoundarySet
     std::vector<char> marker_moving;                // per mesh marker: 1 when some frame moves it
+    std::vector<char> marker_sliding;               // per mesh marker: 1 when it slides (SlideMotion)
     double diagonal = 0;                            // of the mesh's bounding box
     double tolerance = 0;                           // for new positions of shared nodes to agree
 };
@@ -50,6 +52,12 @@ struct ResolvedBoundary {
     BoundarySet boundary;                     // every node of every marker, sorted; moving flags
     std::vector<std::string> moving_markers;  // in mesh order
     std::vector<std::string> static_markers;  // in mesh order
+    /// Sliding markers (SlideMotion), in mesh order. Their nodes on no other
+    /// marker are `slides` (moving boundary nodes whose motion each frame's
+    /// first pass gives: run/slide_pass.hpp), but where too many planes meet
+    /// (static).
+    std::vector<std::string> sliding_markers;
+    SlideSet slides;
     std::vector<Warning> warnings;            // e.g. nodes shared by moving and static markers
     SeriesContext context;                    // what resolve_frame reuses for every frame
 };

@@ -72,9 +72,9 @@ bool guards_frames(const Plan& plan, const MethodOptions& options) {
 }
 
 std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
-                                     std::span<const NodeId> fixed, const BoundaryMotion& motion,
-                                     const MethodOptions& options, std::span<double> out, FrameReport& report,
-                                     const ProgressFn& progress) {
+                                     std::span<const NodeId> fixed, const SlidePass* slide,
+                                     const BoundaryMotion& given, const MethodOptions& options,
+                                     std::span<double> out, FrameReport& report, const ProgressFn& progress) {
     MethodOptions step = options;
     const auto* harmonic = std::get_if<DgHarmonicPlan>(&plan);
     const double redo_below = step.dg_harmonic.redo_below;
@@ -85,7 +85,15 @@ std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const O
     std::vector<double> kept;
     const std::span<const double> points = guarded ? points_kept_from(mesh.points, out, kept) : mesh.points;
     Stopwatch sw;
+    // With sliding markers, their nodes' motion from the first pass.
+    BoundaryMotion slid;
+    if (slide) {
+        slid = given;
+        slide_motion(*slide, slid);
+    }
+    const BoundaryMotion& motion = slide ? slid : given;
     report.step = deform(plan, points, motion, out, step, progress);
+    if (slide) apply_slides(slide->slides, mesh.dim, out);  // in their planes to round-off, whatever the method
     report.step_seconds += sw.lap();
     if (!guarded) return std::nullopt;
     DgHarmonicGuardReport& guard = report.step.guard;
@@ -96,6 +104,7 @@ std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const O
         return cells;
     std::vector<double> redo(out.size());
     if (guard_redo(*harmonic, mesh.cells, points, motion, redo, guard)) {
+        if (slide) apply_slides(slide->slides, mesh.dim, redo);
         FrameCells redone = measure_frame(mesh, redo, original, fixed);
         guard.redo = guard_measure_of(redone, original);
         if (guard_keep(*harmonic, redo, out, guard)) {
@@ -150,11 +159,11 @@ FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& or
 FrameReport deform_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
                          const ResolvedBoundary& boundary, const ResolvedFrame& motion, const MethodOptions& options,
                          const FrameOptions& frame_options, std::span<double> out, FrameCells* cells,
-                         const ProgressFn& progress) {
+                         const ProgressFn& progress, const SlidePass* slide) {
     FrameReport report;
     std::optional<FrameCells> stepped =
-        step_frame(plan, mesh, original, boundary.boundary.nodes, motion.motion, step_options(options, motion.folded_faces),
-                   out, report, progress);
+        step_frame(plan, mesh, original, boundary.boundary.nodes, slide, motion.motion,
+                   step_options(options, motion.folded_faces), out, report, progress);
     report.warnings = frame_warnings(motion, report.step);
     FrameCells measured = finish_frame(plan_method(plan), mesh, original, boundary.boundary.nodes, frame_options, out,
                                        report, {}, std::move(stepped));

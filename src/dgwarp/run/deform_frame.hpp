@@ -16,6 +16,7 @@
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "dgwarp/run/original_cells.hpp"
+#include "dgwarp/run/slide_pass.hpp"
 
 namespace dgwarp {
 
@@ -104,10 +105,13 @@ bool guards_frames(const Plan& plan, const MethodOptions& options);
 /// quality_seconds (the measure); sets report.step. Returns the cells of
 /// `out` as it is on return when they were measured (pass them to
 /// finish_frame), nullopt otherwise. `fixed`: the boundary nodes (sorted).
+/// `slide`: with sliding markers, their first pass (slide_pass.hpp), which
+/// gives their nodes' motion before the step (`motion`'s entries for them
+/// are ignored) and puts them back into their planes after it; else null.
 std::optional<FrameCells> step_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
-                                     std::span<const NodeId> fixed, const BoundaryMotion& motion,
-                                     const MethodOptions& options, std::span<double> out, FrameReport& report,
-                                     const ProgressFn& progress = {});
+                                     std::span<const NodeId> fixed, const SlidePass* slide,
+                                     const BoundaryMotion& motion, const MethodOptions& options,
+                                     std::span<double> out, FrameReport& report, const ProgressFn& progress = {});
 
 /// Called when a repair starts (for a progress display: it may take seconds).
 using RepairStarted = std::function<void()>;
@@ -129,6 +133,6 @@ FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& or
 FrameReport deform_frame(const Plan& plan, const Mesh& mesh, const OriginalCells& original,
                          const ResolvedBoundary& boundary, const ResolvedFrame& motion, const MethodOptions& options,
                          const FrameOptions& frame_options, std::span<double> out, FrameCells* cells = nullptr,
-                         const ProgressFn& progress = {});
+                         const ProgressFn& progress = {}, const SlidePass* slide = nullptr);
 
 }  // namespace dgwarp

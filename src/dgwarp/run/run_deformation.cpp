@@ -36,6 +36,7 @@ Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method
     d.original = measure_original(mesh);
     d.original_seconds = sw.lap();
     d.plan = prepare_for_frames(method, mesh, d.boundary.boundary, options, progress);
+    if (!d.boundary.slides.empty()) d.slide = prepare_slide_pass(method, mesh, d.boundary, options);
     d.prepare_seconds = sw.lap();
     return d;
 }
@@ -53,11 +54,20 @@ RunReport run_frames(const RunContext& ctx, const RunOptions& options, const Run
         if (callbacks.step_running) callbacks.step_running(true);
         if (callbacks.step) {
             Stopwatch sw;
-            report.step = callbacks.step(motion, points, progress);
+            if (ctx.slide) {
+                // The sliding nodes' first pass here, the step wherever `step` runs it.
+                ResolvedFrame slid = motion;
+                slide_motion(*ctx.slide, slid.motion);
+                report.step = callbacks.step(slid, points, progress);
+                apply_slides(ctx.slide->slides, ctx.mesh.dim, points);
+            } else {
+                report.step = callbacks.step(motion, points, progress);
+            }
             report.step_seconds = sw.lap();
         } else {
-            stepped = step_frame(ctx.plan, ctx.mesh, ctx.original, ctx.boundary.boundary.nodes, motion.motion,
-                                 step_options(ctx.options, motion.folded_faces), points, report, progress);
+            stepped = step_frame(ctx.plan, ctx.mesh, ctx.original, ctx.boundary.boundary.nodes, ctx.slide,
+                                 motion.motion, step_options(ctx.options, motion.folded_faces), points, report,
+                                 progress);
         }
         if (callbacks.step_running) callbacks.step_running(false);
         report.warnings = frame_warnings(motion, report.step);

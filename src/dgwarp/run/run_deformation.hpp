@@ -11,6 +11,7 @@
 //   const RunReport r = run_frames(RunContext::of(mesh, spec, d), {}, on);
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/run/deform_frame.hpp"
 #include "dgwarp/run/original_cells.hpp"
+#include "dgwarp/run/slide_pass.hpp"
 
 namespace dgwarp {
 
@@ -32,6 +34,7 @@ struct Deformation {
     ResolvedBoundary boundary;
     OriginalCells original;
     Plan plan;
+    std::optional<SlidePass> slide;  // with sliding markers: their first pass (slide_pass.hpp)
     double resolve_seconds = 0, original_seconds = 0, prepare_seconds = 0;
 };
 
@@ -61,10 +64,11 @@ struct RunContext {
     const ResolvedBoundary& boundary;
     const OriginalCells& original;
     const Plan& plan;
-    const MethodOptions& options;  // the plan's (a loaded plan's own)
+    const MethodOptions& options;      // the plan's (a loaded plan's own)
+    const SlidePass* slide = nullptr;  // with sliding markers: their first pass
 
     static RunContext of(const Mesh& mesh, const MotionSpec& spec, const Deformation& d) {
-        return {mesh, spec, d.boundary, d.original, d.plan, d.options};
+        return {mesh, spec, d.boundary, d.original, d.plan, d.options, d.slide ? &*d.slide : nullptr};
     }
 };
 
