@@ -28,13 +28,12 @@ foreach(folder ${dgwarp_installed_folders})
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()
 # The small interface targets that name a third-party library without a
-# CMake package of its own (their link line only; no header of dgwarp's
-# includes theirs).
-foreach(link metis cholmod cgns gmsh)
-  if(TARGET dgwarp_${link})
-    set_target_properties(dgwarp_${link} PROPERTIES EXPORT_NAME link_${link})
-    list(APPEND dgwarp_install_targets dgwarp_${link})
-  endif()
+# CMake package of its own (dgwarp_system_library: their link line only; no
+# header of dgwarp's includes theirs).
+get_property(dgwarp_system_libraries GLOBAL PROPERTY DGWARP_SYSTEM_LIBRARIES)
+foreach(link ${dgwarp_system_libraries})
+  set_target_properties(dgwarp_${link} PROPERTIES EXPORT_NAME link_${link})
+  list(APPEND dgwarp_install_targets dgwarp_${link})
 endforeach()
 install(TARGETS ${dgwarp_install_targets} EXPORT dgwarpTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
