@@ -69,7 +69,8 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         std::cerr << "warning: " << w << "\n";
     WriteOptions write_options;
     write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
-    Mesh deformed = in.mesh;
+    Mesh deformed = output_mesh(in);  // a 2D case's outputs are its 3D mesh
+    std::vector<double> lifted;
     RunOptions options;
     options.frame.repair = a.untangle ? Repair::untangle : a.no_untangle ? Repair::none : Repair::method_default;
     options.frame.untangle_target = a.untangle_target;
@@ -109,12 +110,13 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         if ((!invalid || a.allow_invalid) && foam) {
             if (!foam_base_written) write_foam_base(in, out, foam_times[v.frame]);
             foam_base_written = true;
-            f.output = write_foam_points(in, out, foam_times[v.frame], v.points).string();
+            f.output = write_foam_points(in, out, foam_times[v.frame], output_points(in, v.points, lifted)).string();
             f.write_seconds = sw.lap();
         } else if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, v.frame, frames);
-            std::copy(v.points.begin(), v.points.end(), deformed.points.begin());
-            write_mesh(path, deformed, deformation_fields(in.mesh, v.points, v.cells.quality, v.cells.ratio),
+            const std::span<const double> points = output_points(in, v.points, lifted);
+            std::copy(points.begin(), points.end(), deformed.points.begin());
+            write_mesh(path, deformed, deformation_fields(deformed, points, v.cells.quality, v.cells.ratio),
                        write_options);
             f.output = path.string();
             f.write_seconds = sw.lap();
@@ -234,9 +236,9 @@ void run_deform(const DeformArgs& given) {
     {
         WriteOptions write_options;
         write_options.extras = &in.extras;
-        check_mesh_writable(a.output, in.mesh, write_options);
+        check_mesh_writable(a.output, output_mesh(in), write_options);
     }
-    if (foam && in.mesh.dim != 3)
+    if (foam && output_mesh(in).dim != 3)
         throw MeshError("OpenFOAM meshes are 3D: the " + std::to_string(in.mesh.dim) + "D mesh " + a.setup.mesh +
                         " cannot be written to the OpenFOAM case " + a.output);
     const std::size_t frames = frame_count(in.spec);

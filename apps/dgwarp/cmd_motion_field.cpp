@@ -1,6 +1,7 @@
 // dgwarp motion-field MESH -m MOTION -o OUT: the displacement a motion gives
 // the boundary nodes, for another solver to apply the same motion (CSV, or
 // OpenFOAM's pointDisplacement in a case's time folder; docs/OPENFOAM.md).
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -71,25 +72,44 @@ void run_motion_field(const MotionFieldArgs& a) {
                           "so MESH must be the OpenFOAM case it is for (convert the mesh first: dgwarp convert " +
                           a.setup.mesh + " CASE/; a decomposed case: reconstructPar first)");
     ResolvedFrame frame = resolve_frame(in.mesh, in.spec, in.boundary, static_cast<std::size_t>(a.frame));
-    // Sliding nodes: the motion the default method's first pass gives them (docs/MOTION.md).
+    // Sliding nodes: the motion the first pass gives them (docs/MOTION.md).
     if (!in.boundary.slides.empty())
-        slide_motion(prepare_slide_pass(Method::dg_harmonic, in.mesh, in.boundary), frame.motion);
+        slide_motion(prepare_slide_pass(in.mesh, in.boundary), frame.motion);
     WarningPrinter warnings(!a.quiet);
     for (const auto& w : in.boundary.warnings) warnings.print(w.text);
     for (const auto& w : frame.warnings) warnings.print(w.text);
-    const std::vector<double> displacement = node_displacements(in.mesh, in.boundary.boundary, frame.motion);
+    std::vector<double> displacement = node_displacements(in.mesh, in.boundary.boundary, frame.motion);
+    BoundarySet boundary = in.boundary.boundary;
+    if (in.planar) {
+        // A 2D case: the 3D nodes' displacements, each its 2D node's, and both twins of each boundary node.
+        std::vector<double> moved = in.mesh.points, lifted;
+        for (std::size_t i = 0; i < moved.size(); ++i) moved[i] += displacement[i];
+        const std::span<const double> points = output_points(in, moved, lifted);
+        displacement.assign(points.begin(), points.end());
+        for (std::size_t i = 0; i < displacement.size(); ++i) displacement[i] -= in.file_mesh.points[i];
+        BoundarySet twins;
+        for (std::size_t v = 0; v < in.planar->node_2d.size(); ++v) {
+            const NodeId j = in.planar->node_2d[v];
+            const auto it = std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), j);
+            if (it == boundary.nodes.end() || *it != j) continue;
+            twins.nodes.push_back(static_cast<NodeId>(v));
+            twins.moving.push_back(boundary.moving[static_cast<std::size_t>(it - boundary.nodes.begin())]);
+        }
+        boundary = std::move(twins);
+    }
+    const Mesh& mesh = output_mesh(in);
     if (csv) {
-        write_csv(file, in.mesh, in.boundary.boundary, displacement);
+        write_csv(file, mesh, boundary, displacement);
     } else {
         std::filesystem::create_directories(file.parent_path());
         const std::string text =
-            openfoam_point_displacement_text(in.mesh, displacement, in.extras.openfoam->patches, a.foam_time);
+            openfoam_point_displacement_text(mesh, displacement, in.extras.openfoam->patches, a.foam_time);
         write_file_atomically(file, [&](std::ostream& out) { out << text; });
     }
     if (a.quiet) return;
     std::size_t moving = 0;
-    for (auto m : in.boundary.boundary.moving) moving += m;
-    std::cout << "wrote " << file.string() << ": displacement of " << in.boundary.boundary.nodes.size()
+    for (auto m : boundary.moving) moving += m;
+    std::cout << "wrote " << file.string() << ": displacement of " << boundary.nodes.size()
               << " boundary nodes (" << moving << " moving)\nmoving markers:";
     for (const auto& m : in.boundary.moving_markers) std::cout << " " << m;
     std::cout << "\n";

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/openfoam.hpp"
 #include "flag_values.hpp"
@@ -336,8 +337,22 @@ bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& metho
     if (mpi_processes() < 2 || methods.size() != 1 || !a.plan.empty() || a.untangle || !writes_openfoam(a.output))
         return false;
     try {
-        if (openfoam_processor_meshes(a.setup.mesh).size() != static_cast<std::size_t>(mpi_processes())) return false;
-        return !has_node_tables(read_motion_file(a.setup.motion));
+        const std::vector<fs::path> processors = openfoam_processor_meshes(a.setup.mesh);
+        if (processors.size() != static_cast<std::size_t>(mpi_processes())) return false;
+        MotionSpec spec = read_motion_file(a.setup.motion);
+        if (has_node_tables(spec) || !a.setup.su2_config.empty()) return false;
+        // Sliding markers (2D cases, symmetry planes) need every boundary node
+        // in one first pass: the whole case is read on rank 0.
+        const std::vector<OpenFoamPatchType> patches = openfoam_patch_types(processors.front());
+        std::vector<std::string> typed;
+        for (const OpenFoamPatchType& p : patches)
+            if (slides_by_type(p.type)) typed.push_back(p.name);
+        slide_unless_named(spec, typed);
+        return std::none_of(patches.begin(), patches.end(), [&](const OpenFoamPatchType& p) {
+            return std::any_of(spec.frames.begin(), spec.frames.end(), [&](const MotionFrame& f) {
+                return std::holds_alternative<SlideMotion>(marker_motion(spec, f, p.name));
+            });
+        });
     } catch (const Error&) {
         return false;  // the whole-case run reports it
     }

@@ -8,7 +8,10 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/io/su2_config.hpp"
+#include "dgwarp/motion/planar_motion.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/option_names.hpp"
@@ -84,6 +87,9 @@ void add_input_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh, .vtu, .cgns) or OpenFOAM case folder")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
     cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
+    cmd->add_option("--su2-config", a.su2_config,
+                    "An SU2 configuration file (CASE.cfg): its MARKER_SYM markers slide in their planes unless the "
+                    "motion names them (docs/MOTION.md \"Sliding by type\")");
 }
 
 void add_setup_options(CLI::App* cmd, SetupArgs& a) {
@@ -224,13 +230,46 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
+    // Markers that slide by their type; a 2D case deformed as its 2D mesh.
+    std::vector<std::string> symmetry;
+    if (!args.su2_config.empty())
+        for (const Su2ConfigMarker& m : su2_symmetry_markers(args.su2_config)) {
+            try {
+                find_marker(in.mesh, m.name);
+            } catch (const MeshError& e) {
+                throw MeshError(args.su2_config + ":" + std::to_string(m.line) + ": MARKER_SYM: " + e.what(), m.name);
+            }
+            symmetry.push_back(m.name);
+        }
+    TypedMotion typed = apply_marker_types(in.mesh, in.extras, in.spec, symmetry);
+    in.sliding_by_type = std::move(typed.sliding);
+    in.not_planar = std::move(typed.not_planar);
+    if (typed.planar) {
+        in.spec = planar_motion(*typed.planar, in.mesh, in.spec);
+        in.file_mesh = std::move(in.mesh);
+        in.mesh = typed.planar->mesh;
+        in.planar = std::move(typed.planar);
+    }
     in.boundary = resolve_boundary(in.mesh, in.spec);
+    if (!in.not_planar.empty())
+        in.boundary.warnings.push_back(
+            {WarningCode::other, "the empty or wedge patches slide but do not make a 2D case (" + in.not_planar +
+                                     "): the mesh is deformed in 3D, their nodes kept in their planes"});
     if (const std::string zone = zone_notice(in.extras, args.mesh, args.zone); !zone.empty())
         in.boundary.warnings.insert(in.boundary.warnings.begin(),
                                     {WarningCode::other, zone + "; an .su2 output keeps the other zones as they are"});
     in.resolve_seconds = sw.lap();
     progress.clear();
     return in;
+}
+
+const Mesh& output_mesh(const Inputs& in) { return in.planar ? in.file_mesh : in.mesh; }
+
+std::span<const double> output_points(const Inputs& in, std::span<const double> points, std::vector<double>& buffer) {
+    if (!in.planar) return points;
+    buffer.resize(in.file_mesh.points.size());
+    lift_points(*in.planar, in.file_mesh.points, points, buffer);
+    return buffer;
 }
 
 void warn_already_inverted(Inputs& in) {
@@ -285,7 +324,15 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         // process deforms its processor's points (the solver's decomposition).
         std::vector<std::vector<NodeId>> node_parts;
         if (in.extras.openfoam && in.extras.openfoam->processors.size() == static_cast<std::size_t>(mpi_processes()))
-            for (const OpenFoamProcessor& processor : in.extras.openfoam->processors) node_parts.push_back(processor.points);
+            for (const OpenFoamProcessor& processor : in.extras.openfoam->processors) {
+                node_parts.push_back(processor.points);
+                if (!in.planar) continue;
+                // A 2D case: the 2D nodes of the processor's points.
+                for (NodeId& v : node_parts.back()) v = in.planar->node_2d[static_cast<std::size_t>(v)];
+                std::sort(node_parts.back().begin(), node_parts.back().end());
+                node_parts.back().erase(std::unique(node_parts.back().begin(), node_parts.back().end()),
+                                        node_parts.back().end());
+            }
         p.distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options, node_parts, p.plan,
                                     p.process_prepare_seconds);
     } else if (!plan_file.empty()) {
@@ -331,7 +378,7 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         progress.phase(phase);
         p.plan = prepare_for_frames(method, in.mesh, in.boundary.boundary, p.options, progress.reporter(phase));
     }
-    if (!in.boundary.slides.empty()) p.slide = prepare_slide_pass(p.method, in.mesh, in.boundary, p.options);
+    if (!in.boundary.slides.empty()) p.slide = prepare_slide_pass(in.mesh, in.boundary, p.options);
     p.prepare_seconds = sw.lap();
     progress.clear();
     return p;
@@ -349,10 +396,17 @@ std::vector<Warning> plan_warnings(const PlannedMethod& p) {
 
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings) {
     const auto& b = in.boundary.boundary;
-    out << "mesh      " << in.args.mesh << ": " << describe_mesh(in.mesh) << "\n";
+    out << "mesh      " << in.args.mesh << ": " << describe_mesh(output_mesh(in)) << "\n";
+    if (in.planar)
+        out << "2D case   one cell thick between its " << (in.planar->wedge ? "wedge" : "empty") << " patches ("
+            << joined(in.planar->plane_markers) << "), deformed as the 2D mesh of the first plane: "
+            << describe_mesh(in.mesh) << "; the other plane's nodes move as their twins"
+            << (in.planar->axis_marker.empty() ? "" : "; the axis (" + in.planar->axis_marker + ") slides") << "\n";
     out << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
         << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers);
     if (!in.boundary.sliding_markers.empty()) out << "; sliding: " << joined(in.boundary.sliding_markers);
+    if (!in.sliding_by_type.empty())
+        out << "; sliding by their patch or BC type (unless the motion names them): " << joined(in.sliding_by_type);
     out << "\n";
     out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving";
     if (!in.boundary.slides.empty()) out << ", of them " << in.boundary.slides.size() << " sliding";
@@ -406,7 +460,14 @@ nlohmann::json boundary_json(const Inputs& in) {
             {"moving_markers", in.boundary.moving_markers},
             {"static_markers", in.boundary.static_markers},
             {"sliding_markers", in.boundary.sliding_markers},
-            {"sliding_nodes", in.boundary.slides.size()}};
+            {"sliding_nodes", in.boundary.slides.size()},
+            {"sliding_by_type", in.sliding_by_type},
+            {"planar", in.planar ? nlohmann::json{{"plane_markers", in.planar->plane_markers},
+                                                  {"nodes", in.mesh.num_points()},
+                                                  {"cells", in.mesh.cells.size()},
+                                                  {"normal", in.planar->normal},
+                                                  {"thickness", in.planar->thickness}}
+                                 : nlohmann::json(nullptr)}};
 }
 
 nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
@@ -414,7 +475,7 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
             {"command", command},
             {"file", in.args.mesh},
             {"motion", in.args.motion},
-            {"mesh", mesh_json(in.mesh)},
+            {"mesh", mesh_json(output_mesh(in))},
             {"boundary", boundary_json(in)},
             {"options", options_json(method_options(in.args), !in.args.weights.empty())},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},

@@ -14,6 +14,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/number_text.hpp"
+#include "dgwarp/mesh/planar_case.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
@@ -32,6 +33,7 @@ struct SetupArgs {
     bool method_given = false;      // --method was on the command line (else a --plan file decides)
     std::set<std::string> given;    // the method options given on the command line ("--length-scale", ...)
     int zone = 1;
+    std::string su2_config;  // an SU2 configuration whose MARKER_SYM markers slide
     int threads = 0;
     // The method options, with the library's defaults.
     double a_translation = DgIdwOptions{}.a_translation;
@@ -72,15 +74,32 @@ MethodOptions method_options(const SetupArgs& args);
 /// The mesh, the motion and the boundary, read and checked once.
 struct Inputs {
     SetupArgs args;
+    /// The mesh deformed: the file's, or the 2D mesh of a 2D case stored as 3D (`planar`).
     Mesh mesh;
     MeshExtras extras;  // what the mesh file holds besides the mesh (SU2: other zones, FFD boxes)
+    /// The motion, in `mesh`'s terms: markers that slide by their type added
+    /// (`sliding_by_type`); for a 2D case, in its planes (motion/planar_motion.hpp).
     MotionSpec spec;
+    std::vector<std::string> sliding_by_type;
+    /// A 2D case stored as 3D (an OpenFOAM 2D case): `mesh` is its 2D mesh,
+    /// `file_mesh` the mesh read, which the outputs are (lift_points).
+    std::optional<PlanarCase> planar;
+    Mesh file_mesh;
+    /// Empty patches that slide but make no 2D case: why (they slide in 3D).
+    std::string not_planar;
     ResolvedBoundary boundary;
     /// The original cells every frame is judged against (run/original_cells.hpp):
     /// a cell flipped in the input counts as inverted before and after.
     OriginalCells original;
     double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
+
+/// The mesh outputs are written as: the file's (in.file_mesh for a 2D case).
+const Mesh& output_mesh(const Inputs& in);
+
+/// `points` (of in.mesh) as points of output_mesh(in): themselves, or the 2D
+/// case's 3D points (lift_points) in `buffer`.
+std::span<const double> output_points(const Inputs& in, std::span<const double> points, std::vector<double>& buffer);
 
 /// Reads the motion file, calls `check_outputs` with it when given (so that
 /// outputs are checked before the long work: their names may depend on its

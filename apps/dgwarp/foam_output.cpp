@@ -117,7 +117,7 @@ void write_foam_base(const Inputs& in, const std::filesystem::path& out, const s
         copy_poly_mesh(in.extras.openfoam->poly_mesh, base,
                        points_here ? std::vector<std::string>{"points", "points.gz"} : std::vector<std::string>{});
     } else {
-        write_openfoam(base, in.mesh);  // the original: OpenFOAM reads the time folders' points with its faces
+        write_openfoam(base, output_mesh(in));  // the original: OpenFOAM reads the time folders' points with its faces
     }
 }
 

@@ -8,6 +8,7 @@
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/mesh/planar_case.hpp"
 #include "io/openfoam_test_support.hpp"
 #include "support/test_paths.hpp"
 
@@ -283,4 +284,80 @@ TEST(CliOpenFoam, AnUsualDecomposedLayoutSaysOnlyTheWholeMeshIsDeformed) {
     r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("processor folders"), std::string::npos) << r.err;
+}
+
+/// Case `dir` (its files maybe gzipped) with the points of `points_file`, read from a copy in `copy`.
+Mesh foam_case_with_points(const std::filesystem::path& dir, const std::filesystem::path& points_file,
+                           const std::filesystem::path& copy) {
+    std::filesystem::copy(dir, copy, std::filesystem::copy_options::recursive);
+    std::filesystem::remove(copy / "constant/polyMesh/points.gz");
+    std::filesystem::copy_file(points_file, copy / "constant/polyMesh/points",
+                               std::filesystem::copy_options::overwrite_existing);
+    return read_mesh(copy);
+}
+
+// 2D and axisymmetric cases (issue #30 item 2): the empty and wedge patches
+// slide by their type, and the case is deformed as its 2D mesh. The result is
+// valid, every point stays in its plane (the empty planes exactly), and twins
+// across the layer stay twins.
+TEST(CliOpenFoam, TwoDAndAxisymmetricCasesDeformInTheirPlanes) {
+    const auto dir = scratch_dir();
+    // pitzDaily (coarse) with its lower wall raised 1 mm, its ends held by the inlet and outlet.
+    const auto raise = write_text(dir / "raise.json",
+                                  R"({"shared_nodes": "static_wins", "markers": {"lowerWall": {"translate": [0, 0.001, 0]}}})");
+    const auto pitz = foam_case_copy("pitz-daily-coarse", dir);
+    CommandResult r = run_cli("deform " + quoted(pitz) + " -m " + quoted(raise) + " -o " + quoted(dir / "pitz-out/") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    nlohmann::json report = nlohmann::json::parse(r.out);
+    EXPECT_EQ(report["boundary"]["sliding_by_type"], nlohmann::json::array({"frontAndBack"}));
+    ASSERT_TRUE(report["boundary"]["planar"].is_object());
+    EXPECT_EQ(report["boundary"]["planar"]["nodes"], 1146);
+    EXPECT_EQ(report["frames"][0]["quality"]["inverted"], 0);
+    EXPECT_EQ(report["mesh"]["dim"], 3);
+    const Mesh before = read_mesh(pitz);
+    const Mesh after = foam_case_with_points(pitz, dir / "pitz-out/0/polyMesh/points", dir / "pitz-moved");
+    const std::size_t empty_planes[] = {4};  // frontAndBack
+    const PlanarCase planar = *find_planar_case(before, empty_planes).planar;
+    std::size_t changed = 0;
+    for (std::size_t v = 0; v < before.num_points(); ++v) {
+        EXPECT_EQ(after.points[3 * v + 2], before.points[3 * v + 2]) << v;  // z exactly
+        // A node moves as its twin on the first plane (blockMesh's twins differ by round-off: so may their moves).
+        const auto twin = static_cast<std::size_t>(planar.node_3d[static_cast<std::size_t>(planar.node_2d[v])]);
+        for (std::size_t k = 0; k < 2; ++k)
+            EXPECT_NEAR(after.points[3 * v + k] - before.points[3 * v + k],
+                        after.points[3 * twin + k] - before.points[3 * twin + k], 1e-17) << v;
+        changed += after.points[3 * v] != before.points[3 * v] || after.points[3 * v + 1] != before.points[3 * v + 1];
+    }
+    EXPECT_GT(changed, 200u);  // the volume moved with the wall, not only the wall
+
+    // movingCone with its cone moved 1 mm along the axis, its far fields slipping.
+    const auto push = write_text(dir / "push.json",
+                                 R"({"markers": {"movingWall": {"translate": [0.001, 0, 0]}, "farFieldMoving": "slide", "farField": "slide"}})");
+    const auto cone = foam_case_copy("moving-cone", dir);
+    r = run_cli("deform " + quoted(cone) + " -m " + quoted(push) + " -o " + quoted(dir / "cone-out/") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    report = nlohmann::json::parse(r.out);
+    EXPECT_EQ(report["boundary"]["sliding_by_type"], nlohmann::json::array({"back", "front"}));
+    EXPECT_EQ(report["frames"][0]["quality"]["inverted"], 0);
+    const Mesh cone_before = read_mesh(cone);
+    const Mesh cone_after = foam_case_with_points(cone, dir / "cone-out/0/polyMesh/points", dir / "cone-moved");
+    const std::size_t wedge_planes[] = {6, 7};  // back, front
+    const PlanarCase wedge = *find_planar_case(cone_before, wedge_planes).planar;
+    for (std::size_t v = 0; v < cone_before.num_points(); ++v) {
+        // In its plane: as far from it as it was (blockMesh's points are in it to round-off), to round-off.
+        const auto& n = wedge.side[v] == 2 ? wedge.normal_second : wedge.normal;
+        const auto distance = [&](const Mesh& m) {
+            double d = 0;
+            for (std::size_t k = 0; k < 3; ++k) d += n[k] * (m.points[3 * v + k] - wedge.origin[k]);
+            return d;
+        };
+        EXPECT_NEAR(distance(cone_after), distance(cone_before), 1e-17) << v;
+    }
+    // The cone's nodes moved by 1 mm, the axis's stayed on it.
+    for (NodeId v : marker_nodes(find_marker(cone_before, "movingWall")))
+        EXPECT_NEAR(cone_after.points[3 * v] - cone_before.points[3 * v], 0.001, 1e-15);
+    for (std::size_t v = 0; v < cone_before.num_points(); ++v)
+        if (cone_before.points[3 * v + 1] == 0 && cone_before.points[3 * v + 2] == 0) {
+            EXPECT_NEAR(std::hypot(cone_after.points[3 * v + 1], cone_after.points[3 * v + 2]), 0, 1e-18) << v;
+        }
 }

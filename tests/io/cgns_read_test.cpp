@@ -319,3 +319,26 @@ TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {
         EXPECT_NO_THROW(read_cgns(dir / name)) << name;
     }
 }
+
+// Each marker's BC type is kept (CgnsSource::marker_types): a BC's own, or for
+// FamilySpecified its family's FamilyBC_t; "" for a section no BC refers to.
+TEST(CgnsRead, MarkersKeepTheirBcTypes) {
+    TestZone z;
+    z.x = {0, 1, 1, 0, 2, 2};
+    z.y = {0, 0, 1, 1, 0, 1};
+    z.sections = {{"All", cgns_code::MIXED, 7,
+                   {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::QUAD_4, 2, 5, 6, 3,
+                    cgns_code::BAR_2, 1, 2, cgns_code::BAR_2, 2, 5, cgns_code::BAR_2, 5, 6, cgns_code::BAR_2, 4, 1}},
+                  {"top", cgns_code::BAR_2, 2, {6, 3, 3, 4}}};
+    z.cells = 3;
+    z.bcs = {{"lower", "", cgns_code::Vertex, false, {1, 2, 5}, cgns_code::BCSymmetryPlane},
+             {"right", "", cgns_code::EdgeCenter, true, {6, 6}},
+             {"left", "mirror", cgns_code::EdgeCenter, false, {7}, cgns_code::BCWall, cgns_code::BCSymmetryPlane}};
+    const auto dir = scratch_dir();
+    write_test_cgns(dir / "typed.cgns", 2, {z});
+    CgnsSource info;
+    const Mesh mesh = read_cgns(dir / "typed.cgns", &info);
+    ASSERT_EQ(mesh.markers.size(), 4u);
+    EXPECT_EQ(mesh.markers[2].name, "mirror");
+    EXPECT_EQ(info.marker_types, (std::vector<std::string>{"BCSymmetryPlane", "BCWall", "BCSymmetryPlane", ""}));
+}

@@ -14,6 +14,7 @@ static_assert(cgns_code::BAR_2 == CGNS_ENUMV(BAR_2) && cgns_code::TRI_3 == CGNS_
               cgns_code::TETRA_4 == CGNS_ENUMV(TETRA_4) && cgns_code::PYRA_5 == CGNS_ENUMV(PYRA_5) &&
               cgns_code::PENTA_6 == CGNS_ENUMV(PENTA_6) && cgns_code::HEXA_8 == CGNS_ENUMV(HEXA_8) &&
               cgns_code::MIXED == CGNS_ENUMV(MIXED));
+static_assert(cgns_code::BCSymmetryPlane == CGNS_ENUMV(BCSymmetryPlane) && cgns_code::BCWall == CGNS_ENUMV(BCWall));
 static_assert(cgns_code::Vertex == CGNS_ENUMV(Vertex) && cgns_code::CellCenter == CGNS_ENUMV(CellCenter) &&
               cgns_code::FaceCenter == CGNS_ENUMV(FaceCenter) && cgns_code::EdgeCenter == CGNS_ENUMV(EdgeCenter));
 
@@ -64,14 +65,20 @@ void write_test_cgns(const std::filesystem::path& path, int dim, const std::vect
         }
         for (const TestBc& bc : zone.bcs) {
             int BC = 0;
-            cgns_test_check(cg_boco_write(fn, B, Z, bc.name.c_str(), bc.family.empty() ? CGNS_ENUMV(BCWall) : CGNS_ENUMV(FamilySpecified),
+            cgns_test_check(cg_boco_write(fn, B, Z, bc.name.c_str(), bc.family.empty() ? static_cast<CGNS_ENUMT(BCType_t)>(bc.type) : CGNS_ENUMV(FamilySpecified),
                                           bc.range ? CGNS_ENUMV(PointRange) : CGNS_ENUMV(PointList),
                                           static_cast<cgsize_t>(bc.points.size()), bc.points.data(), &BC),
                             "BC " + bc.name);
             cgns_test_check(cg_boco_gridlocation_write(fn, B, Z, BC, static_cast<CGNS_ENUMT(GridLocation_t)>(bc.location)), "BC location");
             if (!bc.family.empty()) {
                 int F = 0;
-                if (families.insert(bc.family).second) cgns_test_check(cg_family_write(fn, B, bc.family.c_str(), &F), "family");
+                if (families.insert(bc.family).second) {
+                    cgns_test_check(cg_family_write(fn, B, bc.family.c_str(), &F), "family");
+                    int FB = 0;
+                    if (bc.family_type != 0)
+                        cgns_test_check(cg_fambc_write(fn, B, F, "FamBC", static_cast<CGNS_ENUMT(BCType_t)>(bc.family_type), &FB),
+                                        "family BC");
+                }
                 cgns_test_check(cg_goto(fn, B, "Zone_t", Z, "ZoneBC_t", 1, "BC_t", BC, "end"), "goto BC");
                 cgns_test_check(cg_famname_write(bc.family.c_str()), "family name");
             }

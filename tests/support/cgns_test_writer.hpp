@@ -26,6 +26,7 @@ namespace cgns_code {
 inline constexpr int BAR_2 = 3, TRI_3 = 5, TRI_6 = 6, QUAD_4 = 7, TETRA_4 = 10, PYRA_5 = 12, PENTA_6 = 14, HEXA_8 = 17,
                      MIXED = 20;
 inline constexpr int Vertex = 2, CellCenter = 3, FaceCenter = 4, EdgeCenter = 8;
+inline constexpr int BCSymmetryPlane = 16, BCWall = 20;  // BCType_t
 }  // namespace cgns_code
 
 /// A BC of a test zone: PointList (or PointRange when `range`) at `location`.
@@ -35,6 +36,8 @@ struct TestBc {
     int location = cgns_code::Vertex;
     bool range = false;
     std::vector<cgns_size> points;  // 1-based vertex or element numbers (a range: first, last)
+    int type = cgns_code::BCWall;  // the BC's type when it has no family (else FamilySpecified)
+    int family_type = 0;           // its family's FamilyBC_t type (written with the family's first BC); 0: none
 };
 
 /// A section of a test zone: element type (MIXED: type codes in the data) and connectivity (1-based).

@@ -51,6 +51,10 @@ struct CgnsSource {
     std::vector<CgnsZone> zones;  // the unstructured zones of base 1, in order
     std::size_t num_points = 0;   // the mesh's point count
     int dim = 3;                  // the mesh's dimension (the base's cell dimension)
+    /// Per mesh marker: its BC's type name ("BCWall", "BCSymmetryPlane"; for a
+    /// BC of type FamilySpecified, its family's FamilyBC_t type); "" for a
+    /// face section no BC refers to. The first BC of the marker's name decides.
+    std::vector<std::string> marker_types;
 };
 
 /// Reads base 1 of the CGNS file `path` (see above); fills `source` when given.

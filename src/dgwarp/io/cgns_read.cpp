@@ -23,6 +23,7 @@ using cgns::OpenFile;
 /// A boundary condition of a zone, as the faces it takes (indices into ZoneData::faces).
 struct ZoneBoundary {
     std::string marker;  // the family's name, or the BC's
+    std::string type;    // its BC type ("BCWall", "BCSymmetryPlane"; a family's when FamilySpecified)
     std::vector<std::int64_t> faces;
 };
 
@@ -258,7 +259,7 @@ private:
                                  std::to_string(npnts));
             std::vector<cgsize_t> points(static_cast<std::size_t>(npnts));
             if (npnts > 0) f_.read_check(cg_boco_read(f_.id(), 1, z, bc, points.data(), nullptr), "the points of " + where);
-            ZoneBoundary b{family_or(z, bc, name), {}};
+            ZoneBoundary b{family_or(z, bc, name), bc_type_name(bctype, family_or(z, bc, "")), {}};
             const cgsize_t upper = of_elements ? std::numeric_limits<cgsize_t>::max() : zone.vertices;
             if (range) {
                 if (points[0] < 1 || points[1] < points[0] || points[1] > upper ||
@@ -292,6 +293,26 @@ private:
             }
             zone.boundaries.push_back(std::move(b));
         }
+    }
+
+    /// The name of a BC's type; for FamilySpecified, the type of the family
+    /// `family`'s first FamilyBC_t (when it has one).
+    std::string bc_type_name(CGNS_ENUMT(BCType_t) type, const std::string& family) {
+        if (type == CGNS_ENUMV(FamilySpecified) && !family.empty()) {
+            int families = 0;
+            if (cg_nfamilies(f_.id(), 1, &families) != CG_OK) families = 0;
+            for (int fam = 1; fam <= families; ++fam) {
+                char name[64] = {};
+                int bcs = 0, geos = 0;
+                if (cg_family_read(f_.id(), 1, fam, name, &bcs, &geos) != CG_OK || family != name) continue;
+                char bc_name[64] = {};
+                CGNS_ENUMT(BCType_t) fam_type{};
+                if (bcs >= 1 && cg_fambc_read(f_.id(), 1, fam, 1, bc_name, &fam_type) == CG_OK) type = fam_type;
+                break;
+            }
+        }
+        const char* text = cg_BCTypeName(type);
+        return text ? text : "";
     }
 
     /// The BC's FamilyName, or `name` when it has none.
@@ -458,10 +479,14 @@ Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones, 
     std::map<std::string, std::size_t> marker_index;
     auto marker = [&](const std::string& name) -> Marker& {
         auto [it, added] = marker_index.try_emplace(name, mesh.markers.size());
-        if (added) mesh.markers.push_back({name, {}});
+        if (added) {
+            mesh.markers.push_back({name, {}});
+            if (source) source->marker_types.emplace_back();
+        }
         return mesh.markers[it->second];
     };
     if (source) {
+        source->marker_types.clear();
         source->zones.clear();
         source->dim = dim;
     }
@@ -471,6 +496,7 @@ Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones, 
         std::vector<char> referenced(zone.section_names.size(), 0);
         for (const ZoneBoundary& b : zone.boundaries) {
             Marker& m = marker(b.marker);
+            if (source && source->marker_types[marker_index[b.marker]].empty()) source->marker_types[marker_index[b.marker]] = b.type;
             for (std::int64_t f : b.faces) {
                 const auto fi = static_cast<std::size_t>(f);
                 m.elements.push_back(zone.faces.types[fi], global(z, zone.faces.nodes_of(fi)));

@@ -65,7 +65,10 @@ MotionSpec MotionParser::parse(const Json& root) {
                                                 frame_at.key("markers"), true));
         }
     }
-    if (root.contains("default")) spec.default_motion = parse_marker_motion(root["default"], top.key("default"), has_frames);
+    if (root.contains("default")) {
+        spec.default_motion = parse_marker_motion(root["default"], top.key("default"), has_frames);
+        spec.default_given = true;
+    }
 
     if (root.contains("time")) {
         spec.time = parse_time(root["time"], top.key("time"));

@@ -280,7 +280,7 @@ std::vector<std::filesystem::path> write_motion_file(const std::filesystem::path
         for (std::size_t k = 0; k < spec.frames.size(); ++k)
             root["frames"].push_back({{"markers", frame_json(spec.frames[k], k)}});
     }
-    if (!std::holds_alternative<FixedMotion>(spec.default_motion))
+    if (spec.default_given || !std::holds_alternative<FixedMotion>(spec.default_motion))
         root["default"] = writer.marker_json(spec.default_motion, "default", 0, false);
     if (spec.time) root["time"] = {{"time_step", spec.time->time_step}, {"steps", spec.time->steps}};
     if (spec.shared_nodes == SharedNodeRule::static_wins) root["shared_nodes"] = "static_wins";

@@ -107,6 +107,17 @@ OpenFoamProcessorMesh read_openfoam_processor(const std::filesystem::path& poly_
 inline constexpr const char* processor_addressing_file_names[] = {"pointProcAddressing", "faceProcAddressing",
                                                                   "cellProcAddressing"};
 
+/// A patch's name and type, as a polyMesh's boundary file gives them.
+struct OpenFoamPatchType {
+    std::string name, type;
+};
+
+/// The patches of the boundary file in the polyMesh folder `poly_mesh`,
+/// scanned for their names and types only (no check of their faces: a quick
+/// look, e.g. at one processor of a decomposed case before deciding how to
+/// read it); empty when the file cannot be read.
+std::vector<OpenFoamPatchType> openfoam_patch_types(const std::filesystem::path& poly_mesh);
+
 /// Processor p's points (its num_points × 3, row-major) taken from the
 /// whole mesh's `points` (num_points × 3) through p.points.
 std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const double> points);

@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -185,6 +186,56 @@ void copy_poly_mesh(const fs::path& from, const fs::path& to, const std::vector<
         const std::string bytes = read_file_text(file);
         write_file_atomically(to / file.filename(), [&](std::ostream& out) { out << bytes; });
     }
+}
+
+}  // namespace dgwarp
+
+namespace dgwarp {
+
+std::vector<OpenFoamPatchType> openfoam_patch_types(const std::filesystem::path& poly_mesh) {
+    std::string text;
+    try {
+        text = foam::read_mesh_file(poly_mesh, "boundary");
+    } catch (const Error&) {
+        return {};
+    }
+    // Words and the characters { } ; outside comments; a word before '{' at
+    // the top level names a dictionary (FoamFile, or a patch), "type" in it
+    // gives the patch's type.
+    std::vector<OpenFoamPatchType> patches;
+    std::string word, last_word;
+    int depth = 0;
+    bool after_type = false;
+    const auto flush = [&] {
+        if (word.empty()) return;
+        if (depth == 1 && after_type && !patches.empty()) patches.back().type = word;
+        after_type = depth == 1 && word == "type";
+        last_word = std::move(word);
+        word.clear();
+    };
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+            flush();
+            while (i < text.size() && text[i] != '\n') ++i;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            flush();
+            const std::size_t end = text.find("*/", i + 2);
+            i = end == std::string::npos ? text.size() : end + 1;
+        } else if (c == '{') {
+            flush();
+            if (depth++ == 0 && last_word != "FoamFile") patches.push_back({last_word, ""});
+        } else if (c == '}') {
+            flush();
+            depth = std::max(0, depth - 1);
+        } else if (c == ';' || std::isspace(static_cast<unsigned char>(c)) || c == '(' || c == ')') {
+            flush();
+            if (c == ';') after_type = false;
+        } else {
+            word += c;
+        }
+    }
+    return patches;
 }
 
 }  // namespace dgwarp

@@ -53,6 +53,19 @@ const MarkerMotion& marker_motion(const MotionSpec& spec, const MotionFrame& fra
     return it == frame.markers.end() ? spec.default_motion : it->second;
 }
 
+std::vector<std::string> slide_unless_named(MotionSpec& spec, const std::vector<std::string>& markers) {
+    std::vector<std::string> made;
+    if (spec.default_given || !std::holds_alternative<FixedMotion>(spec.default_motion)) return made;
+    for (const std::string& name : markers) {
+        const bool named = std::any_of(spec.frames.begin(), spec.frames.end(),
+                                       [&](const MotionFrame& f) { return f.markers.count(name) > 0; });
+        if (named) continue;
+        for (MotionFrame& f : spec.frames) f.markers.emplace(name, SlideMotion{});
+        made.push_back(name);
+    }
+    return made;
+}
+
 const char* motion_kind_name(const MarkerMotion& motion) {
     static constexpr const char* names[] = {"fixed",        "rigid",            "periodic", "displacement_file",
                                             "surface_file", "node_motion_file", "slide"};

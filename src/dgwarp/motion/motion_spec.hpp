@@ -136,6 +136,9 @@ struct MotionSpec {
     std::vector<MotionFrame> frames;
     /// The motion of markers a frame does not name.
     MarkerMotion default_motion = FixedMotion{};
+    /// The file gave `default` (even "fixed"): it then says what every marker
+    /// it does not name does, those of a sliding type too (slide_unless_named).
+    bool default_given = false;
     /// Set when a marker has a PeriodicMotion (then frames.size() == 1).
     std::optional<TimeSteps> time;
     SharedNodeRule shared_nodes = SharedNodeRule::moving_wins;
@@ -165,6 +168,13 @@ const MotionFrame& frame_spec(const MotionSpec& spec, std::size_t frame);
 /// The motion of marker `name` in `frame` (the default when the frame does not name it).
 const MarkerMotion& marker_motion(const MotionSpec& spec, const MotionFrame& frame,
                                   const std::string& name);
+
+/// Makes each of `markers` slide (SlideMotion) in every frame, unless a frame
+/// of `spec` names it or the spec gives a default (default_given, or a
+/// default_motion other than "fixed": it then says what every marker it does
+/// not name does): what a mesh file's marker types ask
+/// (io/marker_types.hpp). Returns the markers it made slide, in the order given.
+std::vector<std::string> slide_unless_named(MotionSpec& spec, const std::vector<std::string>& markers);
 
 /// A short name of the kind of motion ("fixed", "rigid", "periodic",
 /// "displacement_file", "surface_file", "node_motion_file"), for messages.

@@ -36,7 +36,7 @@ Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method
     d.original = measure_original(mesh);
     d.original_seconds = sw.lap();
     d.plan = prepare_for_frames(method, mesh, d.boundary.boundary, options, progress);
-    if (!d.boundary.slides.empty()) d.slide = prepare_slide_pass(method, mesh, d.boundary, options);
+    if (!d.boundary.slides.empty()) d.slide = prepare_slide_pass(mesh, d.boundary, options);
     d.prepare_seconds = sw.lap();
     return d;
 }

@@ -6,13 +6,22 @@
 
 namespace dgwarp {
 
-SlidePass prepare_slide_pass(Method method, const Mesh& mesh, const ResolvedBoundary& resolved,
+Method slide_pass_method(const ResolvedBoundary& resolved) {
+    const std::size_t others = resolved.boundary.nodes.size() - resolved.slides.size();
+    return others <= max_slide_rbf_centres ? Method::rbf : Method::dg_harmonic;
+}
+
+SlidePass prepare_slide_pass(const Mesh& mesh, const ResolvedBoundary& resolved,
                              const MethodOptions& options) {
     SlidePass pass;
-    pass.method = method == Method::laplacian ? Method::dg_harmonic : method;
+    pass.method = slide_pass_method(resolved);
     pass.options = options;
     pass.dim = mesh.dim;
     pass.slides = resolved.slides;
+    // DG-harmonic's coarse level is made of the volume nodes too: its first
+    // pass runs on the whole mesh. RBF moves each node from the boundary nodes
+    // alone: the small problem gives the same motion, faster.
+    pass.whole_mesh = pass.method == Method::dg_harmonic;
     const auto dim = static_cast<std::size_t>(mesh.dim);
     const BoundarySet& b = resolved.boundary;
     // The other boundary nodes: every boundary node but the sliding ones (slots ascending, as the nodes).
@@ -23,12 +32,15 @@ SlidePass prepare_slide_pass(Method method, const Mesh& mesh, const ResolvedBoun
             continue;
         }
         pass.source_slots.push_back(static_cast<std::int32_t>(i));
-        pass.boundary.nodes.push_back(static_cast<NodeId>(pass.boundary.nodes.size()));
+        pass.boundary.nodes.push_back(pass.whole_mesh ? b.nodes[i] : static_cast<NodeId>(pass.boundary.nodes.size()));
         pass.boundary.moving.push_back(b.moving[i]);
+        if (pass.whole_mesh) continue;
         const double* x = mesh.points.data() + static_cast<std::size_t>(b.nodes[i]) * dim;
         pass.points.insert(pass.points.end(), x, x + dim);
     }
-    pass.points.insert(pass.points.end(), pass.slides.origins.begin(), pass.slides.origins.end());
+    if (pass.whole_mesh) pass.points = mesh.points;
+    else pass.points.insert(pass.points.end(), pass.slides.origins.begin(), pass.slides.origins.end());
+    pass.options.rbf = RbfOptions{};  // global support, every other boundary node a centre
     pass.plan = prepare(pass.method, mesh.dim, pass.points, pass.boundary, pass.options);
     return pass;
 }
@@ -39,9 +51,12 @@ void slide_motion(const SlidePass& pass, BoundaryMotion& motion) {
     std::vector<double> moved(pass.points.size());
     deform(pass.plan, pass.points, sources, moved, pass.options);
     const auto dim = static_cast<std::size_t>(pass.dim);
-    const std::size_t first = pass.source_slots.size() * dim;
-    std::vector<double> displacement(moved.size() - first);
-    for (std::size_t k = 0; k < displacement.size(); ++k) displacement[k] = moved[first + k] - pass.points[first + k];
+    std::vector<double> displacement(pass.slides.size() * dim);
+    for (std::size_t i = 0; i < pass.slides.size(); ++i) {
+        const std::size_t at =
+            pass.whole_mesh ? static_cast<std::size_t>(pass.slides.nodes[i]) * dim : (pass.source_slots.size() + i) * dim;
+        for (std::size_t k = 0; k < dim; ++k) displacement[i * dim + k] = moved[at + k] - pass.points[at + k];
+    }
     project_slide_vectors(pass.slides, pass.dim, displacement);
     for (std::size_t i = 0; i < pass.slides.size(); ++i) {
         NodeMotion m;

@@ -1,0 +1,64 @@
+#include "dgwarp/io/marker_types.hpp"
+
+#include <algorithm>
+
+namespace dgwarp {
+
+std::vector<std::string> marker_types(const Mesh& mesh, const MeshExtras& extras) {
+    std::vector<std::string> types(mesh.markers.size());
+    if (extras.openfoam && extras.openfoam->patches.size() == types.size())
+        for (std::size_t m = 0; m < types.size(); ++m) types[m] = extras.openfoam->patches[m].type;
+    if (extras.cgns && extras.cgns->marker_types.size() == types.size()) types = extras.cgns->marker_types;
+    return types;
+}
+
+bool slides_by_type(std::string_view type) {
+    return type == "empty" || type == "wedge" || type == "symmetryPlane" || type == "symmetry" ||
+           type == "BCSymmetryPlane";
+}
+
+std::vector<std::string> markers_sliding_by_type(const Mesh& mesh, const MeshExtras& extras) {
+    const std::vector<std::string> types = marker_types(mesh, extras);
+    std::vector<std::string> sliding;
+    for (std::size_t m = 0; m < types.size(); ++m)
+        if (slides_by_type(types[m])) sliding.push_back(mesh.markers[m].name);
+    return sliding;
+}
+
+TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, MotionSpec& spec,
+                               const std::vector<std::string>& also) {
+    TypedMotion typed;
+    const std::vector<std::string> types = marker_types(mesh, extras);
+    // Markers without faces (a wedge case's axis patch) have no node to slide.
+    std::vector<std::string> sliding;
+    for (std::size_t m = 0; m < types.size(); ++m) {
+        const std::string& name = mesh.markers[m].name;
+        if ((slides_by_type(types[m]) || std::find(also.begin(), also.end(), name) != also.end()) &&
+            !mesh.markers[m].elements.empty())
+            sliding.push_back(name);
+    }
+    typed.sliding = slide_unless_named(spec, sliding);
+    if (mesh.dim != 3) return typed;
+    std::vector<std::size_t> planes;
+    std::string axis;
+    for (std::size_t m = 0; m < types.size(); ++m) {
+        if (types[m] != "empty" && types[m] != "wedge") continue;
+        if (mesh.markers[m].elements.empty()) {
+            if (axis.empty()) axis = mesh.markers[m].name;
+            continue;
+        }
+        // A plane slides in every frame (named "slide", or made to); one held otherwise keeps the case 3D.
+        const bool slides = std::all_of(spec.frames.begin(), spec.frames.end(), [&](const MotionFrame& f) {
+            return std::holds_alternative<SlideMotion>(marker_motion(spec, f, mesh.markers[m].name));
+        });
+        if (!slides) return typed;
+        planes.push_back(m);
+    }
+    if (planes.empty()) return typed;
+    PlanarCaseResult found = find_planar_case(mesh, planes, axis.empty() ? "axis" : axis);
+    typed.planar = std::move(found.planar);
+    typed.not_planar = std::move(found.not_planar);
+    return typed;
+}
+
+}  // namespace dgwarp
