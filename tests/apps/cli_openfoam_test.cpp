@@ -361,3 +361,26 @@ TEST(CliOpenFoam, TwoDAndAxisymmetricCasesDeformInTheirPlanes) {
             EXPECT_NEAR(std::hypot(cone_after.points[3 * v + 1], cone_after.points[3 * v + 2]), 0, 1e-18) << v;
         }
 }
+
+// An OpenFOAM case's zones (issue #30 item 5): a whole polyMesh written from
+// it keeps the cell and point zones byte for byte (the same cells and points)
+// and says it drops the face zones; another format says it drops them all.
+TEST(CliOpenFoam, ConvertKeepsCellAndPointZonesAndNamesTheZonesItDrops) {
+    const auto dir = scratch_dir();
+    const auto source = openfoam_case("mixed") / "constant/polyMesh";
+    CommandResult r = run_cli("convert " + quoted(openfoam_case("mixed")) + " " + quoted(dir / "case/"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* zone : {"cellZones", "pointZones"})
+        EXPECT_EQ(slurp(dir / "case/constant/polyMesh" / zone), slurp(source / zone)) << zone;
+    EXPECT_FALSE(std::filesystem::exists(dir / "case/constant/polyMesh/faceZones"));
+    EXPECT_NE(r.err.find("does not keep " + openfoam_case("mixed").string() + "'s faceZones (OpenFOAM zones"),
+              std::string::npos) << r.err;
+    r = run_cli("convert " + quoted(openfoam_case("mixed")) + " " + quoted(dir / "mixed.su2"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("'s cellZones, faceZones, pointZones (OpenFOAM zones; an OpenFOAM case output keeps"),
+              std::string::npos) << r.err;
+    // A case without zones says nothing.
+    r = run_cli("convert " + quoted(openfoam_case("cavity")) + " " + quoted(dir / "cavity.su2"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("zones"), std::string::npos) << r.err;
+}

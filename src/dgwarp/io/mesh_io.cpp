@@ -96,18 +96,47 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
     return mesh;
 }
 
+namespace {
+
+/// The OpenFOAM zones an output drops: every zone file for another format,
+/// the face zones for an OpenFOAM case (its faces are numbered anew).
+std::vector<std::string> dropped_zones(const MeshExtras& extras, const std::filesystem::path& path) {
+    std::vector<std::string> dropped;
+    if (!extras.openfoam) return dropped;
+    for (const std::string& name : extras.openfoam->zone_files) {
+        const std::string zone = name.substr(0, name.find('.'));
+        if ((!writes_openfoam(path) || zone == "faceZones") &&
+            std::find(dropped.begin(), dropped.end(), zone) == dropped.end())
+            dropped.push_back(zone);
+    }
+    return dropped;
+}
+
+std::string joined_list(const std::vector<std::string>& items) {
+    std::string list;
+    for (const auto& d : items) list += (list.empty() ? "" : ", ") + d;
+    return list;
+}
+
+}  // namespace
+
 std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path) {
-    if (!extras.su2 || lower_case_extension(path) == ".su2") return {};
-    return extras.su2->contents;
+    std::vector<std::string> dropped = dropped_zones(extras, path);
+    if (extras.su2 && lower_case_extension(path) != ".su2")
+        dropped.insert(dropped.end(), extras.su2->contents.begin(), extras.su2->contents.end());
+    return dropped;
 }
 
 std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output) {
-    const std::vector<std::string> dropped = dropped_extras(extras, output);
-    if (dropped.empty()) return "";
-    std::string list;
-    for (const auto& d : dropped) list += (list.empty() ? "" : ", ") + d;
-    return output.string() + " holds the mesh only: " + input + " also has " + list +
-           " (an .su2 output keeps them)";
+    std::string text;
+    if (const auto zones = dropped_zones(extras, output); !zones.empty())
+        text = output.string() + " does not keep " + input + "'s " + joined_list(zones) +
+               (writes_openfoam(output) ? " (OpenFOAM zones; the faces are numbered anew; its cell and point zones are kept)"
+                                        : " (OpenFOAM zones; an OpenFOAM case output keeps the cell and point zones)");
+    if (extras.su2 && lower_case_extension(output) != ".su2")
+        text += (text.empty() ? "" : "; ") + output.string() + " holds the mesh only: " + input + " also has " +
+                joined_list(extras.su2->contents) + " (an .su2 output keeps them)";
+    return text;
 }
 
 void check_mesh_writable(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options) {

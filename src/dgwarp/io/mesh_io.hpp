@@ -80,7 +80,9 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, co
 
 /// What of `extras` a write_mesh to `path` (format by extension) with them
 /// does not keep, for a warning: e.g. {"1 other zone (IZONE=)", "FFD_NBOX= 1"}
-/// when an SU2 input's surroundings go to a .vtu; empty when all is kept.
+/// when an SU2 input's surroundings go to a .vtu, {"cellZones", "pointZones"}
+/// when an OpenFOAM case's zones go to another format ("faceZones" to an
+/// OpenFOAM case: write_openfoam keeps the others); empty when all is kept.
 std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path);
 
 /// The warning for writing a mesh read from `input` with `extras` to

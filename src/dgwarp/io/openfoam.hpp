@@ -50,6 +50,12 @@ struct OpenFoamSource {
     foam::Format points_format = foam::Format::ascii;  // the format of its points file (processor 0's)
     std::vector<OpenFoamPatch> patches;                // one per marker, in marker order
     std::vector<OpenFoamProcessor> processors;         // a decomposed case's, in order; empty for one polyMesh
+    /// The zone files of the polyMesh folder read ("cellZones", "faceZones",
+    /// "pointZones", or with ".gz"), as found there; a whole polyMesh written
+    /// from a mesh of as many points and cells keeps the cell and point zones
+    /// (write_openfoam), not the face zones (its faces are numbered anew).
+    std::vector<std::string> zone_files;
+    std::size_t num_points = 0, num_cells = 0;  // of the mesh read
 };
 
 /// The five files of a polyMesh, in memory.

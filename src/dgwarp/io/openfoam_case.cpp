@@ -136,6 +136,12 @@ Mesh read_openfoam(const fs::path& path, const ProgressFn& progress, OpenFoamSou
         source->patches.clear();
         for (const foam::Patch& patch : part.patches) source->patches.push_back(patch.info);
         source->poly_mesh = dir;
+        source->zone_files.clear();
+        for (const char* zone : {"cellZones", "faceZones", "pointZones"})
+            for (const std::string& name : {std::string(zone), std::string(zone) + ".gz"})
+                if (is_file(dir / name)) source->zone_files.push_back(name);
+        source->num_points = part.mesh.num_points();
+        source->num_cells = part.mesh.cells.size();
     }
     Mesh mesh = std::move(part.mesh);
     if (progress) progress(1.0);
@@ -151,6 +157,16 @@ void write_openfoam(const fs::path& path, const Mesh& mesh, const OpenFoamWriteO
     const std::string* parts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
     for (int k = 0; k < 5; ++k)
         write_file_atomically(dir / poly_mesh_file_names[k], [&](std::ostream& out) { out << *parts[k]; });
+    // The source's cell and point zones hold for a mesh of its cells and points (not its face zones).
+    const OpenFoamSource* source = options.source;
+    if (!source || source->poly_mesh.empty() || source->num_points != mesh.num_points() ||
+        source->num_cells != mesh.cells.size() || fs::equivalent(source->poly_mesh, dir, ec))
+        return;
+    for (const std::string& name : source->zone_files) {
+        if (name.starts_with("faceZones")) continue;
+        const std::string bytes = read_file_text(source->poly_mesh / name);
+        write_file_atomically(dir / name, [&](std::ostream& out) { out << bytes; });
+    }
 }
 
 void write_openfoam_points(const fs::path& file, std::span<const double> points, foam::Format format,
