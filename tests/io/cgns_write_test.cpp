@@ -87,9 +87,6 @@ TEST(CgnsWrite, MeshesCgnsCannotHoldAreRefusedBeforeWriting) {
     Mesh twice = mesh;
     twice.markers.push_back(twice.markers[0]);
     EXPECT_THROW(write_cgns(dir / "bad.cgns", twice), MeshError);
-    Mesh empty_marker = mesh;
-    empty_marker.markers[0].elements = {};
-    EXPECT_THROW(write_cgns(dir / "bad.cgns", empty_marker), MeshError);
     EXPECT_FALSE(std::filesystem::exists(dir / "bad.cgns"));
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 0);
 }
@@ -157,4 +154,25 @@ TEST(CgnsWrite, SinglePrecisionCoordinatesStaySinglePrecision) {
     const Mesh back = read_cgns(dir / "out.cgns");
     EXPECT_EQ(back.points[0], static_cast<double>(0.1f));
     EXPECT_EQ(back.cells, mesh.cells);
+}
+
+// A marker without elements (OpenFOAM's axis patch of a wedge case) has no
+// section or BC (neither may be empty): a boundary family of its name keeps
+// it, and reading gives it back, after the markers with elements.
+TEST(CgnsWrite, AMarkerWithoutElementsIsABoundaryFamily) {
+    const auto dir = scratch_dir();
+    Mesh mesh = make_rect_box();
+    mesh.markers.insert(mesh.markers.begin(), Marker{"axis", {}});
+    write_cgns(dir / "axis.cgns", mesh);
+    CgnsSource info;
+    const Mesh back = read_cgns(dir / "axis.cgns", &info);
+    Mesh expected = mesh;
+    std::rotate(expected.markers.begin(), expected.markers.begin() + 1, expected.markers.end());
+    EXPECT_TRUE(back == expected);
+    EXPECT_EQ(info.marker_types.back(), "UserDefined");  // libcgns's name of BCTypeUserDefined
+    if (cgns_tool_installed("cgnscheck")) {
+        const CommandResult r = run_command("cgnscheck " + quoted(dir / "axis.cgns"));
+        EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+        EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << r.out;
+    }
 }

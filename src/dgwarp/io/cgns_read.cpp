@@ -429,7 +429,25 @@ struct VertexSets {
     }
 };
 
-Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones, CgnsSource* source) {
+/// The families of base 1 with a FamilyBC_t (boundary families): name and BC type name.
+std::vector<std::pair<std::string, std::string>> read_boundary_families(const OpenFile& f) {
+    std::vector<std::pair<std::string, std::string>> families;
+    int count = 0;
+    if (cg_nfamilies(f.id(), 1, &count) != CG_OK) return families;
+    for (int fam = 1; fam <= count; ++fam) {
+        char name[64] = {}, bc_name[64] = {};
+        int bcs = 0, geos = 0;
+        CGNS_ENUMT(BCType_t) type{};
+        if (cg_family_read(f.id(), 1, fam, name, &bcs, &geos) != CG_OK || bcs < 1) continue;
+        if (cg_fambc_read(f.id(), 1, fam, 1, bc_name, &type) != CG_OK) continue;
+        const char* text = cg_BCTypeName(type);
+        families.emplace_back(name, text ? text : "");
+    }
+    return families;
+}
+
+Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones,
+                const std::vector<std::pair<std::string, std::string>>& boundary_families, CgnsSource* source) {
     std::vector<std::int64_t> offset(zones.size() + 1, 0);
     for (std::size_t z = 0; z < zones.size(); ++z) offset[z + 1] = offset[z] + zones[z].vertices;
     if (offset.back() > std::numeric_limits<NodeId>::max())
@@ -519,6 +537,13 @@ Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones, 
             source->zones.push_back(std::move(sz));
         }
     }
+    // Boundary families (with a FamilyBC_t) that no BC names: markers without
+    // elements (dgwarp writes a faceless marker, such as OpenFOAM's axis patch, so).
+    for (const auto& [family, type] : boundary_families)
+        if (!marker_index.count(family)) {
+            marker(family);
+            if (source) source->marker_types.back() = type;
+        }
     if (source) source->num_points = mesh.num_points();
     return mesh;
 }
@@ -547,8 +572,9 @@ Mesh read_cgns(const std::filesystem::path& path, CgnsSource* source) {
     Reader reader(path, f, cell_dim, ec ? 0 : file_size);
     std::vector<ZoneData> zones;
     for (int z = 1; z <= nzones; ++z) zones.push_back(reader.read_zone(z));
+    const auto families = read_boundary_families(f);
     f.close();
-    Mesh mesh = join_zones(path.string(), cell_dim, zones, source);
+    Mesh mesh = join_zones(path.string(), cell_dim, zones, families, source);
     if (source) source->file = path;
     try {
         validate(mesh);

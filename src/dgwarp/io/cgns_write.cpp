@@ -85,9 +85,6 @@ void check_cgns_writable(const std::filesystem::path& path, const Mesh& mesh) {
             throw MeshError(file + ": marker '" + m.name + "' has the name of a node of dgwarp's CGNS zone; rename it",
                             m.name);
         if (!seen.insert(m.name).second) throw MeshError(file + ": two markers are called '" + m.name + "'", m.name);
-        if (m.elements.empty())
-            throw MeshError(file + ": marker '" + m.name + "' has no elements; a CGNS element section needs at least one",
-                            m.name);
     }
 }
 
@@ -98,7 +95,7 @@ void write_cgns(const std::filesystem::path& path, const Mesh& mesh) {
         throw MeshError(path.string() + ": too many points for this libcgns (32-bit sizes)");
     const SectionData cells = section_of(mesh.cells);
     std::vector<SectionData> markers;
-    for (const Marker& m : mesh.markers) markers.push_back(section_of(m.elements));
+    for (const Marker& m : mesh.markers) markers.push_back(m.elements.empty() ? SectionData{} : section_of(m.elements));
     write_file_atomically_at(path, [&](const std::filesystem::path& tmp) {
         OpenFile f(tmp, CG_MODE_WRITE, path.string());
         int B = 0, Z = 0, S = 0, C = 0, BC = 0;
@@ -116,6 +113,14 @@ void write_cgns(const std::filesystem::path& path, const Mesh& mesh) {
         cgsize_t next = size[1] + 1;
         for (std::size_t k = 0; k < markers.size(); ++k) {
             const Marker& m = mesh.markers[k];
+            if (m.elements.empty()) {
+                // No section or BC can be empty: a boundary family of its name keeps it (read_cgns reads it back).
+                int F = 0, FB = 0;
+                f.write_check(cg_family_write(f.id(), B, m.name.c_str(), &F), "the family of marker '" + m.name + "'");
+                f.write_check(cg_fambc_write(f.id(), B, F, "FamBC", CGNS_ENUMV(BCTypeUserDefined), &FB),
+                              "the family BC of marker '" + m.name + "'");
+                continue;
+            }
             const cgsize_t range[2] = {next, next + static_cast<cgsize_t>(m.elements.size()) - 1};
             f.write_check(write_section(f, B, Z, m.name.c_str(), markers[k], range[0], range[1], &S),
                           "the section of marker '" + m.name + "'");
