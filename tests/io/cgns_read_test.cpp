@@ -342,3 +342,37 @@ TEST(CgnsRead, MarkersKeepTheirBcTypes) {
     EXPECT_EQ(mesh.markers[2].name, "mirror");
     EXPECT_EQ(info.marker_types, (std::vector<std::string>{"BCSymmetryPlane", "BCWall", "BCSymmetryPlane", ""}));
 }
+
+// A file with neither BCs nor face sections: its cells' exterior faces are
+// one marker, `exterior`, pointing out of the cells (so that it can be deformed).
+TEST(CgnsRead, AFileWithoutBoundariesGetsItsExteriorFacesAsOneMarker) {
+    TestZone z;
+    // Two tetrahedra sharing the face 2-3-4: 6 exterior faces.
+    z.x = {0, 1, 0, 0, 1};
+    z.y = {0, 0, 1, 0, 1};
+    z.z = {0, 0, 0, 1, 1};
+    z.sections = {{"Cells", cgns_code::TETRA_4, 2, {1, 2, 3, 4, 2, 5, 3, 4}}};
+    const auto dir = scratch_dir();
+    write_test_cgns(dir / "bare.cgns", 3, {z});
+    CgnsSource info;
+    const Mesh mesh = read_cgns(dir / "bare.cgns", &info);
+    ASSERT_EQ(mesh.markers.size(), 1u);
+    EXPECT_EQ(mesh.markers[0].name, "exterior");
+    EXPECT_TRUE(info.exterior_marker);
+    ASSERT_EQ(mesh.markers[0].elements.size(), 6u);
+    // Each face points out: away from its cell's fourth node.
+    for (std::size_t f = 0; f < 6; ++f) {
+        const auto n = mesh.markers[0].elements.nodes_of(f);
+        std::array<double, 3> a{}, b{}, centre{};
+        for (int k = 0; k < 3; ++k) {
+            a[k] = mesh.points[3 * n[1] + k] - mesh.points[3 * n[0] + k];
+            b[k] = mesh.points[3 * n[2] + k] - mesh.points[3 * n[0] + k];
+        }
+        const std::array<double, 3> normal{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+        for (int k = 0; k < 3; ++k) centre[k] = (mesh.points[3 * n[0] + k] + mesh.points[3 * n[1] + k] + mesh.points[3 * n[2] + k]) / 3;
+        // The mesh's centroid (0.4, 0.4, 0.4) is inside: the normal points away from it.
+        double out = 0;
+        for (int k = 0; k < 3; ++k) out += normal[k] * (centre[k] - 0.4);
+        EXPECT_GT(out, 0) << f;
+    }
+}

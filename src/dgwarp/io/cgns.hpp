@@ -19,7 +19,8 @@
 // of vertices (GridLocation Vertex), the face elements of the zone whose nodes
 // are all in the set, or when the zone has no face elements, the faces of its
 // cells on the zone's boundary whose nodes are all in it. A face section no BC
-// refers to is a marker of the section's name.
+// refers to is a marker of the section's name; a file with neither BCs nor
+// face sections gets its cells' exterior faces as one marker, `exterior`.
 //
 // Writing (write_cgns): one base "Base", one unstructured zone "Zone", its
 // coordinates in double precision, the cells in one section "Cells" (of the
@@ -55,7 +56,13 @@ struct CgnsSource {
     /// BC of type FamilySpecified, its family's FamilyBC_t type); "" for a
     /// face section no BC refers to. The first BC of the marker's name decides.
     std::vector<std::string> marker_types;
+    /// The file has no BC and no face section: its cells' exterior faces (the
+    /// faces of one cell, pointing out) are the one marker `exterior`.
+    bool exterior_marker = false;
 };
+
+/// The name of that marker.
+inline constexpr const char* exterior_marker_name = "exterior";
 
 /// Reads base 1 of the CGNS file `path` (see above); fills `source` when given.
 /// Throws IoError when the file cannot be opened or is not a CGNS file;

@@ -20,6 +20,36 @@ namespace {
 
 using cgns::OpenFile;
 
+/// The faces (3D) or edges (2D) of `cells` that belong to one cell only,
+/// pointing out of it, in cell order.
+ElementList exterior_faces(int dim, const ElementList& cells) {
+    std::map<std::vector<NodeId>, int> uses;
+    std::vector<std::pair<CellType, std::vector<NodeId>>> all;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        const auto nodes = cells.nodes_of(c);
+        const CellType t = cells.types[c];
+        if (dim == 2) {
+            for (std::size_t i = 0; i < nodes.size(); ++i) all.push_back({CellType::line, {nodes[i], nodes[(i + 1) % nodes.size()]}});
+        } else {
+            const foam::FaceTable& table = foam::outward_faces(t);
+            for (int k = 0; k < table.count; ++k) {
+                std::vector<NodeId> face;
+                for (int i = 0; i < table.size[k]; ++i) face.push_back(nodes[static_cast<std::size_t>(table.node[k][i])]);
+                all.push_back({face.size() == 3 ? CellType::triangle : CellType::quadrilateral, face});
+            }
+        }
+    }
+    const auto key_of = [](std::vector<NodeId> face) {
+        std::sort(face.begin(), face.end());
+        return face;
+    };
+    for (const auto& [type, face] : all) ++uses[key_of(face)];
+    ElementList faces;
+    for (const auto& [type, face] : all)
+        if (uses[key_of(face)] == 1) faces.push_back(type, face);
+    return faces;
+}
+
 /// A boundary condition of a zone, as the faces it takes (indices into ZoneData::faces).
 struct ZoneBoundary {
     std::string marker;  // the family's name, or the BC's
@@ -340,32 +370,9 @@ private:
     /// only, pointing out of it, in cell order; they are no element of the file
     /// (number 0, section -1).
     void add_boundary_faces_of_cells(ZoneData& zone) {
-        std::map<std::vector<NodeId>, int> uses;
-        std::vector<std::pair<CellType, std::vector<NodeId>>> all;
-        for (std::size_t c = 0; c < zone.cells.size(); ++c) {
-            const auto nodes = zone.cells.nodes_of(c);
-            const CellType t = zone.cells.types[c];
-            if (dim_ == 2) {
-                for (std::size_t i = 0; i < nodes.size(); ++i) all.push_back({CellType::line, {nodes[i], nodes[(i + 1) % nodes.size()]}});
-            } else {
-                const foam::FaceTable& table = foam::outward_faces(t);
-                for (int k = 0; k < table.count; ++k) {
-                    std::vector<NodeId> face;
-                    for (int i = 0; i < table.size[k]; ++i) face.push_back(nodes[static_cast<std::size_t>(table.node[k][i])]);
-                    all.push_back({face.size() == 3 ? CellType::triangle : CellType::quadrilateral, face});
-                }
-            }
-        }
-        for (const auto& [type, face] : all) {
-            std::vector<NodeId> key = face;
-            std::sort(key.begin(), key.end());
-            ++uses[key];
-        }
-        for (const auto& [type, face] : all) {
-            std::vector<NodeId> key = face;
-            std::sort(key.begin(), key.end());
-            if (uses[key] != 1) continue;
-            zone.faces.push_back(type, face);
+        const ElementList faces = exterior_faces(dim_, zone.cells);
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            zone.faces.push_back(faces.types[f], faces.nodes_of(f));
             zone.face_numbers.push_back(0);
             zone.face_section.push_back(-1);
         }
@@ -536,6 +543,13 @@ Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones,
             sz.points.assign(point_of.begin() + offset[z], point_of.begin() + offset[z + 1]);
             source->zones.push_back(std::move(sz));
         }
+    }
+    // Zones with neither BCs nor face sections: their exterior faces are one
+    // marker, so that the mesh can be deformed (a motion names it).
+    if (mesh.markers.empty() && boundary_families.empty()) {
+        marker(exterior_marker_name).elements = exterior_faces(dim, mesh.cells);
+        if (mesh.markers.back().elements.empty()) mesh.markers.pop_back();
+        else if (source) source->exterior_marker = true;
     }
     // Boundary families (with a FamilyBC_t) that no BC names: markers without
     // elements (dgwarp writes a faceless marker, such as OpenFOAM's axis patch, so).
