@@ -19,6 +19,7 @@ struct ConvertArgs {
     int zone = 1;
     int gmsh_version = 41;
     std::string foam_format;  // "", "ascii" or "binary"
+    std::vector<std::string> rename_markers;
     bool quiet = false;
 };
 
@@ -29,7 +30,18 @@ void run_convert(const ConvertArgs& a) {
     check_mesh_output(a.output, mesh_input_files(a.input));
     ProgressLine progress(!a.quiet);
     MeshExtras extras;
-    const Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input), extras);
+    Mesh mesh = read_mesh(a.input, {a.zone}, progress.reporter("reading " + a.input), extras);
+    apply_marker_renames(mesh, a.rename_markers);
+    // Names the output cannot hold: made into names it can, and said.
+    const std::vector<MarkerRename> made = make_marker_names_writable(mesh, a.output);
+    for (const MarkerRename& r : made)
+        if (!a.quiet) {
+            progress.clear();
+            std::cerr << "warning: " << a.output << " cannot hold the marker name '" << r.from << "': it is written as '"
+                      << r.to << "' (--rename-marker '" << r.from << "=NEW' names it otherwise)\n";
+        }
+    // A renamed CGNS input is written whole: a copy of the file would keep its names.
+    if (extras.cgns && (!made.empty() || !a.rename_markers.empty())) extras.cgns.reset();
     progress.phase("writing " + a.output);
     WriteOptions options;
     options.gmsh_version = a.gmsh_version;
@@ -62,6 +74,7 @@ void add_convert_command(CLI::App& app) {
     cmd->add_option("--foam-format", args->foam_format,
                     "OpenFOAM output: ascii or binary (default: the OpenFOAM input's, else ascii)")
         ->check(CLI::IsMember({"ascii", "binary"}));
+    add_rename_marker_option(cmd, args->rename_markers);
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     cmd->footer(
         "The output is written to a temporary file and renamed into place, so an existing file is\n"
@@ -77,7 +90,8 @@ void add_convert_command(CLI::App& app) {
         "  dgwarp convert multizone.su2 zone2.vtu --zone 2\n"
         "  dgwarp convert cavity/ cavity.su2          (an OpenFOAM case)\n"
         "  dgwarp convert wing.cgns wing.su2\n"
-        "  dgwarp convert wing.su2 wing-case/ --foam-format binary");
+        "  dgwarp convert wing.su2 wing-case/ --foam-format binary\n"
+        "  dgwarp convert grid.cgns case/ --rename-marker 'UserDefined 1=wing'");
     cmd->callback([args] { run_convert(*args); });
 }
 

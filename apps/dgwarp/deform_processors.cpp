@@ -340,7 +340,7 @@ bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& metho
         const std::vector<fs::path> processors = openfoam_processor_meshes(a.setup.mesh);
         if (processors.size() != static_cast<std::size_t>(mpi_processes())) return false;
         MotionSpec spec = read_motion_file(a.setup.motion);
-        if (has_node_tables(spec) || !a.setup.su2_config.empty()) return false;
+        if (has_node_tables(spec) || !a.setup.su2_config.empty() || !a.setup.rename_markers.empty()) return false;
         // Sliding markers (2D cases, symmetry planes) need every boundary node
         // in one first pass: the whole case is read on rank 0.
         const std::vector<OpenFoamPatchType> patches = openfoam_patch_types(processors.front());

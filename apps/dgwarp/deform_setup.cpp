@@ -9,6 +9,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
+#include "dgwarp/io/marker_names.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/su2_config.hpp"
 #include "dgwarp/motion/planar_motion.hpp"
@@ -87,6 +88,7 @@ void add_input_options(CLI::App* cmd, SetupArgs& a) {
     cmd->add_option("mesh", a.mesh, "Mesh file (.su2, .msh, .vtu, .cgns) or OpenFOAM case folder")->required();
     cmd->add_option("-m,--motion", a.motion, "Motion file (JSON, docs/MOTION.md)")->required();
     cmd->add_option("--zone", a.zone, "Zone of a multi-zone SU2 file (1-based)")->check(positive_whole_number());
+    add_rename_marker_option(cmd, a.rename_markers);
     cmd->add_option("--su2-config", a.su2_config,
                     "An SU2 configuration file (CASE.cfg): its MARKER_SYM markers slide in their planes unless the "
                     "motion names them (docs/MOTION.md \"Sliding by type\")");
@@ -228,6 +230,7 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     if (check_outputs) check_outputs(in.spec);
     progress.phase("reading " + args.mesh);
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
+    apply_marker_renames(in.mesh, args.rename_markers);
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     // Markers that slide by their type; a 2D case deformed as its 2D mesh.

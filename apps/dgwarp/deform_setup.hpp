@@ -34,6 +34,7 @@ struct SetupArgs {
     std::set<std::string> given;    // the method options given on the command line ("--length-scale", ...)
     int zone = 1;
     std::string su2_config;  // an SU2 configuration whose MARKER_SYM markers slide
+    std::vector<std::string> rename_markers;  // "OLD=NEW", applied to the mesh read
     int threads = 0;
     // The method options, with the library's defaults.
     double a_translation = DgIdwOptions{}.a_translation;

@@ -1,5 +1,7 @@
 #include "flag_values.hpp"
 
+#include "dgwarp/core/error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -112,6 +114,24 @@ void use_threads(int threads) {
         set_num_threads(threads);
     else if (num_threads() > max_threads())
         set_num_threads(max_threads());
+}
+
+CLI::Option* add_rename_marker_option(CLI::App* cmd, std::vector<std::string>& renames) {
+    return cmd
+        ->add_option("--rename-marker", renames,
+                     "OLD=NEW: the mesh's marker OLD is called NEW from reading on (the motion file and the outputs "
+                     "name it NEW; repeat for several)")
+        ->check(CLI::Validator([](std::string& text) { return marker_rename_problem(text); }, "OLD=NEW", ""));
+}
+
+void apply_marker_renames(Mesh& mesh, const std::vector<std::string>& values) {
+    for (const std::string& v : values) {
+        try {
+            rename_markers(mesh, {parse_marker_rename(v)});
+        } catch (const MeshError& e) {
+            throw MeshError("--rename-marker '" + v + "': " + e.what(), e.marker(), e.index());
+        }
+    }
 }
 
 }  // namespace dgwarp::cli

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "dgwarp/io/marker_names.hpp"
+
 namespace dgwarp::cli {
 
 /// A finite number > 0.
@@ -25,6 +27,13 @@ CLI::Validator one_of(const std::vector<std::string>& names, const std::string& 
 CLI::Validator whole_number_between(long long low, long long high);
 /// A whole number >= 1 (counts, 1-based zones).
 CLI::Validator positive_whole_number();
+
+/// Adds --rename-marker OLD=NEW (repeatable; checked while parsing) to `cmd`.
+CLI::Option* add_rename_marker_option(CLI::App* cmd, std::vector<std::string>& renames);
+
+/// Renames `mesh`'s markers as --rename-marker's `values` say; a MeshError
+/// names the option and the value at fault.
+void apply_marker_renames(Mesh& mesh, const std::vector<std::string>& values);
 
 /// Adds --threads to `cmd`, checked to be 1 .. max_threads() (the message
 /// names the limit and the machine's cores). `default_text` says what is

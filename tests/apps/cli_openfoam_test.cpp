@@ -384,3 +384,26 @@ TEST(CliOpenFoam, ConvertKeepsCellAndPointZonesAndNamesTheZonesItDrops) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("zones"), std::string::npos) << r.err;
 }
+
+// CGNS BC names OpenFOAM cannot hold (cgns-convert's "UserDefined 1", issue
+// #30 item 5): convert writes them with '_' and says so; --rename-marker
+// names them; deform refuses them before any work.
+TEST(CliOpenFoam, CgnsNamesWithBlanksBecomePatchNames) {
+    const auto dir = scratch_dir();
+    const auto cgns = source_dir() / "tests/data/cgns/mixed.cgns";
+    CommandResult r = run_cli("convert " + quoted(cgns) + " " + quoted(dir / "case/") + " --rename-marker 'UserDefined 5=top'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("cannot hold the marker name 'UserDefined 1': it is written as 'UserDefined_1'"), std::string::npos) << r.err;
+    const Mesh mesh = read_mesh(dir / "case");
+    std::vector<std::string> names;
+    for (const Marker& m : mesh.markers) names.push_back(m.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"UserDefined_1", "UserDefined_2", "UserDefined_3", "UserDefined_4", "top"}));
+    r = run_cli("convert " + quoted(cgns) + " " + quoted(dir / "x.su2") + " --rename-marker 'nosuch=top'");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("--rename-marker 'nosuch=top': unknown marker 'nosuch'; the mesh has: UserDefined 1"), std::string::npos) << r.err;
+    const auto motion = write_text(dir / "lift.json", R"({"markers": {"top": {"translate": [0, 0, 0.01]}}})");
+    r = run_cli("deform " + quoted(cgns) + " -m " + quoted(motion) + " -o " + quoted(dir / "moved/") + " --rename-marker 'UserDefined 5=top'");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("marker 'UserDefined 1' cannot name an OpenFOAM patch"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "moved"));
+}

@@ -7,6 +7,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/marker_names.hpp"
 #include "dgwarp/io/su2.hpp"
 #include "dgwarp/io/vtu.hpp"
 
@@ -145,6 +146,13 @@ void check_mesh_writable(const std::filesystem::path& path, const Mesh& mesh, co
         const std::string ext = lower_case_extension(path);
         if (writes_openfoam(path) || ext == ".vtu") {
             validate(mesh);
+            if (writes_openfoam(path))
+                for (const Marker& m : mesh.markers)
+                    if (!is_openfoam_word(m.name))
+                        throw MeshError("marker '" + m.name +
+                                            "' cannot name an OpenFOAM patch (a patch name is one word: not empty, "
+                                            "without blanks, quotes, slashes or any of ( ) { } ;); rename it",
+                                        m.name);
         } else if (ext == ".su2") {
             check_su2_writable(mesh);
         } else if (ext == ".msh") {

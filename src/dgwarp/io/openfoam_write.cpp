@@ -6,6 +6,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/foam_file.hpp"
 #include "dgwarp/io/number_text.hpp"
+#include "dgwarp/io/marker_names.hpp"
 #include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/io/text_rows.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
@@ -95,8 +96,7 @@ std::string boundary_text(const foam::PolyMesh& pm, const Mesh& mesh, const Open
 /// A patch name must be one OpenFOAM word: no blanks, no ( ) { } ; " / and not empty.
 void check_patch_names(const foam::PolyMesh& pm) {
     for (const foam::Patch& patch : pm.patches) {
-        const bool bad = patch.name.empty() || patch.name.find_first_of(" \t\r\n\f\v(){};\"/\\") != std::string::npos;
-        if (bad)
+        if (!is_openfoam_word(patch.name))
             throw MeshError("marker '" + patch.name +
                                 "' cannot name an OpenFOAM patch (a patch name is one word: not empty, without "
                                 "blanks, quotes, slashes or any of ( ) { } ;)",
