@@ -84,6 +84,7 @@ std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path&
     }
     std::vector<std::filesystem::path> files;
     for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+    files.front() = openfoam_points_folder(path) / "points";  // a time folder's, maybe
     return files;
 }
 

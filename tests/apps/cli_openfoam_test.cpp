@@ -407,3 +407,26 @@ TEST(CliOpenFoam, CgnsNamesWithBlanksBecomePatchNames) {
     EXPECT_NE(r.err.find("marker 'UserDefined 1' cannot name an OpenFOAM patch"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "moved"));
 }
+
+// A time folder as input (issue #30 item 5): CASE/T holding polyMesh/points
+// (what deform writes) is the case's mesh with those points.
+TEST(CliOpenFoam, ATimeFolderReadsAsTheMeshWithItsPoints) {
+    const auto dir = scratch_dir();
+    const auto c = foam_case_copy("mixed", dir);
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    ASSERT_EQ(run_cli("deform -q " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time 0.5").exit_code, 0);
+    const Mesh original = read_mesh(c);
+    for (const std::string time : {"0.5", "0.5/"}) {
+        const Mesh moved = read_mesh(c / time);
+        EXPECT_EQ(moved.cells, original.cells);
+        EXPECT_EQ(moved.markers, original.markers);
+        EXPECT_TRUE(moved.points == foam_with_points(c, c / "0.5/polyMesh/points").points) << time;
+        EXPECT_NE(moved.points, original.points);
+    }
+    const CommandResult q = run_cli("quality " + quoted(c / "0.5") + " --json");
+    ASSERT_EQ(q.exit_code, 0) << q.err;
+    // Deforming the time folder's mesh into its own time folder would overwrite what it reads.
+    const CommandResult again = run_cli("deform " + quoted(c / "0.5") + " -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time 0.5");
+    EXPECT_EQ(again.exit_code, 1) << again.err;
+    EXPECT_NE(again.err.find("0.5/polyMesh/points"), std::string::npos) << again.err;
+}

@@ -74,6 +74,11 @@ inline constexpr const char* poly_mesh_file_names[] = {"points", "faces", "owner
 /// `path` is not a folder.
 std::filesystem::path find_poly_mesh(const std::filesystem::path& path);
 
+/// The folder the points of the mesh at `path` are read from: a time folder's
+/// `polyMesh` when `path` is a time folder holding `polyMesh/points` (a
+/// deformed mesh dgwarp or a solver wrote: CASE/0.5), else find_poly_mesh(path).
+std::filesystem::path openfoam_points_folder(const std::filesystem::path& path);
+
 /// The processors' polyMesh folders (CASE/processor0/constant/polyMesh,
 /// processor1, ...) when `path` is a decomposed case: a case folder without
 /// constant/polyMesh whose processorN folders, N = 0, 1, ... without a gap,

@@ -91,6 +91,14 @@ fs::path find_poly_mesh(const fs::path& path) {
         return constant;
     }
     if (has_mesh_file(path, "faces") || has_mesh_file(path, "owner")) return path;
+    // A time folder: its own polyMesh (after a topology change), or only its
+    // points, with the case's constant/polyMesh.
+    if (is_folder(path / "polyMesh")) {
+        if (has_mesh_file(path / "polyMesh", "faces")) return path / "polyMesh";
+        const fs::path case_constant =
+            without_trailing_slash(fs::absolute(path).lexically_normal()).parent_path() / "constant" / "polyMesh";
+        if (has_mesh_file(path / "polyMesh", "points") && has_mesh_file(case_constant, "faces")) return case_constant;
+    }
     if (is_folder(path / "processor0"))
         throw FormatError(path.string() +
                           ": a decomposed case (processor* folders without constant/polyMesh): read_openfoam reads "
@@ -111,21 +119,27 @@ fs::path openfoam_output_poly_mesh(const fs::path& path) {
     return p.filename() == "polyMesh" ? p : p / "constant" / "polyMesh";
 }
 
+fs::path openfoam_points_folder(const fs::path& path) {
+    const fs::path dir = find_poly_mesh(path);
+    if (is_folder(path / "polyMesh") && has_mesh_file(path / "polyMesh", "points")) return path / "polyMesh";
+    return dir;
+}
+
 Mesh read_openfoam(const fs::path& path, const ProgressFn& progress, OpenFoamSource* source) {
     if (const auto meshes = openfoam_processor_meshes(path); !meshes.empty())
         return foam::read_openfoam_decomposed(meshes, progress, source);
-    const fs::path dir = find_poly_mesh(path);
+    const fs::path dir = find_poly_mesh(path), points_dir = openfoam_points_folder(path);
     PolyMeshFiles files;
     std::string* parts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
     // The share of the reading each file takes is its share of the bytes.
     std::uintmax_t total = 0, done = 0;
     std::error_code ec;
-    for (const char* name : poly_mesh_file_names) {
-        const auto size = fs::file_size(dir / name, ec);
+    for (int k = 0; k < 5; ++k) {
+        const auto size = fs::file_size((k == 0 ? points_dir : dir) / poly_mesh_file_names[k], ec);
         total += ec ? 0 : size;
     }
     for (int k = 0; k < 5; ++k) {
-        *parts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
+        *parts[k] = foam::read_mesh_file(k == 0 ? points_dir : dir, poly_mesh_file_names[k]);
         done += parts[k]->size();
         if (progress && total > 0) progress(std::min(1.0, static_cast<double>(done) / static_cast<double>(total)));
     }
