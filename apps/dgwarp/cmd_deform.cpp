@@ -54,8 +54,10 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
 }
 
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
+/// `beside`: with --foam-processors, the processor folders written with the whole case.
 MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
-                     const std::vector<std::string>& foam_times, ProgressLine& progress, WarningPrinter& warnings) {
+                     const std::vector<std::string>& foam_times, const std::vector<OpenFoamProcessor>& beside,
+                     ProgressLine& progress, WarningPrinter& warnings) {
     MethodRun run;
     const std::size_t frames = frame_count(in.spec);
     if (!plan_run(in, method, a, several, progress, run)) return run;
@@ -108,9 +110,10 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         Stopwatch sw;
         const bool invalid = !f.valid();
         if ((!invalid || a.allow_invalid) && foam) {
-            if (!foam_base_written) write_foam_base(in, out, foam_times[v.frame]);
+            if (!foam_base_written) write_foam_base(in, out, foam_times[v.frame], beside);
             foam_base_written = true;
-            f.output = write_foam_points(in, out, foam_times[v.frame], output_points(in, v.points, lifted)).string();
+            f.output =
+                write_foam_points(in, out, foam_times[v.frame], output_points(in, v.points, lifted), beside).string();
             f.write_seconds = sw.lap();
         } else if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, v.frame, frames);
@@ -202,6 +205,11 @@ void run_deform(const DeformArgs& given) {
     } else if (!a.foam_time.empty()) {
         throw CLI::ValidationError("--foam-time", "is for an OpenFOAM case output (a folder, a name ending in '/')");
     }
+    if (a.foam_processors && (!foam || !reads_openfoam(a.setup.mesh) ||
+                              openfoam_unread_processor_folders(a.setup.mesh).empty()))
+        throw CLI::ValidationError("--foam-processors",
+                                   "is for an OpenFOAM case holding constant/polyMesh and processor* folders "
+                                   "(decomposePar's usual layout) deformed into an OpenFOAM case");
     std::vector<std::string> foam_times;
     const std::vector<Method> methods = chosen_methods(a.setup, true);
     const bool several = methods.size() > 1;
@@ -224,7 +232,8 @@ void run_deform(const DeformArgs& given) {
         const std::size_t frames = frame_count(spec);
         if (foam) {
             foam_times = foam_time_names(spec, frames, a.foam_time);
-            for (Method m : methods) check_foam_outputs(method_output(a.output, m, several), foam_times, a.setup.mesh, inputs);
+            for (Method m : methods)
+                check_foam_outputs(method_output(a.output, m, several), foam_times, a.setup.mesh, inputs, a.foam_processors);
             return;
         }
         check_folder_writable(std::filesystem::path(a.output).parent_path());
@@ -246,7 +255,13 @@ void run_deform(const DeformArgs& given) {
     if (text) print_inputs(std::cout, in, frames, warnings);
     // A decomposed case in its usual layout: which mesh this run reads and writes.
     std::vector<std::string> layout_warnings;
-    if (reads_openfoam(a.setup.mesh))
+    std::vector<OpenFoamProcessor> beside;
+    if (a.foam_processors) {
+        progress.phase("reading the processor folders");
+        beside = read_processors_beside(a.setup.mesh, output_mesh(in).num_points());
+        progress.clear();
+    }
+    if (reads_openfoam(a.setup.mesh) && !a.foam_processors)
         if (const auto folders = openfoam_unread_processor_folders(a.setup.mesh); !folders.empty()) {
             layout_warnings.push_back(
                 a.setup.mesh + " holds constant/polyMesh and " + std::to_string(folders.size()) + " processor folder" +
@@ -254,13 +269,12 @@ void run_deform(const DeformArgs& given) {
                                           folders.back().filename().string() + ")"
                                     : " (" + folders.front().filename().string() + ")") +
                 ": this run reads and writes the whole mesh (constant/polyMesh) only; a parallel run reads the "
-                "processor folders, which it does not change (to deform them, give dgwarp a folder holding only the "
-                "processor folders: docs/OPENFOAM.md)");
+                "processor folders, which it does not change (--foam-processors writes them too)");
             warnings.print(layout_warnings.back());
         }
 
     std::vector<MethodRun> runs;
-    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, foam_times, progress, warnings));
+    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, foam_times, beside, progress, warnings));
     if (text && several) {
         print_table(in, runs);
         print_written(runs);
@@ -413,6 +427,10 @@ void add_deform_command(CLI::App& app) {
     cmd->add_option("--foam-time", args->foam_time,
                     "OpenFOAM output: the time folder of the moved points (default 0; 'constant' replaces "
                     "constant/polyMesh/points); a series writes one per frame, named by its time (or number)");
+    cmd->add_flag("--foam-processors", args->foam_processors,
+                  "An OpenFOAM case holding constant/polyMesh and processor* folders (decomposePar's usual layout): "
+                  "also write each processor's points (the whole mesh's, through its pointProcAddressing), so that a "
+                  "parallel run reads the moved mesh too");
     cmd->add_option("--plan", args->plan, "Use a plan saved by 'dgwarp prepare' instead of building it");
     cmd->add_flag("--allow-invalid", args->allow_invalid, "Write the result even if cells are inverted");
     CLI::Option* untangle_flag =

@@ -24,6 +24,7 @@ struct DeformArgs {
     bool no_untangle = false;  // dg-harmonic without its last resort
     double untangle_target = UntangleOptions{}.target_quality;
     std::string foam_time;  // OpenFOAM output: a single frame's time folder, or "constant"
+    bool foam_processors = false;  // also the processor folders beside the input's constant/polyMesh
     bool quiet = false;
 };
 

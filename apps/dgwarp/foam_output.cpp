@@ -73,10 +73,14 @@ static std::filesystem::path foam_processor_folder(const std::filesystem::path& 
 }
 
 void check_foam_outputs(const std::filesystem::path& out, const std::vector<std::string>& times,
-                        const std::filesystem::path& input_mesh, const std::vector<std::filesystem::path>& inputs) {
+                        const std::filesystem::path& input_mesh, const std::vector<std::filesystem::path>& inputs,
+                        bool with_processors) {
     std::vector<std::filesystem::path> processors;
     try {
         processors = openfoam_processor_meshes(input_mesh);
+        if (with_processors)
+            for (const auto& folder : openfoam_unread_processor_folders(input_mesh))
+                processors.push_back(folder / "constant" / "polyMesh");
     } catch (const Error&) {
         // reading the mesh will say why
     }
@@ -89,7 +93,7 @@ void check_foam_outputs(const std::filesystem::path& out, const std::vector<std:
             for (const char* name : poly_mesh_file_names) check_output(base / name, inputs);
             for (const char* name : processor_addressing_file_names) check_output(base / name, inputs);
         }
-        return;
+        if (!with_processors) return;
     }
     const std::filesystem::path base = openfoam_output_poly_mesh(out);
     check_nearest_folder_writable(base);
@@ -98,7 +102,15 @@ void check_foam_outputs(const std::filesystem::path& out, const std::vector<std:
     for (const char* name : poly_mesh_file_names) check_output(base / name, inputs);
 }
 
-void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time) {
+void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time,
+                     const std::vector<OpenFoamProcessor>& beside) {
+    for (std::size_t p = 0; p < beside.size(); ++p) {
+        const std::filesystem::path base = openfoam_output_poly_mesh(foam_processor_folder(out, p));
+        if (same_folder(base, beside[p].poly_mesh)) continue;
+        const bool points_here = openfoam_points_file(foam_processor_folder(out, p), time).file.parent_path() == base;
+        copy_poly_mesh(beside[p].poly_mesh, base,
+                       points_here ? std::vector<std::string>{"points", "points.gz"} : std::vector<std::string>{});
+    }
     if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
         const auto& processors = in.extras.openfoam->processors;
         for (std::size_t p = 0; p < processors.size(); ++p) {
@@ -122,7 +134,11 @@ void write_foam_base(const Inputs& in, const std::filesystem::path& out, const s
 }
 
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
-                                        std::span<const double> points) {
+                                        std::span<const double> points, const std::vector<OpenFoamProcessor>& beside) {
+    for (std::size_t p = 0; p < beside.size(); ++p) {
+        const OpenFoamPointsFile file = openfoam_points_file(foam_processor_folder(out, p), time);
+        write_openfoam_points(file.file, processor_points(beside[p], points), beside[p].points_format, file.location);
+    }
     if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
         // Each processor's points, in its own numbering and format.
         const auto& processors = in.extras.openfoam->processors;

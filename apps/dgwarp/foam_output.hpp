@@ -28,19 +28,25 @@ std::vector<std::string> foam_time_names(const MotionSpec& spec, std::size_t fra
 /// constant/polyMesh is the input's, the polyMesh files written there; none
 /// may be an input (`inputs`), each must be replaceable, and files must be
 /// creatable in the nearest existing folder.
+/// `with_processors` (--foam-processors): also the processor folders beside
+/// the input's constant/polyMesh, written as a decomposed input's.
 void check_foam_outputs(const std::filesystem::path& out, const std::vector<std::string>& times,
-                        const std::filesystem::path& input_mesh, const std::vector<std::filesystem::path>& inputs);
+                        const std::filesystem::path& input_mesh, const std::vector<std::filesystem::path>& inputs,
+                        bool with_processors = false);
 
 /// Writes out/constant/polyMesh for the moved points (once per output
 /// folder, before its first points): a copy of the OpenFOAM input's polyMesh
 /// files (none when it is the same folder), or the original mesh of another
 /// format as a whole polyMesh; without the points when `time` puts them there.
-void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time);
+/// `beside` (--foam-processors): the processor folders beside the input's
+/// constant/polyMesh (read_processors_beside), written too.
+void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time,
+                     const std::vector<OpenFoamProcessor>& beside = {});
 
 /// Writes frame points `points` to out's points file for `time`, in the
 /// format of the OpenFOAM input (ascii for another format); returns its path
 /// (OUT/processor*/<time>/polyMesh/points for a decomposed input).
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
-                                        std::span<const double> points);
+                                        std::span<const double> points, const std::vector<OpenFoamProcessor>& beside = {});
 
 }  // namespace dgwarp::cli

@@ -430,3 +430,34 @@ TEST(CliOpenFoam, ATimeFolderReadsAsTheMeshWithItsPoints) {
     EXPECT_EQ(again.exit_code, 1) << again.err;
     EXPECT_NE(again.err.find("0.5/polyMesh/points"), std::string::npos) << again.err;
 }
+
+// decomposePar's usual layout (constant/polyMesh and processor folders) with
+// --foam-processors (issue #30 item 4): the whole mesh and every processor
+// folder are written, the processors' points the same bytes as deforming the
+// processor folders alone.
+TEST(CliOpenFoam, FoamProcessorsWritesTheProcessorFoldersBesideTheWholeCase) {
+    const auto dir = scratch_dir();
+    const auto motion = write_text(dir / "lift.json", foam_lift_top);
+    const auto both = dir / "both";
+    std::filesystem::copy(openfoam_case("mixed"), both, std::filesystem::copy_options::recursive);
+    for (const char* p : {"processor0", "processor1"})
+        std::filesystem::copy(openfoam_case("mixed-decomposed") / p, both / p, std::filesystem::copy_options::recursive);
+    const auto parts = foam_case_copy("mixed-decomposed", dir);
+    ASSERT_EQ(run_cli("deform -q " + quoted(parts) + " -m " + quoted(motion) + " -o " + quoted(parts)).exit_code, 0);
+    const CommandResult r = run_cli("deform " + quoted(both) + " -m " + quoted(motion) + " -o " + quoted(both) + " --foam-processors");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("does not change"), std::string::npos) << r.err;  // no warning about the processor folders
+    EXPECT_TRUE(std::filesystem::exists(both / "0/polyMesh/points"));
+    for (const char* p : {"processor0", "processor1"})
+        EXPECT_EQ(slurp(both / p / "0/polyMesh/points"), slurp(parts / p / "0/polyMesh/points")) << p;
+    // Into another folder: the processors' polyMesh folders are copied there too.
+    ASSERT_EQ(run_cli("deform -q " + quoted(both) + " -m " + quoted(motion) + " -o " + quoted(dir / "out") + " --foam-processors").exit_code, 0);
+    EXPECT_EQ(slurp(dir / "out/processor1/0/polyMesh/points"), slurp(parts / "processor1/0/polyMesh/points"));
+    EXPECT_EQ(slurp(dir / "out/processor1/constant/polyMesh/pointProcAddressing"),
+              slurp(both / "processor1/constant/polyMesh/pointProcAddressing"));
+    // Without processor folders beside constant/polyMesh, the flag is a usage error.
+    const CommandResult alone = run_cli("deform " + quoted(openfoam_case("mixed")) + " -m " + quoted(motion) + " -o " +
+                                        quoted(dir / "x") + " --foam-processors");
+    EXPECT_EQ(alone.exit_code, 1);
+    EXPECT_NE(alone.err.find("--foam-processors"), std::string::npos) << alone.err;
+}

@@ -129,6 +129,15 @@ struct OpenFoamPatchType {
 /// read it); empty when the file cannot be read.
 std::vector<OpenFoamPatchType> openfoam_patch_types(const std::filesystem::path& poly_mesh);
 
+/// The processor folders beside constant/polyMesh in the case `path`
+/// (decomposePar's usual layout: openfoam_unread_processor_folders) as
+/// processors of the mesh read from constant/polyMesh, of `num_points`
+/// points: each one's polyMesh folder, points format and pointProcAddressing
+/// (each processor's polyMesh is read). Throws as read_openfoam_processor,
+/// and ParseError naming the addressing file for a point label not below
+/// `num_points` (a decomposition of another mesh).
+std::vector<OpenFoamProcessor> read_processors_beside(const std::filesystem::path& path, std::size_t num_points);
+
 /// Processor p's points (its num_points × 3, row-major) taken from the
 /// whole mesh's `points` (num_points × 3) through p.points.
 std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const double> points);

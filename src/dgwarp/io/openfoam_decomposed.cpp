@@ -124,6 +124,25 @@ std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
     return meshes;
 }
 
+std::vector<OpenFoamProcessor> read_processors_beside(const fs::path& path, std::size_t num_points) {
+    std::vector<OpenFoamProcessor> processors;
+    for (const fs::path& folder : openfoam_unread_processor_folders(path)) {
+        const fs::path poly_mesh = folder / "constant" / "polyMesh";
+        const OpenFoamProcessorMesh read = read_openfoam_processor(poly_mesh);
+        OpenFoamProcessor p{poly_mesh, read.points_format, {}};
+        for (std::int64_t id : read.point_ids) {
+            if (id < 0 || static_cast<std::uint64_t>(id) >= num_points)
+                throw ParseError((poly_mesh / "pointProcAddressing").string(), 0,
+                                 "point labels below " + str(static_cast<std::int64_t>(num_points)) +
+                                     " (the points of " + (path / "constant" / "polyMesh").string() + ")",
+                                 str(id));
+            p.points.push_back(static_cast<NodeId>(id));
+        }
+        processors.push_back(std::move(p));
+    }
+    return processors;
+}
+
 std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const double> points) {
     std::vector<double> out(p.points.size() * 3);
     for (std::size_t i = 0; i < p.points.size(); ++i)
