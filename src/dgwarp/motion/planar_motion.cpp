@@ -22,7 +22,7 @@ double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] *
 /// Maps one marker's motion; `size` is the mesh's bounding-box diagonal.
 class MotionMap {
 public:
-    MotionMap(const PlanarCase& planar, const Mesh& mesh, double size) : planar_(planar), mesh_(mesh), size_(size) {}
+    MotionMap(const PlanarCase& planar, double size) : planar_(planar), size_(size) {}
 
     MarkerMotion operator()(const std::string& marker, const MarkerMotion& motion) const {
         marker_ = &marker;
@@ -141,7 +141,8 @@ private:
                 // A node and its twin: alike.
                 if (!alike(out.values.back(), mapped))
                     throw MeshError("marker '" + *marker_ + "': nodes " + std::to_string(t.nodes[order[i - 1]]) + " and " +
-                                        std::to_string(t.nodes[e]) + " in " + t.source +
+                                        std::to_string(t.nodes[e]) + " in " +
+                                        (t.source.empty() ? std::string("the node table") : t.source) +
                                         " are twins across the 2D case's layer but move differently",
                                     *marker_, t.nodes[e]);
                 continue;
@@ -161,7 +162,6 @@ private:
     }
 
     const PlanarCase& planar_;
-    const Mesh& mesh_;
     double size_;
     mutable const std::string* marker_ = nullptr;
 };
@@ -170,7 +170,7 @@ private:
 
 MotionSpec planar_motion(const PlanarCase& planar, const Mesh& mesh, const MotionSpec& spec) {
     const BoundingBox box = bounding_box(mesh);
-    const MotionMap map(planar, mesh, std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]));
+    const MotionMap map(planar, std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]));
     const auto is_plane = [&](const std::string& name) {
         return std::find(planar.plane_markers.begin(), planar.plane_markers.end(), name) != planar.plane_markers.end();
     };
