@@ -119,7 +119,7 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
             const auto path = frame_path(out, v.frame, frames);
             const std::span<const double> points = output_points(in, v.points, lifted);
             std::copy(points.begin(), points.end(), deformed.points.begin());
-            write_mesh(path, deformed, deformation_fields(deformed, points, v.cells.quality, v.cells.ratio),
+            write_mesh(path, deformed, deformation_fields(output_mesh(in), points, v.cells.quality, v.cells.ratio),
                        write_options);
             f.output = path.string();
             f.write_seconds = sw.lap();

@@ -66,6 +66,26 @@ TEST(CliDeform, VtuOutputCarriesDisplacementAndQuality) {
     EXPECT_NE(py.out.find("\"displacement\""), std::string::npos);
     EXPECT_NE(py.out.find("\"quality\""), std::string::npos);
     EXPECT_NE(py.out.find("\"quality_ratio\""), std::string::npos);
+    // The displacement is the new points minus the original ones: its range per component is theirs.
+    const Mesh before = read_mesh(mesh), after = read_mesh(dir / "out.vtu");
+    std::vector<double> low(2, 1e300), high(2, -1e300);
+    for (std::size_t i = 0; i < before.points.size(); ++i) {
+        const double d = after.points[i] - before.points[i];
+        low[i % 2] = std::min(low[i % 2], d);
+        high[i % 2] = std::max(high[i % 2], d);
+    }
+    bool found = false;
+    const nlohmann::json summary = nlohmann::json::parse(py.out);
+    for (const auto& a : summary.at("arrays"))
+        if (a.at("name") == "displacement") {
+            found = true;
+            for (std::size_t k = 0; k < 2; ++k) {
+                EXPECT_NEAR(a.at("component_min")[k].get<double>(), low[k], 1e-12) << k;
+                EXPECT_NEAR(a.at("component_max")[k].get<double>(), high[k], 1e-12) << k;
+            }
+            EXPECT_GT(high[0] - low[0] + high[1] - low[1], 0.01);  // it moved
+        }
+    EXPECT_TRUE(found) << py.out;
 }
 
 TEST(CliDeform, InvertedCellsExitWith3AndWriteNothingUnlessAllowed) {
