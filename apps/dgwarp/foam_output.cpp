@@ -102,24 +102,38 @@ void check_foam_outputs(const std::filesystem::path& out, const std::vector<std:
     for (const char* name : poly_mesh_file_names) check_output(base / name, inputs);
 }
 
-void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time,
-                     const std::vector<OpenFoamProcessor>& beside) {
-    for (std::size_t p = 0; p < beside.size(); ++p) {
+namespace {
+
+/// Each processor's polyMesh copied into OUT/processorN (not into itself;
+/// without its points when `time` puts them there).
+void copy_processor_bases(const std::vector<OpenFoamProcessor>& processors, const std::filesystem::path& out,
+                          const std::string& time) {
+    for (std::size_t p = 0; p < processors.size(); ++p) {
         const std::filesystem::path base = openfoam_output_poly_mesh(foam_processor_folder(out, p));
-        if (same_folder(base, beside[p].poly_mesh)) continue;
+        if (same_folder(base, processors[p].poly_mesh)) continue;
         const bool points_here = openfoam_points_file(foam_processor_folder(out, p), time).file.parent_path() == base;
-        copy_poly_mesh(beside[p].poly_mesh, base,
+        copy_poly_mesh(processors[p].poly_mesh, base,
                        points_here ? std::vector<std::string>{"points", "points.gz"} : std::vector<std::string>{});
     }
+}
+
+/// Each processor's points (its own numbering and format) of the whole mesh's `points`.
+void write_processor_points(const std::vector<OpenFoamProcessor>& processors, const std::filesystem::path& out,
+                            const std::string& time, std::span<const double> points) {
+    for (std::size_t p = 0; p < processors.size(); ++p) {
+        const OpenFoamPointsFile file = openfoam_points_file(foam_processor_folder(out, p), time);
+        write_openfoam_points(file.file, processor_points(processors[p], points), processors[p].points_format,
+                              file.location);
+    }
+}
+
+}  // namespace
+
+void write_foam_base(const Inputs& in, const std::filesystem::path& out, const std::string& time,
+                     const std::vector<OpenFoamProcessor>& beside) {
+    copy_processor_bases(beside, out, time);
     if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
-        const auto& processors = in.extras.openfoam->processors;
-        for (std::size_t p = 0; p < processors.size(); ++p) {
-            const std::filesystem::path base = openfoam_output_poly_mesh(foam_processor_folder(out, p));
-            if (same_folder(base, processors[p].poly_mesh)) continue;
-            const bool points_here = openfoam_points_file(foam_processor_folder(out, p), time).file.parent_path() == base;
-            copy_poly_mesh(processors[p].poly_mesh, base,
-                           points_here ? std::vector<std::string>{"points", "points.gz"} : std::vector<std::string>{});
-        }
+        copy_processor_bases(in.extras.openfoam->processors, out, time);
         return;
     }
     const std::filesystem::path base = openfoam_output_poly_mesh(out);
@@ -135,18 +149,9 @@ void write_foam_base(const Inputs& in, const std::filesystem::path& out, const s
 
 std::filesystem::path write_foam_points(const Inputs& in, const std::filesystem::path& out, const std::string& time,
                                         std::span<const double> points, const std::vector<OpenFoamProcessor>& beside) {
-    for (std::size_t p = 0; p < beside.size(); ++p) {
-        const OpenFoamPointsFile file = openfoam_points_file(foam_processor_folder(out, p), time);
-        write_openfoam_points(file.file, processor_points(beside[p], points), beside[p].points_format, file.location);
-    }
+    write_processor_points(beside, out, time, points);
     if (in.extras.openfoam && !in.extras.openfoam->processors.empty()) {
-        // Each processor's points, in its own numbering and format.
-        const auto& processors = in.extras.openfoam->processors;
-        for (std::size_t p = 0; p < processors.size(); ++p) {
-            const OpenFoamPointsFile file = openfoam_points_file(foam_processor_folder(out, p), time);
-            write_openfoam_points(file.file, processor_points(processors[p], points), processors[p].points_format,
-                                  file.location);
-        }
+        write_processor_points(in.extras.openfoam->processors, out, time, points);
         return openfoam_points_file(out / "processor*", time).file;
     }
     const OpenFoamPointsFile file = openfoam_points_file(out, time);

@@ -99,6 +99,20 @@ TestZone cgns_tet_zone() {
     return z;
 }
 
+/// 2D: a unit square of two triangles and a quadrilateral to its right, in
+/// one MIXED section with four bars; a section "top" of two more bars.
+TestZone cgns_square_zone() {
+    TestZone z;
+    z.x = {0, 1, 1, 0, 2, 2};
+    z.y = {0, 0, 1, 1, 0, 1};
+    z.sections = {{"All", cgns_code::MIXED, 7,
+                   {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::QUAD_4, 2, 5, 6, 3,
+                    cgns_code::BAR_2, 1, 2, cgns_code::BAR_2, 2, 5, cgns_code::BAR_2, 5, 6, cgns_code::BAR_2, 4, 1}},
+                  {"top", cgns_code::BAR_2, 2, {6, 3, 3, 4}}};
+    z.cells = 3;
+    return z;
+}
+
 }  // namespace
 
 // aflr3_to_cgns's file holds the Gmsh mesh it was made from (through
@@ -189,15 +203,7 @@ TEST(CgnsRead, ZonesShareThePointsTheirOneToOneConnectivityJoins) {
 // family are one marker of the family's name; a face section no BC refers to
 // is a marker of its name; MIXED sections hold cells and faces.
 TEST(CgnsRead, VertexBcsFamiliesAndUnreferencedSectionsAreMarkers) {
-    // 2D: a unit square of two triangles and a quadrilateral to its right, in one MIXED section.
-    TestZone z;
-    z.x = {0, 1, 1, 0, 2, 2};
-    z.y = {0, 0, 1, 1, 0, 1};
-    z.sections = {{"All", cgns_code::MIXED, 7,
-                   {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::QUAD_4, 2, 5, 6, 3,
-                    cgns_code::BAR_2, 1, 2, cgns_code::BAR_2, 2, 5, cgns_code::BAR_2, 5, 6, cgns_code::BAR_2, 4, 1}},
-                  {"top", cgns_code::BAR_2, 2, {6, 3, 3, 4}}};
-    z.cells = 3;
+    TestZone z = cgns_square_zone();
     z.bcs = {{"lower", "wall", cgns_code::Vertex, false, {1, 2, 5}},
              {"right", "", cgns_code::EdgeCenter, true, {6, 6}},
              {"left", "wall", cgns_code::EdgeCenter, false, {7}}};
@@ -323,14 +329,7 @@ TEST(CgnsRead, TheTestWriterFilesPassCgnscheck) {
 // Each marker's BC type is kept (CgnsSource::marker_types): a BC's own, or for
 // FamilySpecified its family's FamilyBC_t; "" for a section no BC refers to.
 TEST(CgnsRead, MarkersKeepTheirBcTypes) {
-    TestZone z;
-    z.x = {0, 1, 1, 0, 2, 2};
-    z.y = {0, 0, 1, 1, 0, 1};
-    z.sections = {{"All", cgns_code::MIXED, 7,
-                   {cgns_code::TRI_3, 1, 2, 3, cgns_code::TRI_3, 1, 3, 4, cgns_code::QUAD_4, 2, 5, 6, 3,
-                    cgns_code::BAR_2, 1, 2, cgns_code::BAR_2, 2, 5, cgns_code::BAR_2, 5, 6, cgns_code::BAR_2, 4, 1}},
-                  {"top", cgns_code::BAR_2, 2, {6, 3, 3, 4}}};
-    z.cells = 3;
+    TestZone z = cgns_square_zone();
     z.bcs = {{"lower", "", cgns_code::Vertex, false, {1, 2, 5}, cgns_code::BCSymmetryPlane},
              {"right", "", cgns_code::EdgeCenter, true, {6, 6}},
              {"left", "mirror", cgns_code::EdgeCenter, false, {7}, cgns_code::BCWall, cgns_code::BCSymmetryPlane}};
