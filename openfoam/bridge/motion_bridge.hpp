@@ -94,8 +94,8 @@ class Solver {
   public:
     /// Prepares the method for `mesh` (the moving and fixed patches' points
     /// are the boundary), collectively over MPI_COMM_WORLD when `parallel` is
-    /// given. Throws Error: an unknown method or option, a patch that has no
-    /// faces of a cell the library can hold (polyhedra), a bad boundary.
+    /// given. Throws Error: an unknown method or option, faces that do not
+    /// close a cell, a bad boundary.
     Solver(PolyMesh mesh, const Settings& settings, const Parallel* parallel);
     ~Solver();
     Solver(const Solver&) = delete;

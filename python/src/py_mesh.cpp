@@ -41,7 +41,7 @@ bool uniform(const ElementList& list) {
 py::dict elements_by_type(const ElementList& list, py::handle owner) {
     py::dict out;
     if (list.empty()) return out;
-    if (uniform(list)) {
+    if (uniform(list) && !has_any_node_count(list.types[0])) {
         const auto k = static_cast<py::ssize_t>(nodes_per_cell(list.types[0]));
         out[py::str(std::string(cell_type_name(list.types[0])))] =
             read_only_view(list.nodes.data(), {static_cast<py::ssize_t>(list.size()), k}, owner);
@@ -51,6 +51,28 @@ py::dict elements_by_type(const ElementList& list, py::handle owner) {
     for (CellType t : all_cell_types) {
         const auto count = counts[static_cast<std::size_t>(t)];
         if (count == 0) continue;
+        if (t == CellType::polygon || t == CellType::polyhedron) {
+            // Any number of nodes: a list of arrays (a polygon's nodes in
+            // order), or of lists of face arrays (a polyhedron's, normals out).
+            py::list items;
+            for (std::size_t i = 0; i < list.size(); ++i) {
+                if (list.types[i] != t) continue;
+                if (t == CellType::polygon) {
+                    const auto nodes = list.nodes_of(i);
+                    items.append(py::array_t<NodeId>(static_cast<py::ssize_t>(nodes.size()), nodes.data()));
+                    continue;
+                }
+                py::list faces;
+                const auto [f0, f1] = list.faces_of(i);
+                for (std::int64_t f = f0; f < f1; ++f) {
+                    const auto ring = list.face_nodes_of(f);
+                    faces.append(py::array_t<NodeId>(static_cast<py::ssize_t>(ring.size()), ring.data()));
+                }
+                items.append(faces);
+            }
+            out[py::str(std::string(cell_type_name(t)))] = items;
+            continue;
+        }
         const int k = nodes_per_cell(t);
         py::array_t<NodeId> a({static_cast<py::ssize_t>(count), static_cast<py::ssize_t>(k)});
         NodeId* d = a.mutable_data();
@@ -87,6 +109,29 @@ void append_block(ElementList& list, py::handle type, py::handle array, const st
         const std::string name = py::str(type);
         t = cell_type_from_name(name);
         if (!t) throw py::value_error(what + ": unknown cell type '" + name + "'; dgwarp's are " + cell_type_names());
+    }
+    if (t && (*t == CellType::polygon || *t == CellType::polyhedron)) {
+        // A sequence of polygons (node arrays) or of polyhedra (sequences of face node arrays).
+        std::size_t i = 0;
+        for (auto item : array) {
+            const std::string where = what + "[" + std::to_string(i++) + "]";
+            if (*t == CellType::polygon) {
+                const std::vector<NodeId> ids = node_ids(item, where.c_str(), any_rows);
+                if (ids.size() < 3) throw py::value_error(where + ": a polygon has at least 3 nodes");
+                list.push_back(*t, ids);
+                continue;
+            }
+            std::vector<NodeId> rings;
+            std::vector<int> sizes;
+            std::size_t k = 0;
+            for (auto face : item) {
+                const std::vector<NodeId> ids = node_ids(face, (where + "[" + std::to_string(k++) + "]").c_str(), any_rows);
+                rings.insert(rings.end(), ids.begin(), ids.end());
+                sizes.push_back(static_cast<int>(ids.size()));
+            }
+            list.push_polyhedron(rings, sizes);
+        }
+        return;
     }
     py::ssize_t rows = 0;
     std::vector<NodeId> ids;

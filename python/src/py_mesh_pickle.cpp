@@ -39,22 +39,37 @@ std::vector<T> from_bytes(py::handle obj, const char* what) {
 }
 
 py::tuple elements_state(const ElementList& e) {
-    return py::make_tuple(to_bytes(e.types), to_bytes(e.offsets), to_bytes(e.nodes));
+    if (!e.has_faces()) return py::make_tuple(to_bytes(e.types), to_bytes(e.offsets), to_bytes(e.nodes));
+    return py::make_tuple(to_bytes(e.types), to_bytes(e.offsets), to_bytes(e.nodes), to_bytes(e.face_first),
+                          to_bytes(e.face_offsets), to_bytes(e.face_nodes));
 }
 
 ElementList elements_from_state(py::handle obj, const char* what) {
     const auto t = obj.cast<py::tuple>();
-    if (t.size() != 3) throw py::value_error(std::string("a pickled dgwarp.Mesh: bad ") + what);
+    if (t.size() != 3 && t.size() != 6) throw py::value_error(std::string("a pickled dgwarp.Mesh: bad ") + what);
     ElementList e;
     e.types = from_bytes<CellType>(t[0], what);
     e.offsets = from_bytes<std::int64_t>(t[1], what);
     e.nodes = from_bytes<NodeId>(t[2], what);
+    if (t.size() == 6) {  // polyhedra's faces
+        e.face_first = from_bytes<std::int64_t>(t[3], what);
+        e.face_offsets = from_bytes<std::int64_t>(t[4], what);
+        e.face_nodes = from_bytes<NodeId>(t[5], what);
+    }
     // validate() reads the elements through their offsets: check those first.
-    bool ok = e.offsets.size() == e.types.size() + 1 && e.offsets.front() == 0 &&
-              e.offsets.back() == static_cast<std::int64_t>(e.nodes.size());
+    const auto increasing = [](const std::vector<std::int64_t>& v, std::size_t size, std::int64_t last) {
+        if (v.size() != size + 1 || v.front() != 0 || v.back() != last) return false;
+        for (std::size_t i = 0; i < size; ++i)
+            if (v[i] > v[i + 1]) return false;
+        return true;
+    };
+    bool ok = increasing(e.offsets, e.types.size(), static_cast<std::int64_t>(e.nodes.size()));
     for (std::size_t i = 0; ok && i < e.types.size(); ++i)
-        ok = e.offsets[i] <= e.offsets[i + 1] && static_cast<std::uint8_t>(e.types[i]) <=
-                                                     static_cast<std::uint8_t>(CellType::pyramid);
+        ok = static_cast<std::uint8_t>(e.types[i]) <= static_cast<std::uint8_t>(CellType::polyhedron);
+    if (ok && t.size() == 6)
+        ok = !e.face_offsets.empty() &&
+             increasing(e.face_offsets, e.face_offsets.size() - 1, static_cast<std::int64_t>(e.face_nodes.size())) &&
+             increasing(e.face_first, e.types.size(), static_cast<std::int64_t>(e.face_offsets.size()) - 1);
     if (!ok) throw py::value_error(std::string("a pickled dgwarp.Mesh: inconsistent ") + what);
     return e;
 }

@@ -106,3 +106,23 @@ def test_a_process_pool_deforms_with_a_pickled_plan(naca_file):
         results = list(pool.map(_deform_in_child, [plan, plan], motions))
     for motion, result in zip(motions, results):
         assert np.array_equal(result, plan.deform(motion))
+
+
+def test_polyhedra_come_as_face_lists_pickle_and_build_back(tmp_path):
+    # snappyHexMesh's sphere in a box (tests/data/openfoam): its polyhedra come as lists of
+    # face arrays (pointing out of the cell), and a mesh built from them is the same mesh.
+    import pathlib
+    case = pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "openfoam" / "snappy-sphere"
+    mesh = dgwarp.read(case)
+    assert len(mesh.cells["polyhedron"]) == 272 and mesh.cells["hexahedron"].shape == (576, 8)
+    first = mesh.cells["polyhedron"][0]
+    assert len(first) >= 4 and all(len(face) >= 3 for face in first)
+    copy = pickle.loads(pickle.dumps(mesh))
+    assert copy.cells.keys() == mesh.cells.keys()
+    assert all(len(a) == len(b) and all(np.array_equal(f, g) for f, g in zip(a, b))
+               for a, b in zip(copy.cells["polyhedron"], mesh.cells["polyhedron"]))
+    built = dgwarp.Mesh.from_arrays(mesh.points, {"polyhedron": mesh.cells["polyhedron"]}, {})
+    built.write(tmp_path / "p.vtu")
+    again = dgwarp.read(tmp_path / "p.vtu")
+    assert all(len(a) == len(b) and all(np.array_equal(f, g) for f, g in zip(a, b))
+               for a, b in zip(again.cells["polyhedron"], mesh.cells["polyhedron"]))

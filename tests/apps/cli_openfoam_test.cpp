@@ -461,3 +461,36 @@ TEST(CliOpenFoam, FoamProcessorsWritesTheProcessorFoldersBesideTheWholeCase) {
     EXPECT_EQ(alone.exit_code, 1);
     EXPECT_NE(alone.err.find("--foam-processors"), std::string::npos) << alone.err;
 }
+
+TEST(CliOpenFoam, ASnappyHexMeshCaseWithPolyhedraDeformsWithEveryMethod) {
+    // The sphere of the snappy case moved by 0.05 (its radius is 0.5, the
+    // cells about it 0.125): no method inverts a cell, the sphere's
+    // points move by exactly the motion, the box's stay; SU2 cannot hold the
+    // polyhedra and says so, naming the first.
+    const auto dir = scratch_dir();
+    const auto c = foam_case_copy("snappy-sphere", dir);
+    const auto motion = write_text(dir / "m.json", R"({"markers": {"sphere": {"translate": [0.05, 0, 0]}}})");
+    const Mesh original = read_mesh(c);
+    for (const std::string method : {"dg-harmonic", "dg-idw", "dgm", "idw", "rbf", "laplacian"}) {
+        SCOPED_TRACE(method);
+        const auto out = dir / ("out-" + method);
+        const CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " --method " + method +
+                                        " --json -o " + quoted(out / ""));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const nlohmann::json report = nlohmann::json::parse(r.out);
+        // (48 snapped hexahedra have a concave corner as snappyHexMesh makes them: inverted by Knupp's measure.)
+        EXPECT_EQ(report.at("frames").at(0).at("inverted_by_motion"), 0) << r.out;
+        const Mesh moved = read_mesh(out / "0");
+        EXPECT_EQ(moved.cells, original.cells);
+        for (NodeId n : marker_nodes(find_marker(original, "sphere")))
+            EXPECT_EQ(moved.points[3 * n], original.points[3 * n] + 0.05) << n;
+        for (NodeId n : marker_nodes(find_marker(original, "sides")))
+            for (int d = 0; d < 3; ++d) EXPECT_EQ(moved.points[3 * n + d], original.points[3 * n + d]) << n;
+    }
+    const CommandResult su2 = run_cli("convert " + quoted(c) + " " + quoted(dir / "s.su2"));
+    EXPECT_EQ(su2.exit_code, 2);
+    EXPECT_NE(su2.err.find("is a polyhedron, which SU2 files cannot hold (write .vtu, .cgns or an OpenFOAM case)"),
+              std::string::npos)
+        << su2.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "s.su2"));
+}

@@ -28,7 +28,8 @@ TEST(OpenFoamProcessorRead, EachProcessorIsItsPartOfTheWholeCase) {
     for (const ProcessorReadCase& c : {ProcessorReadCase{"mixed-decomposed", "mixed", 2},
                                        ProcessorReadCase{"mixed-decomposed-3", "mixed", 3},
                                        ProcessorReadCase{"mixed-decomposed-4", "mixed", 4},
-                                       ProcessorReadCase{"cavity-binary-decomposed", "cavity-binary", 2}}) {
+                                       ProcessorReadCase{"cavity-binary-decomposed", "cavity-binary", 2},
+                                       ProcessorReadCase{"snappy-sphere-decomposed", "snappy-sphere", 2}}) {
         SCOPED_TRACE(c.decomposed);
         const Mesh whole = read_openfoam(openfoam_case(c.whole));
         const auto folders = openfoam_processor_meshes(openfoam_case(c.decomposed));
@@ -50,7 +51,7 @@ TEST(OpenFoamProcessorRead, EachProcessorIsItsPartOfTheWholeCase) {
         for (std::size_t p = 0; p < parts.size(); ++p) {
             const OpenFoamProcessorMesh& part = parts[p];
             const Mesh& m = part.mesh;
-            EXPECT_EQ(part.points_format, c.whole == "mixed" ? foam::Format::ascii : foam::Format::binary);
+            EXPECT_EQ(part.points_format, c.whole == "cavity-binary" ? foam::Format::binary : foam::Format::ascii);
             // Points: the case's, bit for bit.
             ASSERT_EQ(part.point_ids.size(), m.num_points());
             for (std::size_t i = 0; i < m.num_points(); ++i)
@@ -66,6 +67,16 @@ TEST(OpenFoamProcessorRead, EachProcessorIsItsPartOfTheWholeCase) {
                 ASSERT_EQ(mine.size(), theirs.size());
                 for (std::size_t i = 0; i < mine.size(); ++i)
                     EXPECT_EQ(part.point_ids[static_cast<std::size_t>(mine[i])], theirs[i]) << "cell " << g;
+                // A polyhedron's faces too, in the same order from the same node.
+                const auto [f0, f1] = m.cells.faces_of(k);
+                const auto [g0, g1] = whole.cells.faces_of(g);
+                ASSERT_EQ(f1 - f0, g1 - g0) << "cell " << g;
+                for (std::int64_t f = 0; f < f1 - f0; ++f) {
+                    std::vector<NodeId> ring;
+                    for (NodeId n : m.cells.face_nodes_of(f0 + f)) ring.push_back(static_cast<NodeId>(part.point_ids[static_cast<std::size_t>(n)]));
+                    const auto expected = whole.cells.face_nodes_of(g0 + f);
+                    EXPECT_EQ(ring, std::vector<NodeId>(expected.begin(), expected.end())) << "cell " << g;
+                }
             }
             // Interface points: exactly those another processor holds too.
             std::vector<NodeId> shared;

@@ -10,6 +10,7 @@
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/quality/cell_quality.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;
@@ -143,4 +144,78 @@ TEST(VtuRead, MeshioWrittenFilesReadTheSame) {
             EXPECT_EQ(back.points, mesh.points);  // binary: bit for bit
         }
     }
+}
+
+namespace {
+
+// VTK's own example of a polyhedron (a tetrahedron given as one, from VTK's
+// mailing list): its first face turns inward, the others outward.
+const char* vtk_polyhedron = R"(<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+<UnstructuredGrid>
+<Piece NumberOfPoints="4" NumberOfCells="1">
+<Points>
+<DataArray type="Float64" Name="Points" NumberOfComponents="3" format="ascii">
+0 0 0
+1 0 0
+.5 1 0
+.5 .5 1
+</DataArray>
+</Points>
+<Cells>
+<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">4</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">42</DataArray>
+<DataArray type="Int64" Name="faces" format="ascii">
+4 3 0 1 2
+3 0 1 3
+3 1 2 3
+3 0 2 3
+</DataArray>
+<DataArray type="Int64" Name="faceoffsets" format="ascii">17</DataArray>
+</Cells>
+</Piece>
+</UnstructuredGrid>
+</VTKFile>
+)";
+
+}  // namespace
+
+TEST(VtuRead, PolyhedraAndPolygonsRoundTripAndForeignFacesAreTurnedOut) {
+    // A snappyHexMesh case (polyhedra, boundary pentagons and hexagons) written and read back: equal.
+    const Mesh mesh = read_mesh(test::source_dir() / "tests" / "data" / "openfoam" / "snappy-sphere");
+    const std::string text = vtu_text_of(mesh);
+    EXPECT_NE(text.find("Name=\"faceoffsets\""), std::string::npos);
+    EXPECT_NE(text.find("Name=\"dgwarp_marker_offsets\""), std::string::npos);
+    EXPECT_EQ(read_vtu_text("snappy.vtu", text), mesh);
+    // VTK's example: every face turned out of the cell (as the tetrahedron's quality sees it).
+    const Mesh tet = read_vtu_text("vtk.vtu", vtk_polyhedron);
+    ASSERT_EQ(tet.cells.types, std::vector<CellType>{CellType::polyhedron});
+    EXPECT_EQ(element_orientation(tet.cells, 0, 3, tet.points), 1);
+    const std::vector<NodeId> outward{0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+    EXPECT_EQ(tet.cells.face_nodes, outward);
+    // A 2D polygon cell (a hexagon) beside a triangle, written and read back.
+    Mesh planar;
+    planar.dim = 2;
+    planar.points = {0, 0, 2, 0, 3, 1, 2, 2, 0, 2, -1, 1, 4, 2};
+    planar.cells.push_back(CellType::polygon, std::vector<NodeId>{0, 1, 2, 3, 4, 5});
+    planar.cells.push_back(CellType::triangle, std::vector<NodeId>{1, 6, 2});
+    EXPECT_EQ(read_vtu_text("planar.vtu", vtu_text_of(planar)), planar);
+}
+
+TEST(VtuRead, DamagedPolyhedraAreParseErrors) {
+    const auto expect_error = [](const std::string& text, const std::string& part) {
+        try {
+            read_vtu_text("bad.vtu", text);
+            ADD_FAILURE() << "no error for " << part;
+        } catch (const ParseError& e) {
+            EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+        }
+    };
+    expect_error(replaced_once(vtk_polyhedron, ">17<", ">16<"), "faceoffset");
+    expect_error(replaced_once(vtk_polyhedron, "3 0 2 3\n", "3 0 2 9\n"), "node ids from 0 to 3");
+    expect_error(replaced_once(vtk_polyhedron, "3 0 2 3\n", "3 0 1 3\n"), "faces that close polyhedron 0");
+    expect_error(replaced_once(vtk_polyhedron, "4 3 0 1 2", "3 3 0 1 2"), "polyhedron 0");
+    expect_error(replaced_once(vtk_polyhedron, "<DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">17</DataArray>", ""),
+                 "faceoffsets");
 }

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <vector>
+
 #include "dgwarp/core/error.hpp"
 
 using namespace dgwarp;
@@ -129,4 +132,95 @@ TEST(Mesh, BoundingBoxAndTypeCounts) {
     const auto counts = count_by_type(m.cells);
     EXPECT_EQ(counts[static_cast<int>(CellType::triangle)], 2);
     EXPECT_EQ(counts[static_cast<int>(CellType::quadrilateral)], 0);
+}
+
+// ---- polygons and polyhedra ------------------------------------------------
+
+namespace {
+
+/// Two unit cubes side by side (x in [0,2]) as two polyhedra, faces outward,
+/// the shared face x = 1 once each way; markers: the left face, a polygon.
+Mesh two_cube_polyhedra() {
+    Mesh m;
+    m.dim = 3;
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 3; ++i) m.points.insert(m.points.end(), {double(i), double(j), double(k)});
+    const auto id = [](int i, int j, int k) { return static_cast<NodeId>(i + 3 * j + 6 * k); };
+    for (int c = 0; c < 2; ++c) {
+        const NodeId n[8] = {id(c, 0, 0), id(c + 1, 0, 0), id(c + 1, 1, 0), id(c, 1, 0),
+                             id(c, 0, 1), id(c + 1, 0, 1), id(c + 1, 1, 1), id(c, 1, 1)};
+        const std::vector<NodeId> rings{n[0], n[3], n[2], n[1], n[4], n[5], n[6], n[7], n[0], n[1], n[5], n[4],
+                                        n[1], n[2], n[6], n[5], n[2], n[3], n[7], n[6], n[3], n[0], n[4], n[7]};
+        m.cells.push_polyhedron(rings, std::vector<int>(6, 4));
+    }
+    Marker left{"left", {}};
+    left.elements.push_back(CellType::polygon, std::array<NodeId, 4>{id(0, 0, 0), id(0, 0, 1), id(0, 1, 1), id(0, 1, 0)});
+    m.markers.push_back(left);
+    return m;
+}
+
+}  // namespace
+
+TEST(MeshPolyhedra, PushKeepsFacesAndDistinctNodesInFirstSeenOrder) {
+    const Mesh m = two_cube_polyhedra();
+    ASSERT_EQ(m.cells.size(), 2u);
+    EXPECT_TRUE(m.cells.has_faces());
+    EXPECT_EQ(m.cells.types[1], CellType::polyhedron);
+    const auto nodes = m.cells.nodes_of(0);
+    EXPECT_EQ(std::vector<NodeId>(nodes.begin(), nodes.end()), (std::vector<NodeId>{0, 3, 4, 1, 6, 7, 10, 9}));
+    const auto [f0, f1] = m.cells.faces_of(1);
+    EXPECT_EQ(f0, 6);
+    EXPECT_EQ(f1, 12);
+    const auto ring = m.cells.face_nodes_of(7);  // cell 1's top face
+    EXPECT_EQ(std::vector<NodeId>(ring.begin(), ring.end()), (std::vector<NodeId>{7, 8, 11, 10}));
+    EXPECT_NO_THROW(validate(m));
+    // A fixed-type element after a polyhedron keeps the face index in step.
+    Mesh more = m;
+    more.cells.push_back(CellType::tetrahedron, std::array<NodeId, 4>{0, 1, 3, 6});
+    EXPECT_EQ(more.cells.faces_of(2).first, more.cells.faces_of(2).second);
+    EXPECT_NO_THROW(validate(more));
+    // copy_element and for_each_node_id carry the faces.
+    ElementList copy;
+    copy_element(m.cells, 1, copy);
+    EXPECT_EQ(copy.face_nodes, std::vector<NodeId>(m.cells.face_nodes.begin() + 24, m.cells.face_nodes.end()));
+    for_each_node_id(copy, [](NodeId& n) { n += 100; });
+    EXPECT_EQ(copy.face_nodes_of(1)[0], 107);
+    EXPECT_EQ(copy.nodes_of(0)[0], 101);
+}
+
+TEST(MeshPolyhedra, ValidateNamesBadPolyhedraAndPolygons) {
+    {
+        Mesh m = two_cube_polyhedra();
+        m.cells.face_nodes[5] = 2;  // a face of cell 0 names a node not among its 8
+        try {
+            validate(m);
+            FAIL();
+        } catch (const MeshError& e) {
+            EXPECT_NE(std::string(e.what()).find("cell element 0 (polyhedron): a face names node 2"), std::string::npos)
+                << e.what();
+        }
+    }
+    {
+        Mesh m = two_cube_polyhedra();
+        ElementList three;  // 3 faces only
+        three.push_polyhedron(std::vector<NodeId>{0, 1, 3, 0, 3, 6, 0, 6, 1}, std::vector<int>{3, 3, 3});
+        m.cells = three;
+        EXPECT_THROW(validate(m), MeshError);
+    }
+    {
+        Mesh m = two_cube_polyhedra();
+        m.markers[0].elements.push_back(CellType::polygon, std::array<NodeId, 3>{0, 1, 2});
+        m.markers[0].elements.offsets.back() -= 1;  // a polygon of 2 nodes
+        m.markers[0].elements.nodes.pop_back();
+        EXPECT_THROW(validate(m), MeshError);
+    }
+    // Formats without polygons or polyhedra say which element and where to go.
+    try {
+        check_fixed_cell_types(two_cube_polyhedra(), "SU2");
+        FAIL();
+    } catch (const MeshError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "cell 0 is a polyhedron, which SU2 files cannot hold (write .vtu, .cgns or an OpenFOAM case)");
+    }
 }

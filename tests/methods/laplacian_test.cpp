@@ -10,9 +10,11 @@
 
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
+#include "support/test_paths.hpp"
 
 using namespace dgwarp;
 
@@ -134,6 +136,44 @@ TEST(Laplacian, ConstantStiffnessIsExactOnAffineBoundaryMotions) {
                 for (int c = 0; c < dim; ++c) expected += a[r][c] * g.mesh.points[n * dim + c];
                 ASSERT_NEAR(out[n * dim + r], expected, 1e-12) << "node " << n;
             }
+    }
+}
+
+TEST(Laplacian, PolyhedraAreSplitConformingly) {
+    // snappyHexMesh's sphere in a box (tests/data/openfoam): 272 polyhedra
+    // with faces of 3 to 6 nodes beside hexahedra. The split shares each face
+    // centre between its two cells (polygons of 5 and 6 nodes too), so an
+    // affine motion of every boundary node is reproduced exactly inside.
+    GridCase g;
+    g.mesh = read_openfoam(test::source_dir() / "tests" / "data" / "openfoam" / "snappy-sphere");
+    ASSERT_GT(count_by_type(g.mesh.cells)[static_cast<std::size_t>(CellType::polyhedron)], 0);
+    std::vector<NodeId> nodes;
+    for (const Marker& m : g.mesh.markers) {
+        const std::vector<NodeId> n = marker_nodes(m);
+        nodes.insert(nodes.end(), n.begin(), n.end());
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    g.boundary.nodes = nodes;
+    g.boundary.moving.assign(nodes.size(), 1);
+    const double a[3][3] = {{0.10, -0.05, 0.02}, {0.03, 0.08, -0.04}, {-0.02, 0.05, 0.06}};
+    const Vec3 b{0.01, -0.02, 0.03};
+    for (auto model : {LaplacianModel::laplacian, LaplacianModel::elasticity}) {
+        LaplacianOptions o;
+        o.model = model;
+        o.stiffness_exponent = 0;
+        o.increments = 1;
+        const std::vector<double> out = laplacian_step(g, affine_motion(g, a, b), o);
+        std::size_t interior = 0;
+        for (std::size_t n = 0; n < g.mesh.num_points(); ++n) {
+            interior += !std::binary_search(nodes.begin(), nodes.end(), static_cast<NodeId>(n));
+            for (int r = 0; r < 3; ++r) {
+                double expected = g.mesh.points[n * 3 + r] + b[r];
+                for (int c = 0; c < 3; ++c) expected += a[r][c] * g.mesh.points[n * 3 + c];
+                ASSERT_NEAR(out[n * 3 + r], expected, 1e-12) << "node " << n << ", model " << int(model);
+            }
+        }
+        EXPECT_GT(interior, 300u);
     }
 }
 

@@ -248,13 +248,15 @@ int element_type(CellType t) {
         case CellType::hexahedron: return CGNS_ENUMV(HEXA_8);
         case CellType::prism: return CGNS_ENUMV(PENTA_6);
         case CellType::pyramid: return CGNS_ENUMV(PYRA_5);
+        case CellType::polygon: return CGNS_ENUMV(NGON_n);
+        case CellType::polyhedron: return CGNS_ENUMV(NFACE_n);
     }
     return CGNS_ENUMV(ElementTypeNull);
 }
 
 bool cell_type_of(int cgns_type, CellType& t) {
-    for (CellType c : all_cell_types)
-        if (element_type(c) == cgns_type) {
+    for (CellType c : all_cell_types)  // the fixed types: NGON_n and NFACE_n are sections of their own
+        if (!has_any_node_count(c) && element_type(c) == cgns_type) {
             t = c;
             return true;
         }

@@ -222,6 +222,7 @@ void write_22(std::ostream& out, const Mesh& mesh) {
 
 void check_gmsh_writable(const Mesh& mesh) {
     validate(mesh);
+    check_fixed_cell_types(mesh, "Gmsh");
     for (const Marker& m : mesh.markers) {
         if (m.name.find_first_of("\"\n\r") != std::string::npos)
             throw MeshError("marker name '" + m.name + "' cannot be written to a Gmsh file (it contains a double "

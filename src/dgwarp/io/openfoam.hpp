@@ -5,10 +5,11 @@
 //
 // Reading: the cells are rebuilt from the faces, owner and neighbour lists as
 // tetrahedra, pyramids, prisms and hexahedra in VTK node order with positive
-// orientation (polyhedra are refused: the Mesh cannot hold them); cell i is
-// OpenFOAM's cell i and point i OpenFOAM's point i. Every patch becomes a
-// marker of the same name, its faces (triangles and quadrilaterals, in file
-// order, nodes as written: their normals point out of the mesh) its elements.
+// orientation, any other cell (snappyHexMesh's split hexahedra, tetWedges) a
+// polyhedron with its faces; cell i is OpenFOAM's cell i and point i
+// OpenFOAM's point i. Every patch becomes a marker of the same name, its
+// faces (triangles, quadrilaterals and polygons, in file order, nodes as
+// written: their normals point out of the mesh) its elements.
 // OpenFOAM meshes are 3D, also those of 2D cases (one cell thick): dim is 3.
 //
 // Writing: write_openfoam writes a whole polyMesh from any 3D Mesh; for a mesh
@@ -168,8 +169,7 @@ std::filesystem::path openfoam_output_poly_mesh(const std::filesystem::path& pat
 /// number of faces, patches that do not cover the boundary faces in order), a
 /// face with fewer than 3 points or a point index out of range, an owner or
 /// neighbour out of range, a cell whose faces do not close it; FormatError for
-/// binary files of another label or scalar size and for polyhedral cells
-/// (how many, the first one and the line of one of its faces); MeshError when
+/// binary files of another label or scalar size; MeshError when
 /// the result fails validate(). `progress` gets the fraction of the bytes read.
 Mesh read_openfoam(const std::filesystem::path& path, const ProgressFn& progress = {},
                    OpenFoamSource* source = nullptr);

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
@@ -35,6 +36,28 @@ const FaceTable& outward_faces(CellType type) {
         case CellType::hexahedron: return hex;
         default: return none;
     }
+}
+
+void push_canonical_polyhedron(std::span<const NodeId> rings, std::span<const int> sizes, ElementList& out) {
+    // Each face as a cycle from its smallest node, the faces in the order of those cycles.
+    std::vector<std::vector<NodeId>> faces;
+    std::size_t at = 0;
+    for (int size : sizes) {
+        const auto ring = rings.subspan(at, static_cast<std::size_t>(size));
+        const std::size_t first = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+        std::vector<NodeId> cycle(ring.size());
+        for (std::size_t k = 0; k < ring.size(); ++k) cycle[k] = ring[(first + k) % ring.size()];
+        faces.push_back(std::move(cycle));
+        at += static_cast<std::size_t>(size);
+    }
+    std::sort(faces.begin(), faces.end());
+    std::vector<NodeId> sorted;
+    std::vector<int> sorted_sizes;
+    for (const auto& f : faces) {
+        sorted.insert(sorted.end(), f.begin(), f.end());
+        sorted_sizes.push_back(static_cast<int>(f.size()));
+    }
+    out.push_polyhedron(sorted, sorted_sizes);
 }
 
 namespace {
@@ -230,48 +253,68 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
 
     ElementList cells;
     cells.reserve(static_cast<std::size_t>(num_cells), 8);
-    std::int64_t polyhedra = 0, first_polyhedron = -1;
+    std::vector<NodeId> rings;
+    std::vector<int> sizes;
+    std::vector<std::pair<NodeId, NodeId>> edges, reversed;
     for (std::int64_t c = 0; c < num_cells; ++c) {
         const std::int64_t count = start[c + 1] - start[c];
         if (count == 0)
             throw ParseError(where.owner_file, 0, "every cell from 0 to " + std::to_string(num_cells - 1) +
                                                       " (the largest in owner and neighbour) to own or neighbour faces",
                              "cell " + std::to_string(c) + " has none");
-        CellFaces cf;
-        bool simple = count <= 6;
-        for (std::int64_t k = start[c]; k < start[c + 1] && simple; ++k) {
+        // The cell's faces pointing out of it: a face points out of its owner, the neighbour sees it reversed.
+        rings.clear();
+        sizes.clear();
+        for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
             const std::int64_t f = face_of(faces[k]);
             const auto size = static_cast<int>(mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
-            if (size > 4) {
-                simple = false;
-                break;
-            }
-            cf.size[cf.count] = size;
             for (int i = 0; i < size; ++i) {
-                // A face points out of its owner: the neighbour sees it reversed.
                 const int j = faces[k] >= 0 ? i : (size - i) % size;
-                cf.node[cf.count][i] = mesh.face_nodes[mesh.face_offsets[f] + j];
+                rings.push_back(mesh.face_nodes[mesh.face_offsets[f] + j]);
             }
-            ++cf.count;
+            sizes.push_back(size);
+        }
+        bool simple = count <= 6 && std::all_of(sizes.begin(), sizes.end(), [](int n) { return n <= 4; });
+        CellFaces cf;
+        if (simple) {
+            std::size_t at = 0;
+            for (int size : sizes) {
+                cf.size[cf.count] = size;
+                for (int i = 0; i < size; ++i) cf.node[cf.count][i] = rings[at++];
+                ++cf.count;
+            }
         }
         const OrderedCell oc = simple ? order_cell(cf) : OrderedCell{};
-        if (oc.shape == CellShape::polyhedron) {
-            if (polyhedra++ == 0) first_polyhedron = c;
-            continue;
-        }
         if (oc.shape == CellShape::not_closed)
             throw ParseError(where.faces_file, line_of(c),
                              "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
                                  ", oriented by owner and neighbour) to close a " + std::string(cell_type_name(oc.type)),
                              "faces that do not");
-        if (polyhedra == 0) cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
+        if (oc.shape == CellShape::ok) {
+            cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
+            continue;
+        }
+        // A polyhedron: closed when each edge of its faces is met once each way.
+        edges.clear();
+        reversed.clear();
+        std::size_t at = 0;
+        for (int size : sizes) {
+            for (int i = 0; i < size; ++i) {
+                const NodeId a = rings[at + static_cast<std::size_t>(i)], b = rings[at + static_cast<std::size_t>((i + 1) % size)];
+                edges.emplace_back(a, b);
+                reversed.emplace_back(b, a);
+            }
+            at += static_cast<std::size_t>(size);
+        }
+        std::sort(edges.begin(), edges.end());
+        std::sort(reversed.begin(), reversed.end());
+        if (count < 4 || edges != reversed || std::adjacent_find(edges.begin(), edges.end()) != edges.end())
+            throw ParseError(where.faces_file, line_of(c),
+                             "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
+                                 ", oriented by owner and neighbour) to close a polyhedron (each edge once each way)",
+                             "faces that do not");
+        push_canonical_polyhedron(rings, sizes, cells);
     }
-    if (polyhedra > 0)
-        throw FormatError(where.faces_file + ":" + std::to_string(line_of(first_polyhedron)) + ": " +
-                          std::to_string(polyhedra) + " of the " + std::to_string(num_cells) +
-                          " cells are polyhedra (the first: cell " + std::to_string(first_polyhedron) + ", faces " +
-                          face_list(first_polyhedron) +
-                          "); dgwarp's meshes hold tetrahedra, pyramids, prisms and hexahedra only");
     return cells;
 }
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 #include <system_error>
+#include <unordered_map>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/openfoam.hpp"
@@ -168,6 +169,24 @@ OpenFoamProcessorMesh read_openfoam_processor(const fs::path& dir) {
     ElementList cells;
     cells.reserve(m.cells.size(), 8);
     for (std::size_t c = 0; c < m.cells.size(); ++c) {
+        if (m.cells.types[c] == CellType::polyhedron) {
+            // Ordered over the case's point ids, as read_openfoam_decomposed orders it.
+            const auto [f0, f1] = m.cells.faces_of(c);
+            std::vector<NodeId> rings;
+            std::vector<int> sizes;
+            for (std::int64_t f = f0; f < f1; ++f) {
+                for (NodeId n : m.cells.face_nodes_of(f)) rings.push_back(point_of[static_cast<std::size_t>(n)]);
+                sizes.push_back(static_cast<int>(m.cells.face_nodes_of(f).size()));
+            }
+            ElementList global;
+            foam::push_canonical_polyhedron(rings, sizes, global);
+            // Back to the processor's ids.
+            std::unordered_map<NodeId, NodeId> local_of;
+            for (NodeId n : m.cells.nodes_of(c)) local_of[point_of[static_cast<std::size_t>(n)]] = n;
+            for_each_node_id(global, [&](NodeId& n) { n = local_of.at(n); });
+            copy_element(global, 0, cells);
+            continue;
+        }
         const foam::OrderedCell oc = case_ordered_cell(m, c, point_of, dir / "pointProcAddressing");
         const auto nodes = m.cells.nodes_of(c);
         std::array<NodeId, 8> local{};
@@ -240,10 +259,13 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
                          "every point from 0 to " + str(num_points - 1) + " in some processor's pointProcAddressing",
                          "no point " + str(it - from.begin()));
 
-    // Cells in the case's order, each renumbered and put back in the reader's node order.
+    // Cells in the case's order, each renumbered and put back in the reader's
+    // node order (a polyhedron: renumbered, its faces in its processor's order).
     struct Cell {
         CellType type = CellType::tetrahedron;
         std::array<NodeId, 8> node{};
+        std::int32_t part = -1;  // the processor of a polyhedron, its cell there in `local`
+        std::int64_t local = 0;
         bool set = false;
     };
     std::vector<Cell> cells(static_cast<std::size_t>(num_cells));
@@ -255,13 +277,37 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
                 throw ParseError((meshes[p] / "cellProcAddressing").string(), 0,
                                  "each cell of the case from 0 to " + str(num_cells - 1) + " once over the processors",
                                  "cell " + str(g) + (g < num_cells ? " again" : ""));
+            Cell& cell = cells[static_cast<std::size_t>(g)];
+            cell.set = true;
+            if (m.cells.types[c] == CellType::polyhedron) {
+                cell.type = CellType::polyhedron;
+                cell.part = static_cast<std::int32_t>(p);
+                cell.local = static_cast<std::int64_t>(c);
+                continue;
+            }
             const foam::OrderedCell oc =
                 case_ordered_cell(m, c, parts[p].point_of, meshes[p] / "pointProcAddressing");
-            cells[static_cast<std::size_t>(g)] = {oc.type, oc.node, true};
+            cell.type = oc.type;
+            cell.node = oc.node;
         }
     }
     mesh.cells.reserve(cells.size(), 8);
-    for (const Cell& c : cells) mesh.cells.push_back(c.type, {c.node.data(), static_cast<std::size_t>(nodes_per_cell(c.type))});
+    for (const Cell& c : cells) {
+        if (c.type != CellType::polyhedron) {
+            mesh.cells.push_back(c.type, {c.node.data(), static_cast<std::size_t>(nodes_per_cell(c.type))});
+            continue;
+        }
+        const ProcessorPart& part = parts[static_cast<std::size_t>(c.part)];
+        const ElementList& from = part.part.mesh.cells;
+        const auto [f0, f1] = from.faces_of(static_cast<std::size_t>(c.local));
+        std::vector<NodeId> rings;
+        std::vector<int> sizes;
+        for (std::int64_t f = f0; f < f1; ++f) {
+            for (NodeId n : from.face_nodes_of(f)) rings.push_back(part.point_of[static_cast<std::size_t>(n)]);
+            sizes.push_back(static_cast<int>(from.face_nodes_of(f).size()));
+        }
+        foam::push_canonical_polyhedron(rings, sizes, mesh.cells);
+    }
 
     // Markers: processor 0's patches (not the processor ones); every processor has the same.
     const auto patch_names = [](const foam::PolyMeshPart& part) {
@@ -298,7 +344,7 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
         Marker marker{names[m], {}};
         marker.elements.reserve(faces.size(), 4);
         for (const auto& [face, nodes] : faces)
-            marker.elements.push_back(nodes.size() == 3 ? CellType::triangle : CellType::quadrilateral, nodes);
+            marker.elements.push_back(polygon_type(nodes.size()), nodes);
         mesh.markers.push_back(std::move(marker));
     }
     validate(mesh);

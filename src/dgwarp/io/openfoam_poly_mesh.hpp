@@ -71,8 +71,7 @@ PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, PolyMeshFiles
 /// once its files are parsed; the OpenFOAM motion solver gives OpenFOAM's own
 /// arrays): cells_from_faces (errors name `where`'s files and lines, or line 0
 /// when where.line is empty), a marker per patch other than the processor
-/// patches, and the processor patches' nodes. Throws FormatError for
-/// polyhedra, MeshError from validate.
+/// patches, and the processor patches' nodes. Throws MeshError from validate.
 PolyMeshPart poly_mesh_part(PolyMesh&& pm, std::int64_t num_cells, const FaceLines& where, Format points_format);
 
 /// The file dir/name, or dir/name.gz uncompressed (IoError when neither can be read).
@@ -127,11 +126,18 @@ struct OrderedCell {
 /// four types; `not_closed` when they are but do not close such a cell.
 OrderedCell order_cell(const CellFaces& faces);
 
+/// Appends the polyhedron of outward faces `rings` (sizes: their node counts)
+/// in a canonical form that depends only on its faces as cycles: each face
+/// starts at its smallest node id, and the faces are sorted (as sequences of
+/// node ids). A polyMesh written from it and read back gives it again, and a
+/// decomposed case's processors give the serial case's cells.
+void push_canonical_polyhedron(std::span<const NodeId> rings, std::span<const int> sizes, ElementList& out);
+
 /// The Mesh's cells from the polyMesh (cell c: the faces that c owns or
-/// neighbours). Throws FormatError (naming how many cells and the first one,
-/// and the line of one of its faces) when some cells are not tetrahedra,
-/// pyramids, prisms or hexahedra, and ParseError when a cell's faces do not
-/// close it.
+/// neighbours): tetrahedra, pyramids, prisms and hexahedra (order_cell), any
+/// other cell a polyhedron with its faces pointing out of it
+/// (push_canonical_polyhedron). Throws ParseError naming a line of one of its
+/// faces when a cell's faces do not close it.
 ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const FaceLines& where);
 
 /// The polyMesh of a 3D Mesh: internal faces from the cells (owner < neighbour,

@@ -431,8 +431,8 @@ foam::PolyMeshPart foam::poly_mesh_part(PolyMesh&& pm, std::int64_t num_cells, c
         for (std::int64_t f = patch.start; f < patch.start + patch.size; ++f) {
             const std::span<const NodeId> nodes(pm.face_nodes.data() + pm.face_offsets[f],
                                                 static_cast<std::size_t>(pm.face_offsets[f + 1] - pm.face_offsets[f]));
-            // A boundary face bounds one of the cells built: a triangle or a quadrilateral.
-            marker.elements.push_back(nodes.size() == 3 ? CellType::triangle : CellType::quadrilateral, nodes);
+            // A boundary face: a triangle, a quadrilateral or (a polyhedron's) a polygon.
+            marker.elements.push_back(polygon_type(nodes.size()), nodes);
         }
         mesh.markers.push_back(std::move(marker));
     }

@@ -146,10 +146,12 @@ std::string type_list(bool (*allowed)(CellType, int), int dim) {
     return s;
 }
 
-bool allowed_cell(CellType t, int dim) { return cell_dimension(t) == dim; }
+// SU2 has no polygons or polyhedra.
+bool allowed_cell(CellType t, int dim) { return cell_dimension(t) == dim && !has_any_node_count(t); }
 bool allowed_boundary(CellType t, int dim) {
-    return cell_dimension(t) == dim - 1 || (dim == 2 && t == CellType::vertex);
+    return (cell_dimension(t) == dim - 1 && !has_any_node_count(t)) || (dim == 2 && t == CellType::vertex);
 }
+bool su2_type(CellType t, int) { return !has_any_node_count(t); }
 
 /// The largest node id met so far and its line: checked against NPOIN once the
 /// zone is read, since NPOIN may come after the elements.
@@ -170,8 +172,8 @@ void read_element(TextReader& r, const Block& b, std::int64_t i, int dim, bool b
     const std::optional<CellType> type =
         (id >= 0 && id <= 255) ? cell_type_from_vtk_id(static_cast<int>(id)) : std::nullopt;
     const auto allowed = boundary ? allowed_boundary : allowed_cell;
-    if (!type) fail_in(r, b, i, "a known element type id (" + type_list([](CellType, int) { return true; }, dim) + ")",
-                       type_token);
+    if (!type || !su2_type(*type, dim))
+        fail_in(r, b, i, "a known element type id (" + type_list(su2_type, dim) + ")", type_token);
     if (!allowed(*type, dim))
         fail_in(r, b, i,
                 std::string(boundary ? "a boundary element" : "a cell") + " of a " + str(dim) + "D mesh (" +

@@ -53,6 +53,7 @@ void write_elements(std::ostream& out, const ElementList& elements, bool with_in
 
 void check_su2_writable(const Mesh& mesh) {
     validate(mesh);
+    check_fixed_cell_types(mesh, "SU2");
     check_marker_names(mesh);
 }
 

@@ -9,8 +9,10 @@
 // line breaks) of an 8-byte little-endian UInt64 byte count followed by that
 // many bytes of little-endian values. Arrays:
 //  - Points: Float64, 3 components (z = 0 for a 2D mesh);
-//  - Cells: connectivity Int64 (0-based node ids, VTK node order as in Mesh),
-//    offsets Int64 (end of each cell in connectivity), types UInt8 (vtk_cell_id);
+//  - Cells: connectivity Int64 (0-based node ids, VTK node order as in Mesh;
+//    a polyhedron's distinct nodes), offsets Int64 (end of each cell in
+//    connectivity), types UInt8 (vtk_cell_id); with polyhedra also VTK's
+//    faces and faceoffsets (Int64; see reading below);
 //  - PointData / CellData: one Float64 DataArray per Field, with the field's
 //    NumberOfComponents. ParaView shows 3-component arrays as vectors (glyphs,
 //    Warp By Vector), so pass displacements with 3 components, z = 0 in 2D.
@@ -20,7 +22,9 @@
 //    meshio cannot read; read_vtu takes either); DataArray Int64
 //    "dgwarp_marker_sizes" (M element counts); DataArray UInt8
 //    "dgwarp_marker_types" (the VTK id of every boundary element, marker after
-//    marker); DataArray Int64 "dgwarp_marker_connectivity" (their node ids).
+//    marker); DataArray Int64 "dgwarp_marker_connectivity" (their node ids);
+//    when a marker holds polygons, DataArray Int64 "dgwarp_marker_offsets"
+//    (the end of each element in the connectivity).
 // The markers are not cells of the grid: ParaView would draw each boundary
 // element over the face of the cell it bounds, coloured by its own cell data
 // (which a boundary element does not have), so the walls and the far field
@@ -31,8 +35,12 @@
 // or appended (raw or base64) format, header_type UInt32 or UInt64,
 // LittleEndian or BigEndian, uncompressed or compressor="vtkZLibDataCompressor";
 // any integer or float type; several Pieces (their points joined in order);
-// the linear cell types (vertex, line, triangle, pixel, quad, tetra, voxel,
-// hexahedron, wedge, pyramid). The mesh's dimension is the highest dimension
+// the linear cell types (vertex, line, triangle, polygon, pixel, quad, tetra,
+// voxel, hexahedron, wedge, pyramid) and polyhedra (VTK_POLYHEDRON, 42: the
+// <Cells> arrays "faces", per polyhedron its face count then each face's node
+// count and nodes, and "faceoffsets", the end of each cell's part of "faces"
+// or -1; the faces are turned to point out of the cell, as VTK's files do not
+// always have them). The mesh's dimension is the highest dimension
 // of its cells (a 2D mesh must lie in the z = 0 plane); its cells are the
 // cells of that dimension, in file order. Markers come from dgwarp's
 // FieldData; without it, from meshio's "gmsh:physical" cell data (the cells

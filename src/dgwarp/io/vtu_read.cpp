@@ -13,6 +13,7 @@
 #include "dgwarp/io/vtk_xml.hpp"
 #include "dgwarp/io/vtu.hpp"
 #include "dgwarp/io/vtu_data_array.hpp"
+#include "dgwarp/mesh/polyhedron_faces.hpp"
 
 namespace dgwarp {
 
@@ -43,8 +44,8 @@ std::optional<VtkCell> vtk_cell(std::int64_t id) {
 }
 
 constexpr const char* supported_cells =
-    "a linear VTK cell type (1 vertex, 3 line, 5 triangle, 8 pixel, 9 quad, 10 tetra, 11 voxel, 12 hexahedron, "
-    "13 wedge, 14 pyramid)";
+    "a linear VTK cell type (1 vertex, 3 line, 5 triangle, 7 polygon, 8 pixel, 9 quad, 10 tetra, 11 voxel, "
+    "12 hexahedron, 13 wedge, 14 pyramid, 42 polyhedron)";
 
 // The arrays of dgwarp's markers, in the grid's <FieldData> (see vtu.hpp).
 constexpr const char* marker_arrays[] = {"dgwarp_marker_names", "dgwarp_marker_sizes", "dgwarp_marker_types",
@@ -240,10 +241,12 @@ private:
             if (!k) vtu::fail_at(enc_, types_ref, supported_cells, "type " + str(types[i]) + " (cell " + str(static_cast<std::int64_t>(i)) + ")");
             kinds[i] = *k;
             const int nodes = nodes_per_cell(k->type);
-            if (offsets[i] < end || offsets[i] - end != nodes)
+            const int least = k->type == CellType::polygon ? 3 : 4;  // polygons and polyhedra
+            if (offsets[i] < end || (nodes > 0 && offsets[i] - end != nodes) || (nodes == 0 && offsets[i] - end < least))
                 vtu::fail_at(enc_, offsets_ref,
                              "offsets that give cell " + str(static_cast<std::int64_t>(i)) + " (VTK type " + str(types[i]) + ", " +
-                                 std::string(cell_type_name(k->type)) + ") its " + str(nodes) + " nodes",
+                                 std::string(cell_type_name(k->type)) + ") its " +
+                                 (nodes > 0 ? str(nodes) : "at least " + str(least)) + " nodes",
                              "offset " + str(offsets[i]) + " after " + str(end));
             end = offsets[i];
         }
@@ -256,14 +259,21 @@ private:
                              str(conn[k]) + " (connectivity value " + str(static_cast<std::int64_t>(k)) + ")");
         report_after(*conn_ref.element);
 
+        const PolyhedronFaces faces = read_polyhedron_faces(*cell_section, kinds, num_points, where);
         cells.elements.reserve(cells.elements.size() + n, 4);
-        NodeId nodes[8];
+        std::vector<NodeId> nodes;
         for (std::size_t i = 0; i < n; ++i) {
-            const int count = nodes_per_cell(kinds[i].type);
-            const std::int64_t* c = conn.data() + (offsets[i] - count);
-            for (int k = 0; k < count; ++k)
+            const std::int64_t first = i == 0 ? 0 : offsets[i - 1];
+            const auto count = static_cast<std::size_t>(offsets[i] - first);
+            const std::int64_t* c = conn.data() + first;
+            if (kinds[i].type == CellType::polyhedron) {
+                polyhedron_of(faces, i, {c, count}, static_cast<NodeId>(first_point), xyz, cells.elements);
+                continue;
+            }
+            nodes.resize(count);
+            for (std::size_t k = 0; k < count; ++k)
                 nodes[k] = static_cast<NodeId>(first_point) + static_cast<NodeId>(c[kinds[i].order ? kinds[i].order[k] : k]);
-            cells.elements.push_back(kinds[i].type, {nodes, static_cast<std::size_t>(count)});
+            cells.elements.push_back(kinds[i].type, nodes);
         }
 
         // meshio's boundary tags, read only while every piece has them.
@@ -276,6 +286,87 @@ private:
         } else if (n > 0) {
             cells.physical_complete = false;
         }
+    }
+
+    /// A piece's polyhedra (VTK's "faces" and "faceoffsets" arrays of
+    /// <Cells>): per cell the start and end of its face stream (-1 for cells
+    /// that are not polyhedra), every value checked.
+    struct PolyhedronFaces {
+        std::vector<std::int64_t> stream, first, end;
+        vtu::ArrayRef ref{};
+    };
+    PolyhedronFaces read_polyhedron_faces(const xml::Element& cell_section, const std::vector<VtkCell>& kinds,
+                                          std::int64_t num_points, const std::string& where) const {
+        PolyhedronFaces f;
+        const std::size_t n = kinds.size();
+        if (std::none_of(kinds.begin(), kinds.end(), [](const VtkCell& k) { return k.type == CellType::polyhedron; }))
+            return f;
+        const vtu::ArrayRef offsets_ref = data_array(cell_section, "faceoffsets", where);
+        f.ref = data_array(cell_section, "faces", where);
+        const std::vector<std::int64_t> ends = vtu::read_integers(enc_, offsets_ref, n, "NumberOfCells " + str(static_cast<std::int64_t>(n)));
+        std::int64_t at = 0;
+        f.first.assign(n, -1);
+        f.end.assign(n, -1);
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool polyhedron = kinds[i].type == CellType::polyhedron;
+            if (!polyhedron) {
+                if (ends[i] != -1 && ends[i] != at)
+                    vtu::fail_at(enc_, offsets_ref, "-1 for cell " + str(static_cast<std::int64_t>(i)) + ", not a polyhedron",
+                                 str(ends[i]));
+                continue;
+            }
+            if (ends[i] < at + 5)  // a face count and at least 4 faces... of at least 3 nodes: checked below
+                vtu::fail_at(enc_, offsets_ref,
+                             "the end of polyhedron " + str(static_cast<std::int64_t>(i)) + "'s faces after " + str(at),
+                             str(ends[i]));
+            f.first[i] = at;
+            f.end[i] = at = ends[i];
+        }
+        f.stream = vtu::read_integers(enc_, f.ref, static_cast<std::size_t>(at), "the last of faceoffsets, " + str(at));
+        for (std::size_t i = 0; i < n; ++i) {
+            if (f.first[i] < 0) continue;
+            const std::string cell = "polyhedron " + str(static_cast<std::int64_t>(i));
+            std::int64_t k = f.first[i];
+            const std::int64_t count = f.stream[static_cast<std::size_t>(k++)];
+            if (count < 4) vtu::fail_at(enc_, f.ref, "at least 4 faces of " + cell, str(count));
+            for (std::int64_t face = 0; face < count; ++face) {
+                if (k >= f.end[i]) vtu::fail_at(enc_, f.ref, str(count) + " faces of " + cell, "the end of its faces after " + str(face));
+                const std::int64_t size = f.stream[static_cast<std::size_t>(k++)];
+                if (size < 3 || size > f.end[i] - k)
+                    vtu::fail_at(enc_, f.ref, "a face of 3 or more nodes within the faces of " + cell, str(size) + " nodes");
+                for (std::int64_t j = 0; j < size; ++j, ++k) {
+                    const std::int64_t v = f.stream[static_cast<std::size_t>(k)];
+                    if (v < 0 || v >= num_points)
+                        vtu::fail_at(enc_, f.ref, "node ids from 0 to " + str(num_points - 1) + " in the faces of " + cell, str(v));
+                }
+            }
+            if (k != f.end[i])
+                vtu::fail_at(enc_, f.ref, "the faces of " + cell + " to end at its faceoffset " + str(f.end[i]), "value " + str(k));
+        }
+        return f;
+    }
+
+    /// Polyhedron i of a piece from its face stream, the faces turned out of
+    /// it; its point list (`listed`) must hold the faces' nodes.
+    void polyhedron_of(const PolyhedronFaces& f, std::size_t i, std::span<const std::int64_t> listed, NodeId first_point,
+                       const std::vector<double>& xyz, ElementList& out) const {
+        std::vector<NodeId> rings;
+        std::vector<int> sizes;
+        const std::string cell = "polyhedron " + str(static_cast<std::int64_t>(i));
+        std::int64_t k = f.first[i] + 1;
+        while (k < f.end[i]) {
+            const auto size = static_cast<int>(f.stream[static_cast<std::size_t>(k++)]);
+            sizes.push_back(size);
+            for (int j = 0; j < size; ++j, ++k) {
+                const std::int64_t v = f.stream[static_cast<std::size_t>(k)];
+                if (std::find(listed.begin(), listed.end(), v) == listed.end())
+                    vtu::fail_at(enc_, f.ref, "faces of " + cell + " on the points its connectivity lists", "node " + str(v));
+                rings.push_back(first_point + static_cast<NodeId>(v));
+            }
+        }
+        if (const auto why = orient_polyhedron_faces(rings, sizes, xyz))
+            vtu::fail_at(enc_, f.ref, "faces that close " + cell, *why);
+        out.push_polyhedron(rings, sizes);
     }
 
     /// dgwarp's markers from the grid's <FieldData>; false when it holds none.
@@ -309,13 +400,31 @@ private:
         const std::vector<std::int64_t> types = vtu::read_integers(
             enc_, types_ref, static_cast<std::size_t>(num_elements), "the sum of dgwarp_marker_sizes");
         std::vector<CellType> kinds(types.size());
+        // Each element's end in the connectivity: from its type, or (polygons:
+        // any number of nodes) from dgwarp_marker_offsets.
+        std::vector<std::int64_t> ends(types.size());
+        const xml::Element* offsets_array = array_named(*field, "dgwarp_marker_offsets");
+        const vtu::ArrayRef offsets_ref{offsets_array, "DataArray 'dgwarp_marker_offsets' of <FieldData>"};
+        const std::vector<std::int64_t> given =
+            offsets_array ? vtu::read_integers(enc_, offsets_ref, types.size(), "the sum of dgwarp_marker_sizes")
+                          : std::vector<std::int64_t>{};
         std::int64_t num_nodes = 0;
         for (std::size_t i = 0; i < types.size(); ++i) {
             const std::optional<CellType> t =
                 types[i] >= 0 && types[i] <= 255 ? cell_type_from_vtk_id(static_cast<int>(types[i])) : std::nullopt;
-            if (!t) vtu::fail_at(enc_, types_ref, supported_cells, "type " + str(types[i]) + " (element " + str(static_cast<std::int64_t>(i)) + ")");
+            if (!t || *t == CellType::polyhedron)
+                vtu::fail_at(enc_, types_ref, supported_cells, "type " + str(types[i]) + " (element " + str(static_cast<std::int64_t>(i)) + ")");
             kinds[i] = *t;
-            num_nodes += nodes_per_cell(*t);
+            if (*t == CellType::polygon && !offsets_array)
+                fail(*field, "the array dgwarp_marker_offsets beside marker polygons (type 7)", "none");
+            const std::int64_t count = offsets_array ? given[i] - num_nodes : nodes_per_cell(*t);
+            if (count < (*t == CellType::polygon ? 3 : std::max(nodes_per_cell(*t), 1)) ||
+                (*t != CellType::polygon && count != nodes_per_cell(*t)))
+                vtu::fail_at(enc_, offsets_ref, "offsets that give marker element " + str(static_cast<std::int64_t>(i)) + " (" +
+                                 std::string(cell_type_name(*t)) + ") its nodes",
+                             str(offsets_array ? given[i] : 0));
+            num_nodes += count;
+            ends[i] = num_nodes;
         }
         const std::vector<std::int64_t> conn = vtu::read_integers(
             enc_, conn_ref, static_cast<std::size_t>(num_nodes), "the node counts of the dgwarp_marker_types");
@@ -323,10 +432,11 @@ private:
         for (std::size_t m = 0; m < names.size(); ++m) {
             Marker& marker = mesh.markers.emplace_back(Marker{names[m], {}});
             marker.elements.reserve(static_cast<std::size_t>(sizes[m]), 2);
-            NodeId nodes[8];
+            std::vector<NodeId> nodes;
             for (std::int64_t e = 0; e < sizes[m]; ++e, ++element) {
-                const int count = nodes_per_cell(kinds[element]);
-                for (int k = 0; k < count; ++k, ++at) {
+                const auto count = static_cast<std::size_t>(ends[element]) - at;
+                nodes.resize(count);
+                for (std::size_t k = 0; k < count; ++k, ++at) {
                     if (conn[at] < 0 || conn[at] >= num_points)
                         vtu::fail_at(enc_, conn_ref,
                                      "node ids from 0 to " + str(num_points - 1) + " (the points of every <Piece>)",
@@ -334,7 +444,7 @@ private:
                                          names[m] + "')");
                     nodes[k] = static_cast<NodeId>(conn[at]);
                 }
-                marker.elements.push_back(kinds[element], {nodes, static_cast<std::size_t>(count)});
+                marker.elements.push_back(kinds[element], nodes);
             }
         }
         return true;
@@ -364,8 +474,7 @@ private:
         }
         for (std::size_t i = 0; i < cells.elements.size(); ++i)
             if (cell_dimension(cells.elements.types[i]) == dim - 1)
-                mesh.markers[marker_of_tag.at(cells.physical[i])].elements.push_back(cells.elements.types[i],
-                                                                                     cells.elements.nodes_of(i));
+                copy_element(cells.elements, i, mesh.markers[marker_of_tag.at(cells.physical[i])].elements);
     }
 
     Mesh assemble(const xml::Element& grid, std::vector<double> xyz, Cells cells) {
@@ -397,8 +506,7 @@ private:
         // The cells of the highest dimension, in file order; the others are
         // boundary elements of meshio's markers or are dropped.
         for (std::size_t i = 0; i < cells.elements.size(); ++i)
-            if (cell_dimension(cells.elements.types[i]) == dim)
-                mesh.cells.push_back(cells.elements.types[i], cells.elements.nodes_of(i));
+            if (cell_dimension(cells.elements.types[i]) == dim) copy_element(cells.elements, i, mesh.cells);
         if (!read_dgwarp_markers(grid, static_cast<std::int64_t>(n), mesh) && cells.physical_complete &&
             !cells.physical.empty())
             read_physical_markers(grid, cells, dim, mesh);

@@ -182,6 +182,23 @@ void write_markers(std::ostream& out, const Mesh& mesh) {
     write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "dgwarp_marker_connectivity",
                                          .tuples = static_cast<std::int64_t>(nodes.size())},
                                    nodes.size(), [&](std::size_t i) { return nodes[i]; });
+    // Polygons have any number of nodes: then each element's end in the connectivity too.
+    bool polygons = false;
+    for (const Marker& m : mesh.markers)
+        polygons = polygons || std::find(m.elements.types.begin(), m.elements.types.end(), CellType::polygon) !=
+                                   m.elements.types.end();
+    if (polygons) {
+        std::vector<std::int64_t> ends;
+        ends.reserve(num_elements);
+        std::int64_t base = 0;
+        for (const Marker& m : mesh.markers) {
+            for (std::size_t e = 0; e < m.elements.size(); ++e) ends.push_back(base + m.elements.offsets[e + 1]);
+            base += m.elements.offsets.back();
+        }
+        write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "dgwarp_marker_offsets",
+                                             .tuples = static_cast<std::int64_t>(ends.size())},
+                                       ends.size(), [&](std::size_t i) { return ends[i]; });
+    }
     out << "    </FieldData>\n";
 }
 
@@ -234,6 +251,27 @@ void write_vtu(std::ostream& out, const Mesh& mesh, const MeshFields& fields) {
     for (CellType t : all_cell_types) vtk_id[static_cast<int>(t)] = static_cast<std::uint8_t>(vtk_cell_id(t));
     write_data_array<std::uint8_t>(out, {.vtk_type = "UInt8", .escaped_name = "types"}, num_cells,
                                    [&](std::size_t i) { return vtk_id[static_cast<int>(cells.types[i])]; });
+    if (cells.has_faces()) {
+        // Polyhedra as VTK's XML files hold them: per polyhedron a stream of
+        // its face count, then each face's node count and nodes, in "faces";
+        // per cell the end of its stream in "faceoffsets" (-1 for the others).
+        std::vector<std::int64_t> stream, ends(num_cells, -1);
+        for (std::size_t c = 0; c < num_cells; ++c) {
+            const auto [f0, f1] = cells.faces_of(c);
+            if (f1 == f0) continue;
+            stream.push_back(f1 - f0);
+            for (std::int64_t f = f0; f < f1; ++f) {
+                const auto ring = cells.face_nodes_of(f);
+                stream.push_back(static_cast<std::int64_t>(ring.size()));
+                stream.insert(stream.end(), ring.begin(), ring.end());
+            }
+            ends[c] = static_cast<std::int64_t>(stream.size());
+        }
+        write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "faces"}, stream.size(),
+                                       [&](std::size_t i) { return stream[i]; });
+        write_data_array<std::int64_t>(out, {.vtk_type = "Int64", .escaped_name = "faceoffsets"}, num_cells,
+                                       [&](std::size_t i) { return ends[i]; });
+    }
     out << "      </Cells>\n"
            "    </Piece>\n"
            "  </UnstructuredGrid>\n"

@@ -6,12 +6,13 @@ namespace dgwarp {
 
 std::string_view cell_type_name(CellType t) {
     constexpr std::string_view names[] = {"vertex",      "line",       "triangle", "quadrilateral",
-                                          "tetrahedron", "hexahedron", "prism",    "pyramid"};
+                                          "tetrahedron", "hexahedron", "prism",    "pyramid",
+                                          "polygon",     "polyhedron"};
     return names[static_cast<int>(t)];
 }
 
 int vtk_cell_id(CellType t) {
-    constexpr int ids[] = {1, 3, 5, 9, 10, 12, 13, 14};
+    constexpr int ids[] = {1, 3, 5, 9, 10, 12, 13, 14, 7, 42};
     return ids[static_cast<int>(t)];
 }
 

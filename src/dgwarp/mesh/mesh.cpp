@@ -8,10 +8,43 @@
 namespace dgwarp {
 
 void ElementList::push_back(CellType type, std::span<const NodeId> element_nodes) {
-    assert(static_cast<int>(element_nodes.size()) == nodes_per_cell(type));
+    assert(type != CellType::polyhedron);
+    assert(static_cast<int>(element_nodes.size()) == nodes_per_cell(type) ||
+           (type == CellType::polygon && element_nodes.size() >= 3));
     types.push_back(type);
     nodes.insert(nodes.end(), element_nodes.begin(), element_nodes.end());
     offsets.push_back(static_cast<std::int64_t>(nodes.size()));
+    if (!face_first.empty()) face_first.push_back(face_first.back());
+}
+
+void ElementList::push_polyhedron(std::span<const NodeId> rings, std::span<const int> face_sizes) {
+    if (face_first.empty()) face_first.assign(types.size() + 1, 0);
+    types.push_back(CellType::polyhedron);
+    const std::size_t first = nodes.size();
+    std::size_t k = 0;
+    for (int size : face_sizes) {
+        for (int j = 0; j < size; ++j, ++k) {
+            const NodeId n = rings[k];
+            face_nodes.push_back(n);
+            if (std::find(nodes.begin() + static_cast<std::ptrdiff_t>(first), nodes.end(), n) == nodes.end())
+                nodes.push_back(n);
+        }
+        face_offsets.push_back(static_cast<std::int64_t>(face_nodes.size()));
+    }
+    offsets.push_back(static_cast<std::int64_t>(nodes.size()));
+    face_first.push_back(static_cast<std::int64_t>(face_offsets.size() - 1));
+}
+
+void copy_element(const ElementList& from, std::size_t i, ElementList& to) {
+    if (from.types[i] != CellType::polyhedron) {
+        to.push_back(from.types[i], from.nodes_of(i));
+        return;
+    }
+    const auto [f0, f1] = from.faces_of(i);
+    std::vector<int> sizes;
+    for (std::int64_t f = f0; f < f1; ++f) sizes.push_back(static_cast<int>(from.face_nodes_of(f).size()));
+    const auto begin = from.face_offsets[static_cast<std::size_t>(f0)], end = from.face_offsets[static_cast<std::size_t>(f1)];
+    to.push_polyhedron({from.face_nodes.data() + begin, static_cast<std::size_t>(end - begin)}, sizes);
 }
 
 void ElementList::reserve(std::size_t n, int nodes_per_element) {
@@ -86,13 +119,38 @@ void check_elements(const ElementList& list, std::int64_t num_points, int expect
                     const std::string& what, const std::string& marker, bool vertices = false) {
     if (list.offsets.size() != list.size() + 1 || list.offsets.back() != static_cast<std::int64_t>(list.nodes.size()))
         throw MeshError(what + ": element offsets do not match the node list", marker);
+    if (!list.face_first.empty() &&
+        (list.face_first.size() != list.size() + 1 || list.face_first.back() + 1 != static_cast<std::int64_t>(list.face_offsets.size()) ||
+         list.face_offsets.back() != static_cast<std::int64_t>(list.face_nodes.size())))
+        throw MeshError(what + ": polyhedron face offsets do not match the face lists", marker);
     for (std::size_t i = 0; i < list.size(); ++i) {
         const CellType t = list.types[i];
         const auto nodes = list.nodes_of(i);
-        if (static_cast<int>(nodes.size()) != nodes_per_cell(t))
+        const bool count_ok = t == CellType::polygon      ? nodes.size() >= 3
+                              : t == CellType::polyhedron ? nodes.size() >= 4
+                                                          : static_cast<int>(nodes.size()) == nodes_per_cell(t);
+        if (!count_ok)
             throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) +
                                 ") has " + std::to_string(nodes.size()) + " nodes",
                             marker, static_cast<std::int64_t>(i));
+        const auto [f0, f1] = list.faces_of(i);
+        if ((t == CellType::polyhedron) != (f1 > f0) || (t == CellType::polyhedron && f1 - f0 < 4))
+            throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) + ") has " +
+                                std::to_string(f1 - f0) + " faces" +
+                                (t == CellType::polyhedron ? " (a polyhedron has at least 4)" : ""),
+                            marker, static_cast<std::int64_t>(i));
+        for (std::int64_t f = f0; f < f1; ++f) {
+            const auto ring = list.face_nodes_of(f);
+            if (ring.size() < 3)
+                throw MeshError(what + " element " + std::to_string(i) + " (polyhedron) has a face of " +
+                                    std::to_string(ring.size()) + " nodes",
+                                marker, static_cast<std::int64_t>(i));
+            for (NodeId n : ring)
+                if (std::find(nodes.begin(), nodes.end(), n) == nodes.end())
+                    throw MeshError(what + " element " + std::to_string(i) + " (polyhedron): a face names node " +
+                                        std::to_string(n) + ", not one of the cell's nodes",
+                                    marker, static_cast<std::int64_t>(i));
+        }
         if (cell_dimension(t) != expected_dim && !((expected_dim == 1 || vertices) && t == CellType::vertex))
             throw MeshError(what + " element " + std::to_string(i) + " is a " + std::string(cell_type_name(t)) +
                                 ", expected an element of dimension " + std::to_string(expected_dim),
@@ -132,6 +190,20 @@ void validate_as(const Mesh& mesh, bool point_cloud) {
 }  // namespace
 
 void validate(const Mesh& mesh) { validate_as(mesh, false); }
+
+void check_fixed_cell_types(const Mesh& mesh, std::string_view format) {
+    const auto refuse = [&](const std::string& what, CellType t, const std::string& marker, std::size_t i) {
+        throw MeshError(what + " " + std::to_string(i) + " is a " + std::string(cell_type_name(t)) + ", which " +
+                            std::string(format) + " files cannot hold (write .vtu, .cgns or an OpenFOAM case)",
+                        marker, static_cast<std::int64_t>(i));
+    };
+    for (std::size_t i = 0; i < mesh.cells.size(); ++i)
+        if (has_any_node_count(mesh.cells.types[i])) refuse("cell", mesh.cells.types[i], "", i);
+    for (const Marker& m : mesh.markers)
+        for (std::size_t i = 0; i < m.elements.size(); ++i)
+            if (has_any_node_count(m.elements.types[i]))
+                refuse("marker '" + m.name + "' element", m.elements.types[i], m.name, i);
+}
 
 void validate_point_cloud(const Mesh& mesh) { validate_as(mesh, true); }
 

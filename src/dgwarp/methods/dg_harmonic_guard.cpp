@@ -130,16 +130,6 @@ struct BlockMeasure {
     std::int64_t cell = -1;     // a cell of another type
 };
 
-/// A cell's metric as cell_shape_quality gives it, from its nodes.
-double exact_quality(int dim, CellType type, std::span<const NodeId> nodes, std::span<const double> points,
-                     int orientation) {
-    const auto d = static_cast<std::size_t>(dim);
-    std::array<double, 24> coords{};
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        for (std::size_t k = 0; k < d; ++k) coords[i * d + k] = points[static_cast<std::size_t>(nodes[i]) * d + k];
-    return cell_shape_quality(type, std::span<const double>(coords.data(), nodes.size() * d), dim, orientation);
-}
-
 CellType simplex_type(int dim) { return dim == 3 ? CellType::tetrahedron : CellType::triangle; }
 
 using guard_detail::kernel_block;
@@ -309,13 +299,7 @@ std::vector<std::int8_t> layout_orientations(const DgHarmonicGuard& g) {
     // not, that are not in it) are counted one by one, as dominant_orientations does.
     for (std::size_t c = 0; c < cells.size(); ++c) {
         if (g.judged[c] && cells.types[c] == simplex) continue;
-        std::array<double, 24> coords{};
-        const auto nodes = cells.nodes_of(c);
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-            for (std::size_t k = 0; k < d; ++k)
-                coords[i * d + k] = g.mesh.points[static_cast<std::size_t>(nodes[i]) * d + k];
-        balance[static_cast<std::size_t>(cells.types[c])] +=
-            cell_orientation(cells.types[c], std::span<const double>(coords.data(), nodes.size() * d), g.mesh.dim);
+        balance[static_cast<std::size_t>(cells.types[c])] += element_orientation(cells, c, g.mesh.dim, g.mesh.points);
     }
     std::vector<std::int8_t> orientation(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c)
@@ -343,8 +327,7 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
                 const std::int64_t first = (b - simplex_blocks) * pass_block;
                 for (std::int64_t i = first; i < std::min(others, first + pass_block); ++i) {
                     const auto c = static_cast<std::size_t>(g.other_cells[static_cast<std::size_t>(i)]);
-                    const double q = exact_quality(g.mesh.dim, cells.types[c], cells.nodes_of(c), points,
-                                                   g.orientations[c]);
+                    const double q = element_shape_quality(cells, c, g.mesh.dim, points, g.orientations[c]);
                     double key;
                     if (!(q > 0)) {
                         ++m.inverted;
@@ -373,7 +356,7 @@ GuardMeasure measure_for_guard(const DgHarmonicGuard& g, std::span<const double>
         out.min_quality = exact_simplex_quality(g, local, all.simplex, orientation);
     } else if (all.cell >= 0) {
         const auto c = static_cast<std::size_t>(all.cell);
-        out.min_quality = exact_quality(g.mesh.dim, cells.types[c], cells.nodes_of(c), points, g.orientations[c]);
+        out.min_quality = element_shape_quality(cells, c, g.mesh.dim, points, g.orientations[c]);
     }
     if (std::isnan(out.min_quality)) out.min_quality = -1;
     return out;

@@ -3,7 +3,9 @@
 #include <array>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/laplacian.hpp"
@@ -115,6 +117,13 @@ std::size_t check_laplacian_inputs(int dim, std::span<const double> points, cons
                 throw MeshError(w + ": cell " + std::to_string(c) + " has node " + std::to_string(n) +
                                     ", out of range (the mesh has " + std::to_string(num_points) + " points)",
                                 {}, n);
+        const auto [f0, f1] = cells.faces_of(c);
+        for (std::int64_t f = f0; f < f1; ++f)
+            for (NodeId n : cells.face_nodes_of(f))
+                if (std::find(cells.nodes_of(c).begin(), cells.nodes_of(c).end(), n) == cells.nodes_of(c).end())
+                    throw MeshError(w + ": a face of cell " + std::to_string(c) + " has node " + std::to_string(n) +
+                                        ", not one of the cell's nodes",
+                                    {}, n);
     }
     return num_points;
 }
@@ -140,16 +149,20 @@ LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const E
     // The quadrilateral faces of 3D cells, matched by their sorted corners:
     // one centre per distinct face, shared by its cells.
     std::vector<QuadFace> quads;
+    const auto add_quad = [&](std::size_t c, std::array<NodeId, 4> corners) {
+        QuadFace q{corners, static_cast<std::int32_t>(c), corners};
+        std::sort(q.key.begin(), q.key.end());
+        quads.push_back(q);
+    };
     if (dim == 3)
-        for (std::size_t c = 0; c < cells.size(); ++c)
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+            const auto nodes = cells.nodes_of(c);
             for (const Face& f : faces_of(cells.types[c]))
-                if (f[3] >= 0) {
-                    const auto nodes = cells.nodes_of(c);
-                    QuadFace q{{}, static_cast<std::int32_t>(c), {nodes[f[0]], nodes[f[1]], nodes[f[2]], nodes[f[3]]}};
-                    q.key = q.corners;
-                    std::sort(q.key.begin(), q.key.end());
-                    quads.push_back(q);
-                }
+                if (f[3] >= 0) add_quad(c, {nodes[f[0]], nodes[f[1]], nodes[f[2]], nodes[f[3]]});
+            const auto [f0, f1] = cells.faces_of(c);  // a polyhedron's
+            for (std::int64_t f = f0; f < f1; ++f)
+                if (const auto ring = cells.face_nodes_of(f); ring.size() == 4) add_quad(c, {ring[0], ring[1], ring[2], ring[3]});
+        }
     std::sort(quads.begin(), quads.end(), [](const QuadFace& a, const QuadFace& b) {
         return a.key != b.key ? a.key < b.key : a.cell < b.cell;
     });
@@ -181,6 +194,28 @@ LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const E
             quad_index[static_cast<std::size_t>(fill[quads[k].cell]++)] = static_cast<std::int32_t>(k);
     }
 
+    // A polyhedron's faces of more than 4 nodes (only polyhedra have them):
+    // one centre per distinct face too, given on the boundary.
+    std::map<std::vector<NodeId>, std::int32_t> polygon_centre;
+    if (cells.has_faces()) {
+        std::map<std::vector<NodeId>, std::pair<int, std::vector<NodeId>>> uses;  // sorted ring -> (cells, a ring)
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+            const auto [f0, f1] = cells.faces_of(c);
+            for (std::int64_t f = f0; f < f1; ++f) {
+                const auto ring = cells.face_nodes_of(f);
+                if (ring.size() <= 4) continue;
+                std::vector<NodeId> key(ring.begin(), ring.end());
+                std::sort(key.begin(), key.end());
+                auto& use = uses[key];
+                if (use.first++ == 0) use.second.assign(ring.begin(), ring.end());
+            }
+        }
+        for (const auto& [key, use] : uses) {
+            polygon_centre[key] = add_centre(use.second);
+            centre_given.push_back(use.first == 1 && std::all_of(key.begin(), key.end(), on_boundary) ? 1 : 0);
+        }
+    }
+
     const auto add_simplex = [&](std::size_t cell, std::initializer_list<std::int32_t> ids) {
         plan.simplices.insert(plan.simplices.end(), ids.begin(), ids.end());
         plan.simplex_cell.push_back(static_cast<std::int32_t>(cell));
@@ -195,6 +230,30 @@ LaplacianPlan prepare_laplacian(int dim, std::span<const double> points, const E
         }
         const std::int32_t centre = add_centre(nodes);
         centre_given.push_back(0);
+        if (t == CellType::polyhedron) {
+            // Each face: a triangle with the centre, a quadrilateral and a
+            // larger polygon with their shared face centre too.
+            const auto [f0, f1] = cells.faces_of(c);
+            for (std::int64_t f = f0; f < f1; ++f) {
+                const auto ring = cells.face_nodes_of(f);
+                if (ring.size() == 3) {
+                    add_simplex(c, {ring[0], ring[1], ring[2], centre});
+                    continue;
+                }
+                std::int32_t fc = -1;
+                if (ring.size() == 4) {
+                    const std::array<NodeId, 4> face{ring[0], ring[1], ring[2], ring[3]};
+                    for (std::int32_t k = quad_of_cell_first[c]; k < quad_of_cell_first[c + 1]; ++k)
+                        if (quads[static_cast<std::size_t>(quad_index[k])].corners == face) fc = quad_centre[quad_index[k]];
+                } else {
+                    std::vector<NodeId> key(ring.begin(), ring.end());
+                    std::sort(key.begin(), key.end());
+                    fc = polygon_centre.at(key);
+                }
+                for (std::size_t k = 0; k < ring.size(); ++k) add_simplex(c, {ring[k], ring[(k + 1) % ring.size()], fc, centre});
+            }
+            continue;
+        }
         for (const auto& corner : corner_neighbours(t))
             for (int k = 0; k <= dim; ++k) plan.corners.push_back(nodes[corner[k]]);
         if (dim == 2) {  // a quadrilateral: a triangle on each edge

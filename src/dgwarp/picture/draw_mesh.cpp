@@ -22,11 +22,11 @@ struct Box {
 // A cell's outline in pixels: at most 4 nodes, and clipping a polygon to a box
 // multiplies its vertex count by at most 1.5 per side (4 -> 19 for a bow-tie).
 struct Polygon {
-    std::array<Point, 32> p;
+    std::vector<Point> p;  // any number: a polygon cell's, clipped
     int n = 0;
     void push(const Point& q) {
-        assert(n < static_cast<int>(p.size()));
-        p[n++] = q;
+        p.push_back(q);
+        ++n;
     }
 };
 

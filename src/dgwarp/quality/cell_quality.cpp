@@ -25,7 +25,9 @@ double cell_shape_quality(CellType type, std::span<const double> coords, int dim
         case CellType::prism: return quality_detail::prism_quality(x, sign);
         case CellType::pyramid: return quality_detail::pyramid_quality(x, sign);
         case CellType::vertex:
-        case CellType::line: return 0.0;
+        case CellType::line:
+        case CellType::polygon:      // by their nodes and faces:
+        case CellType::polyhedron: return 0.0;  // element_shape_quality
     }
     return 0.0;
 }
@@ -46,7 +48,9 @@ int cell_orientation(CellType type, std::span<const double> coords, int dim) {
         case CellType::prism: measure = quality_detail::prism_alpha_sum(x); break;
         case CellType::pyramid: measure = quality_detail::pyramid_alpha_sum(x); break;
         case CellType::vertex:
-        case CellType::line: break;
+        case CellType::line:
+        case CellType::polygon:  // element_orientation
+        case CellType::polyhedron: break;
     }
     return measure < 0 ? -1 : 1;
 }

@@ -5,7 +5,7 @@
 // Definitions, signs and the prism/pyramid extension: docs/QUALITY.md (repository root).
 #include <span>
 
-#include "dgwarp/mesh/cell_type.hpp"
+#include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {
 
@@ -35,5 +35,23 @@ double cell_shape_quality(CellType type, std::span<const double> coords, int dim
 /// line, and for triangles and quadrilaterals with dim 3.
 /// `coords`: nodes_per_cell(type) × dim, row-major, VTK node order.
 int cell_orientation(CellType type, std::span<const double> coords, int dim);
+
+/// cell_shape_quality of element i of `list` at `points` (num_points × dim),
+/// for every type: polygons and polyhedra too, measured by their
+/// decomposition from centres (docs/QUALITY.md): a polygon's triangles
+/// (centre, corner k, corner k+1), a polyhedron's tetrahedra (face centre,
+/// an edge of the face, cell centre; centres the mean of the nodes), each
+/// against the same piece of the regular polygon with that many sides (of
+/// the right prism on it, as high as the polygon's apothem), combined as the
+/// corners of a hexahedron are. A regular polygon and a cube score 1; an
+/// inverted piece makes the element <= 0 (a polyhedron is valid when each
+/// of its tetrahedra is, as checkMesh's face pyramids).
+double element_shape_quality(const ElementList& list, std::size_t i, int dim, std::span<const double> points,
+                             int orientation = 1);
+
+/// cell_orientation of element i of `list`: for a polygon in 2D the sign of
+/// its pieces' summed α (twice its area), for a polyhedron of its
+/// tetrahedra's (six times its volume from the centres).
+int element_orientation(const ElementList& list, std::size_t i, int dim, std::span<const double> points);
 
 }  // namespace dgwarp

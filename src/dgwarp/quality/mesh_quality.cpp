@@ -49,7 +49,9 @@ void for_each_cell(const Mesh& mesh, std::span<const double> points, Body&& body
                 for (NodeId v : mesh.cells.nodes_of(static_cast<std::size_t>(i + ahead)))
                     prefetch_bytes(points.data() + static_cast<std::size_t>(v) * dim, dim * sizeof(double));
             const auto k = static_cast<std::size_t>(i);
-            body(k, cell_coords(mesh, points, k, coords));
+            // Polygons and polyhedra (any number of nodes) are measured from the list itself.
+            body(k, has_any_node_count(mesh.cells.types[k]) ? std::span<const double>()
+                                                            : cell_coords(mesh, points, k, coords));
         }
     });
 }
@@ -59,7 +61,10 @@ void for_each_cell(const Mesh& mesh, std::span<const double> points, Body&& body
 std::vector<std::int8_t> cell_orientations(const Mesh& reference) {
     std::vector<std::int8_t> orientation(reference.cells.size());
     for_each_cell(reference, reference.points, [&](std::size_t k, std::span<const double> coords) {
-        orientation[k] = static_cast<std::int8_t>(cell_orientation(reference.cells.types[k], coords, reference.dim));
+        const CellType t = reference.cells.types[k];
+        orientation[k] = static_cast<std::int8_t>(
+            has_any_node_count(t) ? element_orientation(reference.cells, k, reference.dim, reference.points)
+                                  : cell_orientation(t, coords, reference.dim));
     });
     return orientation;
 }
@@ -92,7 +97,9 @@ std::vector<double> cell_qualities(const Mesh& mesh, std::span<const double> poi
     assert(points.size() == mesh.points.size());
     std::vector<double> quality(mesh.cells.size());
     for_each_cell(mesh, points, [&](std::size_t k, std::span<const double> coords) {
-        quality[k] = cell_shape_quality(mesh.cells.types[k], coords, mesh.dim, orientations[k]);
+        const CellType t = mesh.cells.types[k];
+        quality[k] = has_any_node_count(t) ? element_shape_quality(mesh.cells, k, mesh.dim, points, orientations[k])
+                                           : cell_shape_quality(t, coords, mesh.dim, orientations[k]);
     });
     return quality;
 }

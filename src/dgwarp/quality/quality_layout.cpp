@@ -165,16 +165,6 @@ void layout_pass(const QualityLayout& g, const double* p, std::span<const std::i
         1);
 }
 
-/// A cell's coordinates from the mesh's points (nodes × dim).
-std::span<const double> coords_of(const Mesh& mesh, std::span<const double> points, std::size_t c,
-                                  std::array<double, 24>& out) {
-    const auto nodes = mesh.cells.nodes_of(c);
-    const auto d = static_cast<std::size_t>(mesh.dim);
-    for (std::size_t n = 0; n < nodes.size(); ++n)
-        for (std::size_t k = 0; k < d; ++k) out[n * d + k] = points[static_cast<std::size_t>(nodes[n]) * d + k];
-    return {out.data(), nodes.size() * d};
-}
-
 }  // namespace
 
 std::vector<double> cell_qualities(const QualityLayout& layout, const Mesh& mesh, std::span<const double> points,
@@ -187,9 +177,7 @@ std::vector<double> cell_qualities(const QualityLayout& layout, const Mesh& mesh
         layout, local.get(), orientations, quality_detail::tetrahedron_qualities, quality_detail::triangle_qualities,
         [&](std::uint32_t c, double q) { quality[c] = q; },
         [&](std::uint32_t c) {
-            std::array<double, 24> coords;
-            quality[c] = cell_shape_quality(mesh.cells.types[c], coords_of(mesh, points, c, coords), mesh.dim,
-                                            orientations[c]);
+            quality[c] = element_shape_quality(mesh.cells, c, mesh.dim, points, orientations[c]);
         });
     return quality;
 }
@@ -202,9 +190,7 @@ std::vector<std::int8_t> cell_orientations(const QualityLayout& layout, const Me
         layout, local.get(), {}, quality_detail::tetrahedron_alphas, quality_detail::triangle_alphas,
         [&](std::uint32_t c, double alpha) { orientation[c] = static_cast<std::int8_t>(alpha < 0 ? -1 : 1); },
         [&](std::uint32_t c) {
-            std::array<double, 24> coords;
-            orientation[c] =
-                static_cast<std::int8_t>(cell_orientation(mesh.cells.types[c], coords_of(mesh, mesh.points, c, coords), mesh.dim));
+            orientation[c] = static_cast<std::int8_t>(element_orientation(mesh.cells, c, mesh.dim, mesh.points));
         });
     return orientation;
 }

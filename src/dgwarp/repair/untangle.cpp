@@ -78,14 +78,8 @@ public:
         : dim_(dim), cells_(cells), orientations_(orientations), points_(points) {}
 
     double quality(std::int64_t c) const {
-        const auto nodes = cells_.nodes_of(static_cast<std::size_t>(c));
-        std::array<double, max_cell_coordinates> coords{};
-        for (std::size_t k = 0; k < nodes.size(); ++k)
-            for (int d = 0; d < dim_; ++d)
-                coords[k * dim_ + d] = points_[static_cast<std::size_t>(nodes[k]) * dim_ + d];
-        return cell_shape_quality(cells_.types[static_cast<std::size_t>(c)],
-                                  std::span<const double>(coords.data(), nodes.size() * dim_), dim_,
-                                  orientations_[static_cast<std::size_t>(c)]);
+        return element_shape_quality(cells_, static_cast<std::size_t>(c), dim_, points_,
+                                     orientations_[static_cast<std::size_t>(c)]);
     }
 
     /// The smallest quality of `around`.
