@@ -11,6 +11,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/quality/cell_quality.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "support/cgns_test_writer.hpp"
 
@@ -111,6 +112,17 @@ TestZone cgns_square_zone() {
                   {"top", cgns_code::BAR_2, 2, {6, 3, 3, 4}}};
     z.cells = 3;
     return z;
+}
+
+/// The face rings of polyhedron c of `list`, in order.
+std::vector<std::vector<NodeId>> cgns_polyhedron_faces(const ElementList& list, std::size_t c) {
+    std::vector<std::vector<NodeId>> faces;
+    const auto [f0, f1] = list.faces_of(c);
+    for (std::int64_t f = f0; f < f1; ++f) {
+        const auto ring = list.face_nodes_of(f);
+        faces.emplace_back(ring.begin(), ring.end());
+    }
+    return faces;
 }
 
 }  // namespace
@@ -374,4 +386,107 @@ TEST(CgnsRead, AFileWithoutBoundariesGetsItsExteriorFacesAsOneMarker) {
         for (int k = 0; k < 3; ++k) out += normal[k] * (centre[k] - 0.4);
         EXPECT_GT(out, 0) << f;
     }
+}
+
+// NGON_n faces and NFACE_n cells (CGNS SIDS 7.3): each cell a polyhedron
+// whose faces point out of it, a face named by a negative number turned round
+// (from its first node); in whichever order the two sections come. A BC of
+// NGON_n element numbers takes those faces as written; a vertex BC takes the
+// cells' boundary faces (pointing out), never an inner face.
+TEST(CgnsRead, NfaceCellsArePolyhedraTheirFacesTurnedOut) {
+    const auto dir = scratch_dir();
+    for (const bool cells_first : {false, true}) {
+        TestZone z = split_cube_test_zone(cells_first);
+        const cgns_size f = cells_first ? 2 : 0;
+        z.bcs = {{"bottom", "", cgns_code::FaceCenter, false, {f + 1, f + 2}},
+                 {"top", "", cgns_code::Vertex, false, {5, 6, 7, 8}},
+                 {"cut", "", cgns_code::Vertex, false, {1, 3, 5, 7}}};
+        write_test_cgns(dir / "cube.cgns", 3, {z});
+        const Mesh mesh = read_cgns(dir / "cube.cgns");
+        EXPECT_EQ(mesh.points, (std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1}));
+        ASSERT_EQ(mesh.cells.size(), 2u) << cells_first;
+        EXPECT_EQ(mesh.cells.types, (std::vector<CellType>{CellType::polyhedron, CellType::polyhedron}));
+        // A: faces -1, 3, 5, 6, -9; B: -2, 4, 7, 8, 9 (0-based nodes).
+        EXPECT_EQ(cgns_polyhedron_faces(mesh.cells, 0),
+                  (std::vector<std::vector<NodeId>>{{0, 2, 1}, {4, 5, 6}, {0, 1, 5, 4}, {1, 2, 6, 5}, {0, 4, 6, 2}}));
+        EXPECT_EQ(cgns_polyhedron_faces(mesh.cells, 1),
+                  (std::vector<std::vector<NodeId>>{{0, 3, 2}, {4, 6, 7}, {2, 3, 7, 6}, {3, 0, 4, 7}, {0, 2, 6, 4}}));
+        const auto a = mesh.cells.nodes_of(0);
+        EXPECT_EQ(std::vector<NodeId>(a.begin(), a.end()), (std::vector<NodeId>{0, 2, 1, 4, 5, 6}));
+        for (std::size_t c = 0; c < 2; ++c) {
+            EXPECT_EQ(element_orientation(mesh.cells, c, 3, mesh.points), 1) << c;
+            EXPECT_GT(element_shape_quality(mesh.cells, c, 3, mesh.points), 0.5) << c;
+        }
+        ASSERT_EQ(mesh.markers.size(), 3u);  // no marker of the section "Faces": the cells' faces
+        EXPECT_EQ(mesh.markers[0].name, "bottom");
+        EXPECT_EQ(mesh.markers[0].elements.types, (std::vector<CellType>{CellType::triangle, CellType::triangle}));
+        EXPECT_EQ(mesh.markers[0].elements.nodes, (std::vector<NodeId>{0, 1, 2, 0, 2, 3}));  // as written
+        EXPECT_EQ(mesh.markers[1].name, "top");
+        EXPECT_EQ(mesh.markers[1].elements.nodes, (std::vector<NodeId>{4, 5, 6, 4, 6, 7}));
+        EXPECT_EQ(mesh.markers[2].name, "cut");  // the inner face x = y is no boundary face
+        EXPECT_TRUE(mesh.markers[2].elements.empty());
+    }
+    // Without BCs: the cells' exterior faces, pointing out, are the marker `exterior`.
+    write_test_cgns(dir / "bare.cgns", 3, {split_cube_test_zone(false)});
+    const Mesh bare = read_cgns(dir / "bare.cgns");
+    ASSERT_EQ(bare.markers.size(), 1u);
+    EXPECT_EQ(bare.markers[0].name, "exterior");
+    EXPECT_EQ(bare.markers[0].elements.nodes,
+              (std::vector<NodeId>{0, 2, 1, 4, 5, 6, 0, 1, 5, 4, 1, 2, 6, 5, 0, 3, 2, 4, 6, 7, 2, 3, 7, 6, 3, 0, 4, 7}));
+}
+
+// A pyramid-shaped NFACE_n cell, three of its five faces written turned into
+// it: with the right signs its faces are the pyramid's outward faces (those of
+// the VTK-ordered pyramid 0-1-2-3-4). A cell whose signs disagree (every face
+// named positive, as some writers do) is turned out by its shape; one whose
+// faces all point in, consistently, is kept so: an inverted cell (orientation -1).
+TEST(CgnsRead, NegativeFaceNumbersTurnTheFaceRound) {
+    const auto dir = scratch_dir();
+    const std::vector<std::vector<NodeId>> outward{{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+    for (const auto& signs : {std::vector<int>{-1, 1, -1, 1, -1}, std::vector<int>{1, 1, 1, 1, 1}}) {
+        write_test_cgns(dir / "pyramid.cgns", 3, {pyramid_test_zone(signs)});
+        const Mesh mesh = read_cgns(dir / "pyramid.cgns");
+        ASSERT_EQ(mesh.cells.size(), 1u);
+        EXPECT_EQ(cgns_polyhedron_faces(mesh.cells, 0), outward) << signs[0];
+        EXPECT_EQ(element_orientation(mesh.cells, 0, 3, mesh.points), 1);
+        EXPECT_GT(element_shape_quality(mesh.cells, 0, 3, mesh.points), 0);
+    }
+    write_test_cgns(dir / "inverted.cgns", 3, {pyramid_test_zone({1, -1, 1, -1, 1})});
+    const Mesh inverted = read_cgns(dir / "inverted.cgns");
+    EXPECT_EQ(cgns_polyhedron_faces(inverted.cells, 0),
+              (std::vector<std::vector<NodeId>>{{0, 1, 2, 3}, {0, 4, 1}, {1, 4, 2}, {2, 4, 3}, {3, 4, 0}}));
+    EXPECT_EQ(element_orientation(inverted.cells, 0, 3, inverted.points), -1);
+    EXPECT_LE(element_shape_quality(inverted.cells, 0, 3, inverted.points), 0);
+}
+
+// A 2D zone's NGON_n elements are its cells: polygons, triangles and
+// quadrilaterals by their node count; its BAR_2 edges are faces as before.
+TEST(CgnsRead, A2dZoneNgonElementsArePolygonCells) {
+    TestZone z;
+    z.x = {0, 1, 2, 2, 1, 0, 1.2, 1};
+    z.y = {0, 0, 0, 1, 1, 1, 0.5, -1};
+    z.sections = {{"Cells", cgns_code::NGON_n, 3, {5, 1, 2, 7, 5, 6, 5, 2, 3, 4, 5, 7, 3, 1, 8, 2}},
+                  {"left", cgns_code::BAR_2, 1, {6, 1}}};
+    z.cells = 3;
+    const auto dir = scratch_dir();
+    write_test_cgns(dir / "polygons.cgns", 2, {z});
+    const Mesh mesh = read_cgns(dir / "polygons.cgns");
+    EXPECT_EQ(mesh.dim, 2);
+    EXPECT_EQ(mesh.cells.types, (std::vector<CellType>{CellType::polygon, CellType::polygon, CellType::triangle}));
+    EXPECT_EQ(mesh.cells.nodes, (std::vector<NodeId>{0, 1, 6, 4, 5, 1, 2, 3, 4, 6, 0, 7, 1}));
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(element_orientation(mesh.cells, c, 2, mesh.points), 1) << c;
+    ASSERT_EQ(mesh.markers.size(), 1u);
+    EXPECT_EQ(mesh.markers[0].name, "left");
+    EXPECT_EQ(mesh.markers[0].elements.nodes, (std::vector<NodeId>{5, 0}));
+}
+
+TEST(CgnsRead, PolyhedralFilesPassCgnscheck) {
+    if (run_command("command -v cgnscheck").exit_code != 0) GTEST_SKIP() << "cgnscheck not installed (Debian package cgns-convert)";
+    const auto dir = scratch_dir();
+    TestZone z = split_cube_test_zone(false);
+    z.bcs = {{"bottom", "", cgns_code::FaceCenter, false, {1, 2}}};
+    write_test_cgns(dir / "cube.cgns", 3, {z});
+    const CommandResult r = run_command("cgnscheck " + quoted(dir / "cube.cgns"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << r.out;
 }

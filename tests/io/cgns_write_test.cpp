@@ -10,6 +10,8 @@
 #include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/gmsh.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
+#include "dgwarp/quality/cell_quality.hpp"
 #include "support/cgns_test_writer.hpp"
 
 using namespace dgwarp;
@@ -40,6 +42,65 @@ std::vector<std::pair<std::string, Mesh>> cgns_write_meshes() {
     quads.markers[1].elements.push_back(CellType::line, right);
     meshes.push_back({"quads", quads});
     return meshes;
+}
+
+/// The unit cube cut by the plane x = y into two prisms as polyhedra (A: x
+/// >= y, B: y >= x), their faces pointing out; markers "bottom" (the two
+/// triangles in z = 0, pointing out), "sides" (the four quadrilaterals),
+/// "top" (the two triangles in z = 1). The mesh of split_cube_test_zone's file.
+Mesh cgns_write_split_cube() {
+    Mesh mesh;
+    mesh.points = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+    const std::vector<int> sizes{3, 3, 4, 4, 4};
+    mesh.cells.push_polyhedron(std::vector<NodeId>{0, 2, 1, 4, 5, 6, 0, 1, 5, 4, 1, 2, 6, 5, 0, 4, 6, 2}, sizes);
+    mesh.cells.push_polyhedron(std::vector<NodeId>{0, 3, 2, 4, 6, 7, 2, 3, 7, 6, 3, 0, 4, 7, 0, 2, 6, 4}, sizes);
+    mesh.markers = {{"bottom", {}}, {"sides", {}}, {"top", {}}};
+    const NodeId bottom[2][3] = {{0, 2, 1}, {0, 3, 2}}, top[2][3] = {{4, 5, 6}, {4, 6, 7}};
+    const NodeId sides[4][4] = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    for (const auto& t : bottom) mesh.markers[0].elements.push_back(CellType::triangle, t);
+    for (const auto& q : sides) mesh.markers[1].elements.push_back(CellType::quadrilateral, q);
+    for (const auto& t : top) mesh.markers[2].elements.push_back(CellType::triangle, t);
+    return mesh;
+}
+
+/// A face ring from its smallest node on, the same way round: the face and its orientation, whatever its first node.
+std::vector<NodeId> cgns_write_canonical(std::span<const NodeId> ring) {
+    const auto k = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+    std::vector<NodeId> out;
+    for (std::size_t i = 0; i < ring.size(); ++i) out.push_back(ring[(k + i) % ring.size()]);
+    return out;
+}
+
+/// The faces of cell c (a polyhedron's; a fixed type's outward faces), canonical and sorted.
+std::vector<std::vector<NodeId>> cgns_write_cell_faces(const ElementList& cells, std::size_t c) {
+    std::vector<std::vector<NodeId>> faces;
+    if (cells.types[c] == CellType::polyhedron) {
+        const auto [f0, f1] = cells.faces_of(c);
+        for (std::int64_t f = f0; f < f1; ++f) faces.push_back(cgns_write_canonical(cells.face_nodes_of(f)));
+    } else {
+        const auto nodes = cells.nodes_of(c);
+        const foam::FaceTable& table = foam::outward_faces(cells.types[c]);
+        for (int k = 0; k < table.count; ++k) {
+            std::vector<NodeId> ring;
+            for (int i = 0; i < table.size[k]; ++i) ring.push_back(nodes[static_cast<std::size_t>(table.node[k][i])]);
+            faces.push_back(cgns_write_canonical(ring));
+        }
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+/// Cell c as a polyhedron of its faces (cgns_write_cell_faces): what a fixed-type cell written as NFACE_n reads back as.
+ElementList cgns_write_as_polyhedron(const ElementList& cells, std::size_t c) {
+    std::vector<NodeId> rings;
+    std::vector<int> sizes;
+    for (const auto& ring : cgns_write_cell_faces(cells, c)) {
+        rings.insert(rings.end(), ring.begin(), ring.end());
+        sizes.push_back(static_cast<int>(ring.size()));
+    }
+    ElementList one;
+    one.push_polyhedron(rings, sizes);
+    return one;
 }
 
 }  // namespace
@@ -175,4 +236,159 @@ TEST(CgnsWrite, AMarkerWithoutElementsIsABoundaryFamily) {
         EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
         EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << r.out;
     }
+}
+
+// A mesh of polyhedra: every distinct face once in the NGON_n section
+// "Faces" (the markers' faces first, as the markers have them; the face the
+// two cells share once, from the first cell), the cells in the NFACE_n
+// section "Cells" as signed face numbers (the shared face +9 in A, -9 in B:
+// CGNS SIDS 7.3, a positive number's normal points out of the cell), the BCs
+// PointLists of face numbers. It reads back equal; cgnscheck accepts it.
+TEST(CgnsWrite, PolyhedraAreNgonFacesAndNfaceCells) {
+    const auto dir = scratch_dir();
+    const Mesh mesh = cgns_write_split_cube();
+    write_cgns(dir / "cube.cgns", mesh);
+    const ReadZone zone = read_test_cgns(dir / "cube.cgns");
+    EXPECT_EQ(zone.cells, 2);
+    ASSERT_EQ(zone.sections.size(), 2u);
+    const ReadSection& faces = zone.sections[0];
+    EXPECT_EQ(faces.section.name, "Faces");
+    EXPECT_EQ(faces.section.type, cgns_code::NGON_n);
+    EXPECT_EQ(faces.start, 1);
+    EXPECT_EQ(faces.section.count, 9);
+    EXPECT_EQ(faces.section.connectivity, (std::vector<cgns_size>{1, 3, 2, 1, 4, 3, 1, 2, 6, 5, 2, 3, 7, 6, 3, 4, 8, 7, 4,
+                                                                  1, 5, 8, 5, 6, 7, 5, 7, 8, 1, 5, 7, 3}));
+    EXPECT_EQ(faces.offsets, (std::vector<cgns_size>{0, 3, 6, 10, 14, 18, 22, 25, 28, 32}));
+    const ReadSection& cells = zone.sections[1];
+    EXPECT_EQ(cells.section.name, "Cells");
+    EXPECT_EQ(cells.section.type, cgns_code::NFACE_n);
+    EXPECT_EQ(cells.start, 10);
+    EXPECT_EQ(cells.section.count, 2);
+    EXPECT_EQ(cells.section.connectivity, (std::vector<cgns_size>{1, 7, 3, 4, 9, 2, 8, 5, 6, -9}));
+    EXPECT_EQ(cells.offsets, (std::vector<cgns_size>{0, 5, 10}));
+    ASSERT_EQ(zone.bcs.size(), 3u);
+    const std::vector<std::vector<cgns_size>> points{{1, 2}, {3, 4, 5, 6}, {7, 8}};
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(zone.bcs[k].name, mesh.markers[k].name);
+        EXPECT_EQ(zone.bcs[k].point_set, "PointList");
+        EXPECT_EQ(zone.bcs[k].location, cgns_code::FaceCenter);
+        EXPECT_EQ(zone.bcs[k].points, points[k]);
+    }
+    EXPECT_TRUE(read_cgns(dir / "cube.cgns") == mesh);
+    // deform's output: the file with new coordinates, the rest kept.
+    CgnsSource source;
+    Mesh moved = read_cgns(dir / "cube.cgns", &source);
+    for (double& x : moved.points) x = 2 * x + 1;
+    write_cgns_points(dir / "moved.cgns", source, moved.points);
+    EXPECT_TRUE(read_cgns(dir / "moved.cgns") == moved);
+    if (cgns_tool_installed("cgnscheck")) {
+        const CommandResult r = run_command("cgnscheck " + quoted(dir / "cube.cgns"));
+        EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+        EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << r.out;
+    }
+}
+
+// Beside a polyhedron, a cell of a fixed type is written as NFACE_n too (its
+// outward faces) and reads back a polyhedron: the same faces, turned the same
+// way, the same shape quality as a polyhedron of them (a cube's: 1).
+TEST(CgnsWrite, FixedCellsBesidePolyhedraAreWrittenByTheirFaces) {
+    Mesh mesh;
+    // A unit cube (hexahedron 0-7) with a pyramid-shaped polyhedron on its top (apex 8).
+    mesh.points = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, 0.5, 0.5, 1.6};
+    const NodeId hex[] = {0, 1, 2, 3, 4, 5, 6, 7};
+    mesh.cells.push_back(CellType::hexahedron, hex);
+    mesh.cells.push_polyhedron(std::vector<NodeId>{4, 7, 6, 5, 4, 5, 8, 5, 6, 8, 6, 7, 8, 7, 4, 8}, std::vector<int>{4, 3, 3, 3, 3});
+    mesh.markers = {{"floor", {}}, {"roof", {}}};
+    const NodeId floor[] = {0, 3, 2, 1};
+    mesh.markers[0].elements.push_back(CellType::quadrilateral, floor);
+    const NodeId roof[4][3] = {{4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}};
+    for (const auto& t : roof) mesh.markers[1].elements.push_back(CellType::triangle, t);
+    const auto dir = scratch_dir();
+    write_cgns(dir / "mixed.cgns", mesh);
+    const ReadZone zone = read_test_cgns(dir / "mixed.cgns");
+    ASSERT_EQ(zone.sections.size(), 2u);
+    EXPECT_EQ(zone.sections[0].section.count, 10);  // 6 + 5 faces, one shared
+    // The cube's top (its face 2, 5-6-7-8) is the pyramid's base turned round.
+    EXPECT_EQ(zone.sections[1].section.connectivity, (std::vector<cgns_size>{1, 6, 7, 8, 9, 10, -6, 2, 3, 4, 5}));
+    const Mesh back = read_cgns(dir / "mixed.cgns");
+    EXPECT_EQ(back.points, mesh.points);
+    EXPECT_TRUE(back.markers == mesh.markers);
+    ASSERT_EQ(back.cells.size(), 2u);
+    for (std::size_t c = 0; c < 2; ++c) {
+        EXPECT_EQ(back.cells.types[c], CellType::polyhedron);
+        EXPECT_EQ(cgns_write_cell_faces(back.cells, c), cgns_write_cell_faces(mesh.cells, c)) << c;
+        const ElementList as_written = cgns_write_as_polyhedron(mesh.cells, c);
+        EXPECT_NEAR(element_shape_quality(back.cells, c, 3, back.points),
+                    element_shape_quality(as_written, 0, 3, mesh.points), 1e-12) << c;
+    }
+    EXPECT_NEAR(element_shape_quality(back.cells, 0, 3, back.points), 1, 1e-12);  // the cube
+    EXPECT_EQ(element_orientation(back.cells, 1, 3, back.points), 1);
+    if (cgns_tool_installed("cgnscheck")) {
+        const CommandResult r = run_command("cgnscheck " + quoted(dir / "mixed.cgns"));
+        EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+        EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << r.out;
+    }
+}
+
+// Polygons without polyhedra: a 2D mesh's cells in one NGON_n section (a
+// MIXED section cannot hold NGON_n elements; its triangles too), its markers'
+// edges as before; a 3D marker holding a polygon as an NGON_n section of
+// its own. Both read back equal.
+TEST(CgnsWrite, PolygonsAreNgonSections) {
+    Mesh flat;
+    flat.dim = 2;
+    flat.points = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1, 1.2, 0.5, 1, -1};
+    const NodeId a[] = {0, 1, 6, 4, 5}, b[] = {1, 2, 3, 4, 6}, c[] = {0, 7, 1};
+    flat.cells.push_back(CellType::polygon, a);
+    flat.cells.push_back(CellType::polygon, b);
+    flat.cells.push_back(CellType::triangle, c);
+    const NodeId left[] = {5, 0};
+    flat.markers = {{"left", {}}};
+    flat.markers[0].elements.push_back(CellType::line, left);
+    const auto dir = scratch_dir();
+    write_cgns(dir / "flat.cgns", flat);
+    ReadZone zone = read_test_cgns(dir / "flat.cgns");
+    ASSERT_EQ(zone.sections.size(), 2u);
+    EXPECT_EQ(zone.sections[0].section.type, cgns_code::NGON_n);
+    EXPECT_EQ(zone.sections[0].section.connectivity, (std::vector<cgns_size>{1, 2, 7, 5, 6, 2, 3, 4, 5, 7, 1, 8, 2}));
+    EXPECT_EQ(zone.sections[0].offsets, (std::vector<cgns_size>{0, 5, 10, 13}));
+    EXPECT_EQ(zone.sections[1].section.type, cgns_code::BAR_2);
+    EXPECT_EQ(zone.bcs[0].points, (std::vector<cgns_size>{4, 4}));
+    EXPECT_TRUE(read_cgns(dir / "flat.cgns") == flat);
+
+    // Two unit cubes side by side (hexahedra), their top one hexagon.
+    Mesh boxes;
+    boxes.points = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0,
+                    0, 0, 1, 1, 0, 1, 2, 0, 1, 0, 1, 1, 1, 1, 1, 2, 1, 1};
+    const NodeId h0[] = {0, 1, 4, 3, 6, 7, 10, 9}, h1[] = {1, 2, 5, 4, 7, 8, 11, 10}, top[] = {6, 7, 8, 11, 10, 9};
+    boxes.cells.push_back(CellType::hexahedron, h0);
+    boxes.cells.push_back(CellType::hexahedron, h1);
+    boxes.markers = {{"top", {}}};
+    boxes.markers[0].elements.push_back(CellType::polygon, top);
+    write_cgns(dir / "boxes.cgns", boxes);
+    zone = read_test_cgns(dir / "boxes.cgns");
+    ASSERT_EQ(zone.sections.size(), 2u);
+    EXPECT_EQ(zone.sections[0].section.type, cgns_code::HEXA_8);
+    EXPECT_EQ(zone.sections[1].section.type, cgns_code::NGON_n);
+    EXPECT_EQ(zone.sections[1].section.connectivity, (std::vector<cgns_size>{7, 8, 9, 12, 11, 10}));
+    EXPECT_TRUE(read_cgns(dir / "boxes.cgns") == boxes);
+    if (cgns_tool_installed("cgnscheck"))
+        for (const char* name : {"flat.cgns", "boxes.cgns"}) {
+            const CommandResult r = run_command("cgnscheck " + quoted(dir / name));
+            EXPECT_EQ(r.exit_code, 0) << name << r.out << r.err;
+            EXPECT_EQ(r.out.find("ERROR"), std::string::npos) << name << "\n" << r.out;
+        }
+}
+
+// With polyhedra the NGON_n section is "Faces": no marker may take that name.
+TEST(CgnsWrite, APolyhedralMeshRefusesAMarkerCalledFaces) {
+    Mesh mesh = cgns_write_split_cube();
+    mesh.markers[1].name = "Faces";
+    const auto dir = scratch_dir();
+    EXPECT_THROW(write_cgns(dir / "faces.cgns", mesh), MeshError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "faces.cgns"));
+    Mesh box = make_rect_box();  // without polyhedra "Faces" is a marker like any other
+    box.markers[0].name = "Faces";
+    EXPECT_NO_THROW(write_cgns(dir / "box.cgns", box));
+    EXPECT_TRUE(read_cgns(dir / "box.cgns") == box);
 }

@@ -11,7 +11,11 @@
 // (coincident points are not merged). Cells: the elements of the cell
 // dimension of every element section (TETRA_4, PYRA_5, PENTA_6, HEXA_8;
 // TRI_3, QUAD_4 in 2D; MIXED sections too), zone after zone, section after
-// section, in file order, in VTK node order. Markers: one per boundary
+// section, in file order, in VTK node order. Polyhedral sections: an NFACE_n
+// element is a polyhedron of the NGON_n faces it names, each turned out of it
+// (a negative face number: the face turned round, CGNS SIDS 7.3); NGON_n
+// elements are faces in 3D (triangles, quadrilaterals, polygons), cells in 2D
+// (polygons; of 2 nodes, edges). Markers: one per boundary
 // condition (BC_t) name, or per family (FamilyName) when the BC has one; BCs
 // of the same name in several zones form one marker. A BC's PointList or
 // PointRange of face elements (GridLocation FaceCenter/EdgeCenter, or an
@@ -24,9 +28,13 @@
 //
 // Writing (write_cgns): one base "Base", one unstructured zone "Zone", its
 // coordinates in double precision, the cells in one section "Cells" (of the
-// cells' type, or MIXED), each marker in a section of its own name followed by
-// a BC_t of that name (BCTypeUserDefined, PointRange of those elements,
-// GridLocation FaceCenter, or EdgeCenter in 2D).
+// cells' type, or MIXED; NGON_n when they include polygons), each marker in a
+// section of its own name followed by a BC_t of that name (BCTypeUserDefined,
+// PointRange of those elements, GridLocation FaceCenter, or EdgeCenter in 2D).
+// A mesh with polyhedra: every distinct face once in the NGON_n section
+// "Faces" (the markers' first), every cell (polyhedra and fixed types alike)
+// in the NFACE_n section "Cells" as signed face numbers, each marker a BC of
+// its name with a PointList of its faces' numbers.
 //
 // Writing back (write_cgns_points): a copy of the file read, byte for byte but
 // for the coordinates of its zones (GridCoordinates), written in the precision
@@ -67,18 +75,19 @@ inline constexpr const char* exterior_marker_name = "exterior";
 /// Reads base 1 of the CGNS file `path` (see above); fills `source` when given.
 /// Throws IoError when the file cannot be opened or is not a CGNS file;
 /// FormatError naming the file and the zone or section for what dgwarp does not
-/// read (a structured zone, higher-order or polyhedral elements, another
-/// coordinate system); ParseError naming the file and the zone, section or BC
-/// (line 0) when the content is inconsistent (a node or element number out of
-/// range, a BC's elements that are not faces); MeshError when the result fails
-/// validate().
+/// read (a structured zone, higher-order elements, NFACE_n cells in a 2D base,
+/// another coordinate system); ParseError naming the file and the zone,
+/// section or BC (line 0) when the content is inconsistent (a node, element or
+/// face number out of range, a BC's elements that are not faces, an
+/// ElementStartOffset that decreases, an NFACE_n cell whose faces do not close);
+/// MeshError when the result fails validate().
 Mesh read_cgns(const std::filesystem::path& path, CgnsSource* source = nullptr);
 
 /// Writes `mesh` as a CGNS (HDF5) file, atomically (see above). Throws
 /// MeshError before writing anything when the mesh is inconsistent (validate),
 /// has no cells, or a marker name is not a CGNS name (1 to 32 characters,
-/// no '/'), is used twice or is "Cells"; IoError when the file cannot be
-/// written.
+/// no '/'), is used twice or is "Cells" (or "Faces", with polyhedra); IoError
+/// when the file cannot be written.
 void write_cgns(const std::filesystem::path& path, const Mesh& mesh);
 
 /// Throws the MeshError write_cgns(path, mesh) would throw about `mesh`, without writing.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/cgns_file.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
+#include "dgwarp/mesh/polyhedron_faces.hpp"
 
 namespace dgwarp {
 
@@ -30,6 +32,12 @@ ElementList exterior_faces(int dim, const ElementList& cells) {
         const CellType t = cells.types[c];
         if (dim == 2) {
             for (std::size_t i = 0; i < nodes.size(); ++i) all.push_back({CellType::line, {nodes[i], nodes[(i + 1) % nodes.size()]}});
+        } else if (t == CellType::polyhedron) {
+            const auto [f0, f1] = cells.faces_of(c);
+            for (std::int64_t f = f0; f < f1; ++f) {
+                const auto ring = cells.face_nodes_of(f);
+                all.push_back({polygon_type(ring.size()), {ring.begin(), ring.end()}});
+            }
         } else {
             const foam::FaceTable& table = foam::outward_faces(t);
             for (int k = 0; k < table.count; ++k) {
@@ -73,6 +81,7 @@ struct ZoneData {
     std::vector<cgsize_t> face_numbers;    // each face's element number
     std::vector<int> face_section;         // each face's section (index into section_names)
     std::vector<std::string> section_names;
+    std::vector<char> section_cell_faces;  // per section: an NGON_n section whose faces NFACE_n cells use
     std::vector<ZoneBoundary> boundaries;
     std::vector<ZoneJoin> joins;
 };
@@ -156,51 +165,271 @@ private:
         }
     }
 
+    /// An element section as the file holds it (1-based numbers, CGNS order).
+    struct RawSection {
+        std::string where;  // "section 'Cells' of zone 'Zone'"
+        int type = 0;
+        cgsize_t start = 0;
+        std::int64_t count = 0;
+        std::int64_t data_size = 0;     // the connectivity's size (ElementDataSize)
+        std::vector<cgsize_t> data;     // read when the section is taken, then dropped
+        std::vector<cgsize_t> offsets;  // MIXED, NGON_n, NFACE_n (ElementStartOffset): count + 1 values
+    };
+
+    /// The faces of the zone's NGON_n sections (zone vertices, 0-based), found
+    /// by element number: what NFACE_n elements refer to.
+    struct NgonFaces {
+        struct Range {
+            cgsize_t start = 0;
+            std::int64_t count = 0;
+            std::size_t section = 0;      // index into the zone's sections
+            std::int64_t first_face = 0;  // its first face in `offsets`
+        };
+        std::vector<Range> ranges;
+        std::vector<std::int64_t> offsets{0};  // face k: nodes[offsets[k] .. offsets[k+1])
+        std::vector<NodeId> nodes;
+        /// The face of element number `number`, and its section; -1 when no NGON_n element has it.
+        std::int64_t find(std::int64_t number, std::size_t& section) const {
+            for (const Range& r : ranges)
+                if (number >= r.start && number - r.start < r.count) {
+                    section = r.section;
+                    return r.first_face + (number - r.start);
+                }
+            return -1;
+        }
+    };
+
     void read_sections(int z, ZoneData& zone) {
         int nsections = 0;
         f_.read_check(cg_nsections(f_.id(), 1, z, &nsections), "the element sections of " + zone_text(zone));
+        std::vector<RawSection> sections;  // headers; each one's connectivity read when it is taken, then dropped
+        std::vector<int> parent_flags;
         for (int s = 1; s <= nsections; ++s) {
-            char name[64] = {};
-            CGNS_ENUMT(ElementType_t) type{};
-            cgsize_t start = 0, end = 0;
-            int nbndry = 0, parent_flag = 0;
-            f_.read_check(cg_section_read(f_.id(), 1, z, s, name, &type, &start, &end, &nbndry, &parent_flag),
-                          "element section " + std::to_string(s) + " of " + zone_text(zone));
-            const std::string where = "section '" + std::string(name) + "' of " + zone_text(zone);
-            zone.section_names.push_back(name);
-            const std::int64_t count = static_cast<std::int64_t>(end) - start + 1;
-            if (start < 1 || count < 1 || count > limit_)
-                throw ParseError(f_.name(), 0, "an element range from 1 with 1 to " + std::to_string(limit_) +
-                                                   " elements in " + where,
-                                 std::to_string(start) + " to " + std::to_string(end));
-            CellType cell{};
-            if (type != CGNS_ENUMV(MIXED) && !cgns::cell_type_of(type, cell))
-                throw FormatError(f_.name() + ": " + where + " holds " + cgns::element_type_name(type) +
-                                  " elements; dgwarp reads linear elements only (NODE, BAR_2, TRI_3, QUAD_4, TETRA_4, "
-                                  "PYRA_5, PENTA_6, HEXA_8, and MIXED sections of them)");
-            cgsize_t data_size = 0;
-            f_.read_check(cg_ElementDataSize(f_.id(), 1, z, s, &data_size), "the connectivity size of " + where);
-            const std::int64_t expected = type == CGNS_ENUMV(MIXED) ? -1 : count * nodes_per_cell(cell);
-            if (data_size < 1 || data_size > 9 * count || (expected >= 0 && data_size != expected))
-                throw ParseError(f_.name(), 0,
-                                 expected >= 0 ? std::to_string(expected) + " connectivity values (" +
-                                                     std::to_string(count) + " " + cgns::element_type_name(type) + ") in " + where
-                                               : "at most 9 connectivity values an element in " + where,
-                                 std::to_string(data_size));
-            std::vector<cgsize_t> data(static_cast<std::size_t>(data_size));
-            std::vector<cgsize_t> parents(parent_flag ? static_cast<std::size_t>(count) * 4 : 0);
-            std::vector<cgsize_t> offsets;  // MIXED sections (CGNS 3.4's ElementStartOffset): where each element starts
-            if (type == CGNS_ENUMV(MIXED)) {
-                offsets.resize(static_cast<std::size_t>(count) + 1);
-                f_.read_check(cg_poly_elements_read(f_.id(), 1, z, s, data.data(), offsets.data(),
-                                                    parent_flag ? parents.data() : nullptr),
-                              "the connectivity of " + where);
-            } else {
-                f_.read_check(cg_elements_read(f_.id(), 1, z, s, data.data(), parent_flag ? parents.data() : nullptr),
-                              "the connectivity of " + where);
-            }
-            take_elements(zone, s - 1, where, type, start, count, data, offsets);
+            parent_flags.push_back(0);
+            sections.push_back(read_section_header(z, s, zone, parent_flags.back()));
         }
+        zone.section_cell_faces.assign(sections.size(), 0);
+        // NGON_n faces first (an NFACE_n section may come before them), checked once.
+        NgonFaces ngon;
+        for (std::size_t s = 0; s < sections.size(); ++s)
+            if (sections[s].type == CGNS_ENUMV(NGON_n)) {
+                read_connectivity(z, static_cast<int>(s) + 1, parent_flags[s], sections[s]);
+                add_ngon_faces(zone, s, sections[s], ngon);
+                drop_connectivity(sections[s]);
+            }
+        for (std::size_t s = 0; s < sections.size(); ++s) {
+            RawSection& r = sections[s];
+            if (r.type == CGNS_ENUMV(NGON_n)) {
+                take_ngon(zone, s, r, ngon);
+                continue;
+            }
+            read_connectivity(z, static_cast<int>(s) + 1, parent_flags[s], r);
+            if (r.type == CGNS_ENUMV(NFACE_n)) take_nface(zone, r, ngon);
+            else take_elements(zone, static_cast<int>(s), r.where, r.type, r.start, r.count, r.data, r.offsets);
+            drop_connectivity(r);
+        }
+    }
+
+    /// Section s's header, checked against the file's size and its element
+    /// type (its connectivity's size too, not read).
+    RawSection read_section_header(int z, int s, ZoneData& zone, int& parent_flag) {
+        char name[64] = {};
+        CGNS_ENUMT(ElementType_t) type{};
+        cgsize_t start = 0, end = 0;
+        int nbndry = 0;
+        f_.read_check(cg_section_read(f_.id(), 1, z, s, name, &type, &start, &end, &nbndry, &parent_flag),
+                      "element section " + std::to_string(s) + " of " + zone_text(zone));
+        RawSection r;
+        r.where = "section '" + std::string(name) + "' of " + zone_text(zone);
+        r.type = type;
+        r.start = start;
+        zone.section_names.push_back(name);
+        const std::string& where = r.where;
+        r.count = static_cast<std::int64_t>(end) - start + 1;
+        const std::int64_t count = r.count;
+        if (start < 1 || count < 1 || count > limit_)
+            throw ParseError(f_.name(), 0, "an element range from 1 with 1 to " + std::to_string(limit_) +
+                                               " elements in " + where,
+                             std::to_string(start) + " to " + std::to_string(end));
+        const bool poly = type == CGNS_ENUMV(NGON_n) || type == CGNS_ENUMV(NFACE_n);
+        CellType cell{};
+        if (type != CGNS_ENUMV(MIXED) && !poly && !cgns::cell_type_of(type, cell))
+            throw FormatError(f_.name() + ": " + where + " holds " + cgns::element_type_name(type) +
+                              " elements; dgwarp reads linear elements only (NODE, BAR_2, TRI_3, QUAD_4, TETRA_4, "
+                              "PYRA_5, PENTA_6, HEXA_8, MIXED sections of them, NGON_n and NFACE_n)");
+        if (type == CGNS_ENUMV(NFACE_n) && dim_ == 2)
+            throw FormatError(f_.name() + ": " + where + " holds NFACE_n elements in a 2D base; dgwarp reads a 2D "
+                              "zone's polygons as NGON_n elements (its cells), not as NFACE_n cells of edges");
+        cgsize_t data_size = 0;
+        f_.read_check(cg_ElementDataSize(f_.id(), 1, z, s, &data_size), "the connectivity size of " + where);
+        const std::int64_t expected = type == CGNS_ENUMV(MIXED) || poly ? -1 : count * nodes_per_cell(cell);
+        const std::int64_t most = poly ? limit_ : 9 * count;
+        if (data_size < 1 || data_size > most || (expected >= 0 && data_size != expected))
+            throw ParseError(f_.name(), 0,
+                             expected >= 0 ? std::to_string(expected) + " connectivity values (" + std::to_string(count) +
+                                                 " " + cgns::element_type_name(type) + ") in " + where
+                             : poly        ? "1 to " + std::to_string(most) + " connectivity values in " + where
+                                           : "at most 9 connectivity values an element in " + where,
+                             std::to_string(data_size));
+        r.data_size = data_size;
+        return r;
+    }
+
+    static void drop_connectivity(RawSection& r) {
+        std::vector<cgsize_t>().swap(r.data);
+        std::vector<cgsize_t>().swap(r.offsets);
+    }
+
+    /// Reads section s's connectivity into r.data (of its header's size), and
+    /// for MIXED, NGON_n and NFACE_n its ElementStartOffset into r.offsets.
+    void read_connectivity(int z, int s, int parent_flag, RawSection& r) {
+        r.data.resize(static_cast<std::size_t>(r.data_size));
+        const bool offsets = r.type == CGNS_ENUMV(MIXED) || r.type == CGNS_ENUMV(NGON_n) || r.type == CGNS_ENUMV(NFACE_n);
+        std::vector<cgsize_t> parents(parent_flag ? static_cast<std::size_t>(r.count) * 4 : 0);
+        if (offsets) {
+            // CGNS 3.4's ElementStartOffset: where each element starts, and the end.
+            r.offsets.resize(static_cast<std::size_t>(r.count) + 1);
+            f_.read_check(cg_poly_elements_read(f_.id(), 1, z, s, r.data.data(), r.offsets.data(),
+                                                parent_flag ? parents.data() : nullptr),
+                          "the connectivity of " + r.where);
+        } else {
+            f_.read_check(cg_elements_read(f_.id(), 1, z, s, r.data.data(), parent_flag ? parents.data() : nullptr),
+                          "the connectivity of " + r.where);
+        }
+    }
+
+    /// Element e of an NGON_n or NFACE_n section: its values data[begin .. end),
+    /// checked against the section's ElementStartOffset (from 0, not
+    /// decreasing, ending at the connectivity's size) and its least size.
+    std::pair<std::size_t, std::size_t> poly_element(const RawSection& r, std::int64_t e, std::int64_t least,
+                                                     const char* values) const {
+        const auto k = static_cast<std::size_t>(e);
+        const std::string element = "element " + std::to_string(r.start + e) + " of " + r.where;
+        const std::int64_t begin = r.offsets[k], end = r.offsets[k + 1];
+        const auto size = static_cast<std::int64_t>(r.data.size());
+        if (e == 0 && begin != 0)
+            throw ParseError(f_.name(), 0, "ElementStartOffset 0 for " + element, std::to_string(begin));
+        if (end < begin || end > size)
+            throw ParseError(f_.name(), 0,
+                             "an ElementStartOffset from " + std::to_string(begin) + " to " + std::to_string(size) +
+                                 " after " + element,
+                             std::to_string(end));
+        if (end - begin < least)
+            throw ParseError(f_.name(), 0, "at least " + std::to_string(least) + " " + values + " in " + element,
+                             std::to_string(end - begin));
+        if (e + 1 == r.count && end != size)
+            throw ParseError(f_.name(), 0,
+                             "the last ElementStartOffset of " + r.where + " to be its connectivity size " +
+                                 std::to_string(size),
+                             std::to_string(end));
+        return {static_cast<std::size_t>(begin), static_cast<std::size_t>(end)};
+    }
+
+    /// Checks an NGON_n section (node numbers in range, 3 or more nodes a face
+    /// in 3D, 2 or more in 2D) and adds its faces to `ngon`.
+    void add_ngon_faces(const ZoneData& zone, std::size_t s, const RawSection& r, NgonFaces& ngon) const {
+        ngon.ranges.push_back({r.start, r.count, s, static_cast<std::int64_t>(ngon.offsets.size()) - 1});
+        for (std::int64_t e = 0; e < r.count; ++e) {
+            const auto [begin, end] = poly_element(r, e, dim_ == 3 ? 3 : 2, "nodes (an NGON_n face)");
+            for (std::size_t k = begin; k < end; ++k) {
+                const cgsize_t v = r.data[k];
+                if (v < 1 || v > zone.vertices)
+                    throw ParseError(f_.name(), 0,
+                                     "node numbers from 1 to " + std::to_string(zone.vertices) + " in element " +
+                                         std::to_string(r.start + e) + " of " + r.where,
+                                     std::to_string(v));
+                ngon.nodes.push_back(static_cast<NodeId>(v - 1));
+            }
+            ngon.offsets.push_back(static_cast<std::int64_t>(ngon.nodes.size()));
+        }
+    }
+
+    /// An NGON_n section's elements: in 3D faces (triangles, quadrilaterals,
+    /// polygons) that BCs may name; in 2D cells (polygons of 3 or more nodes)
+    /// and edges (2 nodes).
+    void take_ngon(ZoneData& zone, std::size_t s, const RawSection& r, const NgonFaces& ngon) const {
+        std::int64_t first = 0;
+        for (const NgonFaces::Range& range : ngon.ranges)
+            if (range.section == s) first = range.first_face;
+        for (std::int64_t e = 0; e < r.count; ++e) {
+            const auto k = static_cast<std::size_t>(first + e);
+            const std::span<const NodeId> ring(ngon.nodes.data() + ngon.offsets[k],
+                                               static_cast<std::size_t>(ngon.offsets[k + 1] - ngon.offsets[k]));
+            if (dim_ == 2 && ring.size() >= 3) {
+                zone.cells.push_back(polygon_type(ring.size()), ring);
+            } else {
+                zone.faces.push_back(ring.size() == 2 ? CellType::line : polygon_type(ring.size()), ring);
+                zone.face_numbers.push_back(r.start + static_cast<cgsize_t>(e));
+                zone.face_section.push_back(static_cast<int>(s));
+            }
+        }
+    }
+
+    /// An NFACE_n section's elements (3D): polyhedra of the NGON_n faces they
+    /// name. CGNS SIDS 7.3 (Elements_t, https://cgns.github.io/CGNS_docs_current/sids/gridflow.html#Elements):
+    /// "The sign of the face number determines its orientation (i.e., the
+    /// direction of the face normal, constructed as defined by the convention
+    /// for 2-D elements). If the face number is positive, the face normal is
+    /// directed outward; if it's negative, the face normal is directed
+    /// inward." The 2-D convention (SIDS 3.3.2, conv.html#unst_2d): the
+    /// normal is (N2 - N1) x (N3 - N1), the right-hand rule. dgwarp's
+    /// polyhedra keep their faces pointing out (mesh.hpp): a face named by a
+    /// negative number is reversed. When the signs do not make the faces
+    /// agree (each edge run once each way: some writers sign every face
+    /// positive), the faces are turned by their shape (orient_polyhedron_faces);
+    /// faces that do not close a polyhedron are an error. A cell whose faces
+    /// are those of a tetrahedron, pyramid, prism or hexahedron stays a polyhedron.
+    void take_nface(ZoneData& zone, const RawSection& r, const NgonFaces& ngon) const {
+        std::vector<NodeId> rings;
+        std::vector<int> sizes;
+        for (std::int64_t e = 0; e < r.count; ++e) {
+            const std::string element = "element " + std::to_string(r.start + e) + " of " + r.where;
+            const auto [begin, end] = poly_element(r, e, 4, "faces (an NFACE_n cell)");
+            rings.clear();
+            sizes.clear();
+            for (std::size_t k = begin; k < end; ++k) {
+                const std::int64_t number = r.data[k];
+                std::size_t section = 0;
+                const std::int64_t face = number == 0 ? -1 : ngon.find(number < 0 ? -number : number, section);
+                if (face < 0)
+                    throw ParseError(f_.name(), 0,
+                                     "signed numbers of the zone's NGON_n elements in " + element,
+                                     std::to_string(number));
+                zone.section_cell_faces[section] = 1;
+                const auto f = static_cast<std::size_t>(face);
+                const auto first = static_cast<std::size_t>(ngon.offsets[f]);
+                const auto size = static_cast<std::size_t>(ngon.offsets[f + 1]) - first;
+                const std::size_t at = rings.size();
+                rings.insert(rings.end(), ngon.nodes.begin() + static_cast<std::ptrdiff_t>(first),
+                             ngon.nodes.begin() + static_cast<std::ptrdiff_t>(first + size));
+                if (number < 0)  // the face turned round, from the same first node
+                    std::reverse(rings.begin() + static_cast<std::ptrdiff_t>(at) + 1, rings.end());
+                sizes.push_back(static_cast<int>(size));
+            }
+            if (!faces_agree(rings, sizes))
+                if (const auto why = orient_polyhedron_faces(rings, sizes, zone.points))
+                    throw ParseError(f_.name(), 0, "faces that close a polyhedron in " + element, *why);
+            zone.cells.push_polyhedron(rings, sizes);
+        }
+    }
+
+    /// Whether every edge of the faces (rings one after another) is run by
+    /// exactly two of them, once each way: the faces of a closed polyhedron,
+    /// all turned out of it or all into it.
+    static bool faces_agree(std::span<const NodeId> rings, std::span<const int> sizes) {
+        std::vector<std::pair<NodeId, NodeId>> edges;
+        std::size_t at = 0;
+        for (int size : sizes) {
+            for (int i = 0; i < size; ++i)
+                edges.push_back({rings[at + static_cast<std::size_t>(i)], rings[at + static_cast<std::size_t>((i + 1) % size)]});
+            at += static_cast<std::size_t>(size);
+        }
+        std::vector<std::pair<NodeId, NodeId>> sorted = edges;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;  // an edge run twice one way
+        for (const auto& [a, b] : edges)
+            if (a == b || !std::binary_search(sorted.begin(), sorted.end(), std::pair<NodeId, NodeId>{b, a})) return false;
+        return true;
     }
 
     /// Adds a section's elements: cells and faces; other dimensions are left out.
@@ -219,6 +448,9 @@ private:
                 etype = static_cast<int>(data[at++]);
             }
             CellType t{};
+            if (etype == CGNS_ENUMV(NGON_n) || etype == CGNS_ENUMV(NFACE_n))
+                throw FormatError(f_.name() + ": " + element + " is " + cgns::element_type_name(etype) +
+                                  "; CGNS keeps NGON_n and NFACE_n elements in sections of their own, not in MIXED ones");
             if (!cgns::cell_type_of(etype, t))
                 throw FormatError(f_.name() + ": " + element + " is " + cgns::element_type_name(etype) +
                                   "; dgwarp reads linear elements only (NODE, BAR_2, TRI_3, QUAD_4, TETRA_4, PYRA_5, "
@@ -353,12 +585,23 @@ private:
         return family;
     }
 
-    /// The zone's faces whose nodes are all in the set; when it has none, the
-    /// faces of its cells that lie on its boundary (one cell) are added first.
+    /// Whether face f is a boundary element for vertex BCs: not one of the
+    /// NGON_n faces of NFACE_n cells (inner faces among them).
+    static bool boundary_candidate(const ZoneData& zone, std::size_t f) {
+        const int s = zone.face_section[f];
+        return s < 0 || !zone.section_cell_faces[static_cast<std::size_t>(s)];
+    }
+
+    /// The zone's faces whose nodes are all in the set; when it has none (the
+    /// NGON_n faces of NFACE_n cells are no such face), the faces of its cells
+    /// that lie on its boundary (one cell) are added first.
     std::vector<std::int64_t> faces_on_vertices(ZoneData& zone, const std::vector<char>& in_set) {
-        if (zone.faces.empty()) add_boundary_faces_of_cells(zone);
+        bool any = false;
+        for (std::size_t f = 0; f < zone.faces.size() && !any; ++f) any = boundary_candidate(zone, f);
+        if (!any) add_boundary_faces_of_cells(zone);
         std::vector<std::int64_t> taken;
         for (std::size_t f = 0; f < zone.faces.size(); ++f) {
+            if (!boundary_candidate(zone, f)) continue;
             const auto nodes = zone.faces.nodes_of(f);
             if (std::all_of(nodes.begin(), nodes.end(), [&](NodeId v) { return in_set[static_cast<std::size_t>(v)] != 0; }))
                 taken.push_back(static_cast<std::int64_t>(f));
@@ -517,7 +760,21 @@ Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones,
     }
     for (std::size_t z = 0; z < zones.size(); ++z) {
         const ZoneData& zone = zones[z];
-        for (std::size_t c = 0; c < zone.cells.size(); ++c) mesh.cells.push_back(zone.cells.types[c], global(z, zone.cells.nodes_of(c)));
+        for (std::size_t c = 0; c < zone.cells.size(); ++c) {
+            if (zone.cells.types[c] != CellType::polyhedron) {
+                mesh.cells.push_back(zone.cells.types[c], global(z, zone.cells.nodes_of(c)));
+                continue;
+            }
+            std::vector<NodeId> rings;
+            std::vector<int> sizes;
+            const auto [f0, f1] = zone.cells.faces_of(c);
+            for (std::int64_t f = f0; f < f1; ++f) {
+                const std::vector<NodeId> ring = global(z, zone.cells.face_nodes_of(f));
+                rings.insert(rings.end(), ring.begin(), ring.end());
+                sizes.push_back(static_cast<int>(ring.size()));
+            }
+            mesh.cells.push_polyhedron(rings, sizes);
+        }
         std::vector<char> referenced(zone.section_names.size(), 0);
         for (const ZoneBoundary& b : zone.boundaries) {
             Marker& m = marker(b.marker);
@@ -528,9 +785,10 @@ Mesh join_zones(const std::string& file, int dim, std::vector<ZoneData>& zones,
                 if (zone.face_section[fi] >= 0) referenced[static_cast<std::size_t>(zone.face_section[fi])] = 1;
             }
         }
-        // Face sections no BC refers to: markers of their sections' names.
+        // Face sections no BC refers to: markers of their sections' names
+        // (not the NGON_n faces of NFACE_n cells: inner faces too).
         for (std::size_t s = 0; s < zone.section_names.size(); ++s) {
-            if (referenced[s]) continue;
+            if (referenced[s] || zone.section_cell_faces[s]) continue;
             Marker* m = nullptr;
             for (std::size_t f = 0; f < zone.faces.size(); ++f) {
                 if (zone.face_section[f] != static_cast<int>(s)) continue;
