@@ -11,6 +11,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/cgns.hpp"
 #include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/openfoam_poly_mesh.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "support/cgns_test_writer.hpp"
@@ -115,14 +116,29 @@ TestZone cgns_square_zone() {
 }
 
 /// The face rings of polyhedron c of `list`, in order.
-std::vector<std::vector<NodeId>> cgns_polyhedron_faces(const ElementList& list, std::size_t c) {
-    std::vector<std::vector<NodeId>> faces;
-    const auto [f0, f1] = list.faces_of(c);
-    for (std::int64_t f = f0; f < f1; ++f) {
-        const auto ring = list.face_nodes_of(f);
-        faces.emplace_back(ring.begin(), ring.end());
-    }
+/// Faces as cycles from their smallest node, sorted: the same faces turned the same way compare equal.
+std::vector<std::vector<NodeId>> cgns_cycles(std::vector<std::vector<NodeId>> faces) {
+    for (auto& f : faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    std::sort(faces.begin(), faces.end());
     return faces;
+}
+
+/// The outward faces of cell c of any type (a fixed type's from
+/// foam::outward_faces), each as a cycle from its smallest node, sorted.
+std::vector<std::vector<NodeId>> cgns_cell_faces(const ElementList& list, std::size_t c) {
+    std::vector<std::vector<NodeId>> faces;
+    if (list.types[c] == CellType::polyhedron) {
+        const auto [f0, f1] = list.faces_of(c);
+        for (std::int64_t f = f0; f < f1; ++f) faces.emplace_back(list.face_nodes_of(f).begin(), list.face_nodes_of(f).end());
+    } else {
+        const auto nodes = list.nodes_of(c);
+        const foam::FaceTable& t = foam::outward_faces(list.types[c]);
+        for (int k = 0; k < t.count; ++k) {
+            faces.emplace_back();
+            for (int i = 0; i < t.size[k]; ++i) faces.back().push_back(nodes[static_cast<std::size_t>(t.node[k][i])]);
+        }
+    }
+    return cgns_cycles(std::move(faces));
 }
 
 }  // namespace
@@ -405,14 +421,13 @@ TEST(CgnsRead, NfaceCellsArePolyhedraTheirFacesTurnedOut) {
         const Mesh mesh = read_cgns(dir / "cube.cgns");
         EXPECT_EQ(mesh.points, (std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1}));
         ASSERT_EQ(mesh.cells.size(), 2u) << cells_first;
-        EXPECT_EQ(mesh.cells.types, (std::vector<CellType>{CellType::polyhedron, CellType::polyhedron}));
+        // Prisms by their faces (as OpenFOAM's cells are read).
+        EXPECT_EQ(mesh.cells.types, (std::vector<CellType>{CellType::prism, CellType::prism}));
         // A: faces -1, 3, 5, 6, -9; B: -2, 4, 7, 8, 9 (0-based nodes).
-        EXPECT_EQ(cgns_polyhedron_faces(mesh.cells, 0),
-                  (std::vector<std::vector<NodeId>>{{0, 2, 1}, {4, 5, 6}, {0, 1, 5, 4}, {1, 2, 6, 5}, {0, 4, 6, 2}}));
-        EXPECT_EQ(cgns_polyhedron_faces(mesh.cells, 1),
-                  (std::vector<std::vector<NodeId>>{{0, 3, 2}, {4, 6, 7}, {2, 3, 7, 6}, {3, 0, 4, 7}, {0, 2, 6, 4}}));
-        const auto a = mesh.cells.nodes_of(0);
-        EXPECT_EQ(std::vector<NodeId>(a.begin(), a.end()), (std::vector<NodeId>{0, 2, 1, 4, 5, 6}));
+        EXPECT_EQ(cgns_cell_faces(mesh.cells, 0),
+                  cgns_cycles({{0, 2, 1}, {4, 5, 6}, {0, 1, 5, 4}, {1, 2, 6, 5}, {0, 4, 6, 2}}));
+        EXPECT_EQ(cgns_cell_faces(mesh.cells, 1),
+                  cgns_cycles({{0, 3, 2}, {4, 6, 7}, {2, 3, 7, 6}, {3, 0, 4, 7}, {0, 2, 6, 4}}));
         for (std::size_t c = 0; c < 2; ++c) {
             EXPECT_EQ(element_orientation(mesh.cells, c, 3, mesh.points), 1) << c;
             EXPECT_GT(element_shape_quality(mesh.cells, c, 3, mesh.points), 0.5) << c;
@@ -431,8 +446,11 @@ TEST(CgnsRead, NfaceCellsArePolyhedraTheirFacesTurnedOut) {
     const Mesh bare = read_cgns(dir / "bare.cgns");
     ASSERT_EQ(bare.markers.size(), 1u);
     EXPECT_EQ(bare.markers[0].name, "exterior");
-    EXPECT_EQ(bare.markers[0].elements.nodes,
-              (std::vector<NodeId>{0, 2, 1, 4, 5, 6, 0, 1, 5, 4, 1, 2, 6, 5, 0, 3, 2, 4, 6, 7, 2, 3, 7, 6, 3, 0, 4, 7}));
+    std::vector<std::vector<NodeId>> exterior;
+    for (std::size_t e = 0; e < bare.markers[0].elements.size(); ++e)
+        exterior.emplace_back(bare.markers[0].elements.nodes_of(e).begin(), bare.markers[0].elements.nodes_of(e).end());
+    EXPECT_EQ(cgns_cycles(exterior), cgns_cycles({{0, 2, 1}, {4, 5, 6}, {0, 1, 5, 4}, {1, 2, 6, 5}, {0, 3, 2}, {4, 6, 7},
+                                                  {2, 3, 7, 6}, {3, 0, 4, 7}}));
 }
 
 // A pyramid-shaped NFACE_n cell, three of its five faces written turned into
@@ -447,14 +465,15 @@ TEST(CgnsRead, NegativeFaceNumbersTurnTheFaceRound) {
         write_test_cgns(dir / "pyramid.cgns", 3, {pyramid_test_zone(signs)});
         const Mesh mesh = read_cgns(dir / "pyramid.cgns");
         ASSERT_EQ(mesh.cells.size(), 1u);
-        EXPECT_EQ(cgns_polyhedron_faces(mesh.cells, 0), outward) << signs[0];
+        EXPECT_EQ(mesh.cells.types[0], CellType::pyramid);
+        EXPECT_EQ(cgns_cell_faces(mesh.cells, 0), cgns_cycles(outward)) << signs[0];
         EXPECT_EQ(element_orientation(mesh.cells, 0, 3, mesh.points), 1);
         EXPECT_GT(element_shape_quality(mesh.cells, 0, 3, mesh.points), 0);
     }
     write_test_cgns(dir / "inverted.cgns", 3, {pyramid_test_zone({1, -1, 1, -1, 1})});
     const Mesh inverted = read_cgns(dir / "inverted.cgns");
-    EXPECT_EQ(cgns_polyhedron_faces(inverted.cells, 0),
-              (std::vector<std::vector<NodeId>>{{0, 1, 2, 3}, {0, 4, 1}, {1, 4, 2}, {2, 4, 3}, {3, 4, 0}}));
+    EXPECT_EQ(inverted.cells.types[0], CellType::pyramid);  // a pyramid turned inside out
+    EXPECT_EQ(cgns_cell_faces(inverted.cells, 0), cgns_cycles({{0, 1, 2, 3}, {0, 4, 1}, {1, 4, 2}, {2, 4, 3}, {3, 4, 0}}));
     EXPECT_EQ(element_orientation(inverted.cells, 0, 3, inverted.points), -1);
     EXPECT_LE(element_shape_quality(inverted.cells, 0, 3, inverted.points), 0);
 }

@@ -409,7 +409,10 @@ private:
             if (!faces_agree(rings, sizes))
                 if (const auto why = orient_polyhedron_faces(rings, sizes, zone.points))
                     throw ParseError(f_.name(), 0, "faces that close a polyhedron in " + element, *why);
-            zone.cells.push_polyhedron(rings, sizes);
+            // A cell whose faces make a tetrahedron, pyramid, prism or hexahedron is
+            // one (as OpenFOAM's are read); any other a polyhedron in a form that
+            // depends only on its faces: what write_cgns writes reads back the same.
+            foam::push_cell_from_faces(rings, sizes, zone.cells);
         }
     }
 

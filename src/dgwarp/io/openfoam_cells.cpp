@@ -60,6 +60,24 @@ void push_canonical_polyhedron(std::span<const NodeId> rings, std::span<const in
     out.push_polyhedron(sorted, sorted_sizes);
 }
 
+void push_cell_from_faces(std::span<const NodeId> rings, std::span<const int> sizes, ElementList& out) {
+    if (sizes.size() <= 6 && std::all_of(sizes.begin(), sizes.end(), [](int n) { return n <= 4; })) {
+        CellFaces cf;
+        std::size_t at = 0;
+        for (int size : sizes) {
+            cf.size[static_cast<std::size_t>(cf.count)] = size;
+            for (int i = 0; i < size; ++i) cf.node[static_cast<std::size_t>(cf.count)][static_cast<std::size_t>(i)] = rings[at++];
+            ++cf.count;
+        }
+        const OrderedCell oc = order_cell(cf);
+        if (oc.shape == CellShape::ok) {
+            out.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
+            return;
+        }
+    }
+    push_canonical_polyhedron(rings, sizes, out);
+}
+
 namespace {
 
 /// The face of `f` holding the directed edge a -> b: its index and the

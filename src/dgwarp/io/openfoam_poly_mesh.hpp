@@ -133,6 +133,11 @@ OrderedCell order_cell(const CellFaces& faces);
 /// decomposed case's processors give the serial case's cells.
 void push_canonical_polyhedron(std::span<const NodeId> rings, std::span<const int> sizes, ElementList& out);
 
+/// Appends the cell whose outward faces are `rings`: the tetrahedron,
+/// pyramid, prism or hexahedron order_cell makes of them, else (other faces,
+/// or faces that do not close such a cell) push_canonical_polyhedron's.
+void push_cell_from_faces(std::span<const NodeId> rings, std::span<const int> sizes, ElementList& out);
+
 /// The Mesh's cells from the polyMesh (cell c: the faces that c owns or
 /// neighbours): tetrahedra, pyramids, prisms and hexahedra (order_cell), any
 /// other cell a polyhedron with its faces pointing out of it
