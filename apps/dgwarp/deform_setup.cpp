@@ -254,6 +254,12 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
         in.planar = std::move(typed.planar);
     }
     in.boundary = resolve_boundary(in.mesh, in.spec);
+    if (!typed.cyclic.empty())
+        in.boundary.warnings.push_back(
+            {WarningCode::other, "the cyclic patches " + joined(typed.cyclic) +
+                                     " move as the motion says (fixed unless it names them), each on its own: dgwarp "
+                                     "does not couple a cyclic patch's two halves yet, so give both halves the same "
+                                     "motion, or none, for them to still match"});
     if (!in.not_planar.empty())
         in.boundary.warnings.push_back(
             {WarningCode::other, "the empty or wedge patches slide but do not make a 2D case (" + in.not_planar +

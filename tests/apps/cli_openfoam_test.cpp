@@ -494,3 +494,31 @@ TEST(CliOpenFoam, ASnappyHexMeshCaseWithPolyhedraDeformsWithEveryMethod) {
         << su2.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "s.su2"));
 }
+
+TEST(CliOpenFoam, CyclicPatchesAreSaidNotToBeCoupledAndProcessorCyclicIsRefused) {
+    // The cavity with its fixedWalls given the type cyclic: deform warns that
+    // their halves are not coupled (they stay fixed, as the motion says).
+    const auto dir = scratch_dir();
+    const auto c = foam_case_copy("cavity", dir);
+    const auto boundary = c / "constant" / "polyMesh" / "boundary";
+    std::string text = slurp(boundary);
+    const std::size_t at = text.find("type", text.find("fixedWalls"));
+    text.replace(at, text.find(';', at) - at, "type cyclic");
+    write_text(boundary, text);
+    const auto motion = write_text(dir / "m.json", R"({"markers": {"movingWall": {"translate": [0, 0.001, 0]}}})");
+    CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(dir / "out/"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE((r.out + r.err).find("the cyclic patches fixedWalls move as the motion says"), std::string::npos)
+        << r.out << r.err;
+    // A decomposed case whose processor patch is processorCyclic: refused, naming it, nothing written.
+    const auto d = foam_case_copy("mixed-decomposed", dir);
+    const auto b0 = d / "processor0" / "constant" / "polyMesh" / "boundary";
+    std::string b = slurp(b0);
+    const std::size_t p = b.find("type", b.find("procBoundary0to1"));
+    b.replace(p, b.find(';', p) - p, "type            processorCyclic");
+    write_text(b0, b);
+    r = run_cli("deform " + quoted(d) + " -m " + quoted(write_text(dir / "t.json", foam_lift_top)) + " -o " + quoted(d));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find("patch 'procBoundary0to1' is of type processorCyclic"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(d / "processor0" / "0"));
+}

@@ -25,6 +25,10 @@ std::vector<std::string> markers_sliding_by_type(const Mesh& mesh, const MeshExt
     return sliding;
 }
 
+bool is_cyclic_type(std::string_view type) {
+    return type == "cyclic" || type == "cyclicAMI" || type == "cyclicACMI" || type == "cyclicSlip";
+}
+
 TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, MotionSpec& spec,
                                const std::vector<std::string>& also) {
     TypedMotion typed;
@@ -38,6 +42,8 @@ TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, Motio
             sliding.push_back(name);
     }
     typed.sliding = slide_unless_named(spec, sliding);
+    for (std::size_t m = 0; m < types.size(); ++m)
+        if (is_cyclic_type(types[m])) typed.cyclic.push_back(mesh.markers[m].name);
     if (mesh.dim != 3) return typed;
     std::vector<std::size_t> planes;
     std::string axis;

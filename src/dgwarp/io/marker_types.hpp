@@ -34,7 +34,14 @@ struct TypedMotion {
     std::optional<PlanarCase> planar;
     /// When they all slide but are not such a case: why (they then slide in 3D).
     std::string not_planar;
+    /// The markers of an OpenFOAM cyclic type (cyclic, cyclicAMI, cyclicACMI,
+    /// cyclicSlip): dgwarp does not couple a cyclic patch's two halves, so they
+    /// move as the motion says (fixed by default), each on its own; the caller warns.
+    std::vector<std::string> cyclic;
 };
+
+/// Whether `type` is one of OpenFOAM's cyclic patch types (not processorCyclic).
+bool is_cyclic_type(std::string_view type);
 
 /// Makes the markers that slide by their type, and the markers `also` (an
 /// SU2 configuration's MARKER_SYM: io/su2_config.hpp; names of `mesh`'s

@@ -264,6 +264,14 @@ std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, st
                 patch.info.type = value;
                 has_type = true;
                 patch.processor = value == "processor" || value == "processorCyclic";
+                // A cyclic patch's faces on a processor boundary: read as interfaces they
+                // would be lost from the cyclic patch, and the written mesh broken.
+                if (value == "processorCyclic")
+                    throw FormatError(s.file() + ":" + str(static_cast<std::int64_t>(line)) + ": patch '" + patch.name +
+                                      "' is of type processorCyclic (faces of a cyclic patch on a processor "
+                                      "boundary): dgwarp does not couple cyclic patches across processors yet; "
+                                      "reconstruct the case (reconstructParMesh -constant), deform the serial case, "
+                                      "and decompose it again");
                 if (patch.processor && !processor_patches)
                     throw FormatError(s.file() + ":" + str(static_cast<std::int64_t>(line)) + ": patch '" + patch.name +
                                       "' is of type " + value +
