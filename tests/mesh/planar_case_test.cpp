@@ -259,5 +259,50 @@ TEST(PlanarCase, MeshesThatAreNotOneLayerSayWhy) {
     EXPECT_NE(h.not_planar.find("one plane"), std::string::npos) << h.not_planar;
 }
 
+
+TEST(PlanarCase, APolyhedralLayerIsItsPolygons) {
+    // One layer (z from 0 to 1) of a pentagonal prism given as a polyhedron
+    // (nodes 0-4 below, 7-11 above) beside a hexahedron on its edge 0-1
+    // (nodes 5, 6 below, 12, 13 above): the 2D mesh is a pentagon and a
+    // quadrilateral, counter-clockwise, and the walls' side faces their edges.
+    Mesh mesh;
+    const double xy[7][2] = {{0, 0}, {1, 0}, {1.3, 0.8}, {0.5, 1.3}, {-0.3, 0.8}, {0, -1}, {1, -1}};
+    for (double z : {0.0, 1.0})
+        for (const auto& p : xy) mesh.points.insert(mesh.points.end(), {p[0], p[1], z});
+    std::vector<NodeId> rings{0, 4, 3, 2, 1, 7, 8, 9, 10, 11};
+    std::vector<int> sizes{5, 5};
+    for (NodeId a = 0; a < 5; ++a) {
+        const NodeId b = (a + 1) % 5;
+        rings.insert(rings.end(), {a, b, static_cast<NodeId>(b + 7), static_cast<NodeId>(a + 7)});
+        sizes.push_back(4);
+    }
+    mesh.cells.push_polyhedron(rings, sizes);
+    mesh.cells.push_back(CellType::hexahedron, std::array<NodeId, 8>{5, 6, 1, 0, 12, 13, 8, 7});
+    Marker front{"front", {}}, back{"back", {}}, walls{"walls", {}};
+    front.elements.push_back(CellType::polygon, std::array<NodeId, 5>{0, 4, 3, 2, 1});
+    front.elements.push_back(CellType::quadrilateral, std::array<NodeId, 4>{5, 0, 1, 6});
+    back.elements.push_back(CellType::polygon, std::array<NodeId, 5>{7, 8, 9, 10, 11});
+    back.elements.push_back(CellType::quadrilateral, std::array<NodeId, 4>{12, 13, 8, 7});
+    for (const auto& q : {std::array<NodeId, 4>{1, 2, 9, 8}, std::array<NodeId, 4>{2, 3, 10, 9},
+                          std::array<NodeId, 4>{3, 4, 11, 10}, std::array<NodeId, 4>{4, 0, 7, 11},
+                          std::array<NodeId, 4>{5, 6, 13, 12}, std::array<NodeId, 4>{6, 1, 8, 13},
+                          std::array<NodeId, 4>{0, 5, 12, 7}})
+        walls.elements.push_back(CellType::quadrilateral, q);
+    mesh.markers = {front, back, walls};
+    validate(mesh);
+    const std::size_t planes[] = {0, 1};
+    const PlanarCaseResult r = find_planar_case(mesh, planes);
+    ASSERT_TRUE(r.planar.has_value()) << r.not_planar;
+    const PlanarCase& p = *r.planar;
+    ASSERT_EQ(p.mesh.cells.types, (std::vector<CellType>{CellType::polygon, CellType::quadrilateral}));
+    EXPECT_NEAR(test::signed_area(p.mesh, 0), 1.44, 1e-12);  // the pentagon's shoelace area
+    EXPECT_NEAR(test::signed_area(p.mesh, 1), 1.0, 1e-12);
+    ASSERT_EQ(p.mesh.markers.size(), 1u);
+    EXPECT_EQ(p.mesh.markers[0].name, "walls");
+    EXPECT_EQ(p.mesh.markers[0].elements.size(), 7u);
+    EXPECT_EQ(p.mesh.num_points(), 7u);
+    for (std::size_t v = 7; v < 14; ++v) EXPECT_EQ(p.node_2d[v], p.node_2d[v - 7]) << v;  // twins
+}
+
 }  // namespace
 }  // namespace dgwarp

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace dgwarp {
 
@@ -38,12 +39,12 @@ constexpr int hex_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}
                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 constexpr int prism_edges[9][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}, {0, 3}, {1, 4}, {2, 5}};
 
-using FaceKey = std::array<NodeId, 4>;
+/// A face by its sorted nodes (any number: a polyhedron's face on a plane is a polygon).
+using FaceKey = std::vector<NodeId>;
 
 FaceKey key_of(std::span<const NodeId> nodes) {
-    FaceKey k{-1, -1, -1, -1};
-    for (std::size_t i = 0; i < nodes.size() && i < k.size(); ++i) k[i] = nodes[i];
-    std::sort(k.begin(), k.end());  // the -1s of a triangle first
+    FaceKey k(nodes.begin(), nodes.end());
+    std::sort(k.begin(), k.end());
     return k;
 }
 
@@ -201,7 +202,6 @@ PlanarCaseResult find_planar_case(const Mesh& mesh, std::span<const std::size_t>
         const ElementList& list = mesh.markers[m].elements;
         for (std::size_t f = 0; f < list.size(); ++f) {
             const auto nodes = list.nodes_of(f);
-            if (nodes.size() > 4) return not_planar("a face of marker '" + mesh.markers[m].name + "' has more than 4 nodes");
             if (std::all_of(nodes.begin(), nodes.end(), [&](NodeId v) { return (side[static_cast<std::size_t>(v)] & 1) != 0; }))
                 faces.push_back({key_of(nodes), {m, f}});
         }
@@ -215,12 +215,14 @@ PlanarCaseResult find_planar_case(const Mesh& mesh, std::span<const std::size_t>
         const CellType type = mesh.cells.types[c];
         const auto nodes = mesh.cells.nodes_of(c);
         const std::string cell = "cell " + std::to_string(c);
-        if (type != CellType::hexahedron && type != CellType::prism)
-            return not_planar(cell + " is a " + std::string(cell_type_name(type)) + ", not a hexahedron or prism");
+        if (type != CellType::hexahedron && type != CellType::prism && type != CellType::polyhedron)
+            return not_planar(cell + " is a " + std::string(cell_type_name(type)) +
+                              ", not a hexahedron, prism or polyhedron");
         cell_nodes.clear();
         for (NodeId v : nodes)
             if (side[static_cast<std::size_t>(v)] & 1) cell_nodes.push_back(v);
-        if (cell_nodes.size() < 3 || cell_nodes.size() > 4) return not_planar(cell + " does not span the layer");
+        if (cell_nodes.size() < 3 || (type != CellType::polyhedron && cell_nodes.size() > 4))
+            return not_planar(cell + " does not span the layer");
         const FaceKey key = key_of(cell_nodes);
         const auto it = std::lower_bound(faces.begin(), faces.end(), key,
                                          [](const auto& e, const FaceKey& k) { return e.first < k; });
@@ -228,7 +230,7 @@ PlanarCaseResult find_planar_case(const Mesh& mesh, std::span<const std::size_t>
         // The face points out of the mesh: reversed, it turns counter-clockwise about the normal into it.
         const auto face = mesh.markers[it->second.first].elements.nodes_of(it->second.second);
         std::vector<NodeId> reversed(face.rbegin(), face.rend());
-        planar.mesh.cells.push_back(face.size() == 4 ? CellType::quadrilateral : CellType::triangle, reversed);
+        planar.mesh.cells.push_back(polygon_type(face.size()), reversed);
         const auto edge = [&](int a, int b) -> bool {
             NodeId p = nodes[static_cast<std::size_t>(a)], q = nodes[static_cast<std::size_t>(b)];
             if (side[static_cast<std::size_t>(p)] == 1) std::swap(p, q);
@@ -239,10 +241,21 @@ PlanarCaseResult find_planar_case(const Mesh& mesh, std::span<const std::size_t>
             return true;
         };
         bool ok = true;
-        if (type == CellType::hexahedron)
+        if (type == CellType::hexahedron) {
             for (const auto& e : hex_edges) ok = ok && edge(e[0], e[1]);
-        else
+        } else if (type == CellType::prism) {
             for (const auto& e : prism_edges) ok = ok && edge(e[0], e[1]);
+        } else {  // a polyhedron: the edges of its faces
+            const auto position = [&](NodeId v) {
+                return static_cast<int>(std::find(nodes.begin(), nodes.end(), v) - nodes.begin());
+            };
+            const auto [f0, f1] = mesh.cells.faces_of(c);
+            for (std::int64_t f = f0; f < f1 && ok; ++f) {
+                const auto ring = mesh.cells.face_nodes_of(f);
+                for (std::size_t k = 0; k < ring.size() && ok; ++k)
+                    ok = edge(position(ring[k]), position(ring[(k + 1) % ring.size()]));
+            }
+        }
         if (!ok) return not_planar(cell + " joins a node of the second plane to a second node of the first");
     }
 

@@ -5,7 +5,8 @@
 // meeting at an axis (its `wedge` patches: an axisymmetric case, the cells at
 // the axis prisms with an edge on it). It is deformed as the 2D mesh it is
 // (docs/OPENFOAM.md "2D and axisymmetric cases"): the cells' faces on the
-// first plane are the 2D cells, each other marker's faces give it their edges
+// first plane are the 2D cells (triangles, quadrilaterals, and the polygons of
+// a polyhedral layer: polyDualMesh's, snappyHexMesh's 2D cases), each other marker's faces give it their edges
 // on that plane, and every node of the second plane moves as its twin on the
 // first (the node a cell edge across the layer joins it to), in its own
 // plane: the planes stay planes and the twins stay twins.
@@ -64,7 +65,8 @@ struct PlanarCaseResult {
 /// patch). Not one: faces of those markers on more or fewer than two planes
 /// (parallel, or two markers meeting at an axis; nodes within 1e-6 of the
 /// bounding-box diagonal of their plane), a node on neither, a cell other
-/// than a hexahedron or prism or without a face on the first plane, or a face
+/// than a hexahedron, prism or polyhedron or without a face on the first
+/// plane, an edge joining a node of the second plane to two of the first, or a face
 /// of another marker without exactly one edge on the first plane.
 PlanarCaseResult find_planar_case(const Mesh& mesh, std::span<const std::size_t> plane_markers,
                                   const std::string& axis_name = "axis");
