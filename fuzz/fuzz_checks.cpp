@@ -2,6 +2,7 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <filesystem>
@@ -147,7 +148,12 @@ void check_cgns(std::span<const std::uint8_t> data) {
     } catch (const Error&) {
         return;  // a mesh the writer cannot store (a marker name CGNS cannot hold, an empty marker)
     }
-    require(read_cgns(written) == mesh, "CGNS write then read changed the mesh");
+    // A marker without elements is written as a boundary family, which comes
+    // back after the BCs' markers (docs/CGNS.md): compare in that order.
+    Mesh expected = mesh;
+    std::stable_partition(expected.markers.begin(), expected.markers.end(),
+                          [](const Marker& m) { return !m.elements.empty(); });
+    require(read_cgns(written) == expected, "CGNS write then read changed the mesh");
 }
 
 void check_motion(std::span<const std::uint8_t> data) {
