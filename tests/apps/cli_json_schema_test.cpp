@@ -71,6 +71,11 @@ TEST(CliJsonSchema, InfoAndQualityReportsValidateAndTamperedOnesDoNot) {
     expect_invalid(c.dir, "info", info, [](auto& j) { j["mesh"]["markers"][0].erase("elements"); }, "elements");
     expect_invalid(c.dir, "quality", quality, [](auto& j) { j.erase("ratio"); }, "ratio");
     expect_invalid(c.dir, "quality", quality, [](auto& j) { j["ratio"]["worst"] = 0; }, "worst");
+    // A mesh of polyhedra (snappyHexMesh's, tests/data/openfoam) names its cell types too.
+    const nlohmann::json poly =
+        valid_report(c.dir, "info", quoted(source_dir() / "tests/data/openfoam/snappy-sphere") + " --json");
+    EXPECT_EQ(poly["mesh"]["cell_types"]["polyhedron"], 272);
+    expect_invalid(c.dir, "info", poly, [](auto& j) { j["mesh"]["cell_types"]["polytope"] = 1; }, "polytope");
 }
 
 TEST(CliJsonSchema, DeformAndPrepareReportsValidateAndTamperedOnesDoNot) {
