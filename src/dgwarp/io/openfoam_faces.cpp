@@ -41,15 +41,18 @@ std::array<NodeId, 4> face_key(std::span<const NodeId> nodes) {
 }
 
 /// The nodes of face `local` of cell c, turned out of the cell.
-std::vector<NodeId> cell_face(const Mesh& mesh, std::int64_t c, std::int64_t local) {
+/// The nodes of face `local` of cell c, turned out of the cell, into `out`
+/// (reused: no allocation per face once it has grown).
+std::span<const NodeId> cell_face(const Mesh& mesh, std::int64_t c, std::int64_t local, std::vector<NodeId>& out) {
     const auto cell = static_cast<std::size_t>(c);
     if (mesh.cells.types[cell] == CellType::polyhedron) {
         const auto ring = mesh.cells.face_nodes_of(local);
-        return {ring.begin(), ring.end()};
+        out.assign(ring.begin(), ring.end());
+        return out;
     }
     const auto nodes = mesh.cells.nodes_of(cell);
     const FaceTable& t = outward_faces(mesh.cells.types[cell]);
-    std::vector<NodeId> out(static_cast<std::size_t>(t.size[local]));
+    out.resize(static_cast<std::size_t>(t.size[local]));
     for (int i = 0; i < t.size[local]; ++i) out[static_cast<std::size_t>(i)] = nodes[static_cast<std::size_t>(t.node[local][i])];
     return out;
 }
@@ -132,18 +135,19 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
     };
     std::vector<Internal> internal;
     std::vector<KeyedFace> boundary;  // sorted by key
+    std::vector<NodeId> a, b, turned;  // a face's nodes, reused
     for (std::size_t i = 0; i < all.size();) {
         std::size_t j = i + 1;
         while (j < all.size() && same_face(all[j], all[i])) ++j;
         if (j - i > 2)
             throw MeshError("cells " + std::to_string(all[i].cell) + ", " + std::to_string(all[i + 1].cell) + " and " +
                                 std::to_string(all[i + 2].cell) + " share a face (nodes " +
-                                nodes_text(cell_face(mesh, all[i].cell, all[i].local)) +
+                                nodes_text(cell_face(mesh, all[i].cell, all[i].local, a)) +
                                 "): OpenFOAM faces have at most two cells",
                             "", all[i].cell);
         if (j - i == 2) {
-            const std::vector<NodeId> a = cell_face(mesh, all[i].cell, all[i].local);
-            std::vector<NodeId> b = cell_face(mesh, all[i + 1].cell, all[i + 1].local);
+            cell_face(mesh, all[i].cell, all[i].local, a);
+            cell_face(mesh, all[i + 1].cell, all[i + 1].local, b);
             const auto n = static_cast<int>(a.size());
             std::reverse(b.begin(), b.end());
             if (!same_cycle(a.data(), b.data(), n))
@@ -173,7 +177,7 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
         pm.owner.push_back(static_cast<std::int32_t>(owner));  // in range: check_label_size above
     };
     for (const Internal& f : internal) {
-        add_face(cell_face(mesh, f.owner, f.local), f.owner);
+        add_face(cell_face(mesh, f.owner, f.local, a), f.owner);
         pm.neighbour.push_back(static_cast<std::int32_t>(f.neighbour));
     }
 
@@ -209,10 +213,10 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
                                 marker.name, static_cast<std::int64_t>(e));
             taken[b] = static_cast<std::int64_t>(m);
             // The cell's outward face, from the element's first node.
-            const std::vector<NodeId> face = cell_face(mesh, it->cell, it->local);
+            const std::span<const NodeId> face = cell_face(mesh, it->cell, it->local, a);
             const std::size_t n = face.size();
             const auto at = static_cast<std::size_t>(std::find(face.begin(), face.end(), element[0]) - face.begin());
-            std::vector<NodeId> turned(n);
+            turned.resize(n);
             for (std::size_t i = 0; i < n; ++i) turned[i] = face[(at + i) % n];
             add_face(turned, it->cell);
         }
@@ -227,7 +231,7 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
         });
         Patch patch{"defaultFaces", {}, static_cast<std::int64_t>(pm.num_faces()),
                     static_cast<std::int64_t>(rest.size()), 0};
-        for (const KeyedFace* f : rest) add_face(cell_face(mesh, f->cell, f->local), f->cell);
+        for (const KeyedFace* f : rest) add_face(cell_face(mesh, f->cell, f->local, a), f->cell);
         pm.patches.push_back(std::move(patch));
     }
     check_label_size(ncells, static_cast<std::int64_t>(pm.face_nodes.size()));
