@@ -1,11 +1,14 @@
 #include "dgwarp/io/gmsh_element_types.hpp"
 
+#include <iterator>
+
 namespace dgwarp::msh {
 
 namespace {
 // Gmsh ids indexed by CellType (vertex, line, triangle, quadrilateral,
-// tetrahedron, hexahedron, prism, pyramid).
-constexpr int gmsh_ids[] = {15, 1, 2, 3, 4, 5, 6, 7};
+// tetrahedron, hexahedron, prism, pyramid; polygon and polyhedron: none, -1).
+constexpr int gmsh_ids[] = {15, 1, 2, 3, 4, 5, 6, 7, -1, -1};
+static_assert(std::size(gmsh_ids) == std::size(all_cell_types));
 
 constexpr int identity[] = {0, 1, 2, 3, 4, 5, 6, 7};
 constexpr int prism_order[] = {0, 2, 1, 3, 5, 4};
@@ -13,7 +16,7 @@ constexpr int prism_order[] = {0, 2, 1, 3, 5, 4};
 
 std::optional<CellType> cell_type_from_gmsh_id(int id) {
     for (CellType t : all_cell_types)
-        if (gmsh_type_id(t) == id) return t;
+        if (gmsh_type_id(t) == id && id >= 0) return t;
     return std::nullopt;
 }
 
