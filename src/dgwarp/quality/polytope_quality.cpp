@@ -147,6 +147,16 @@ std::vector<CornerRatio> polyhedron_pieces(const ElementList& list, std::size_t 
     return pieces;
 }
 
+/// The coordinates of element i (of a fixed type: at most 8 nodes) in `out`, nodes × dim.
+std::span<const double> fixed_cell_coords(const ElementList& list, std::size_t i, int dim, std::span<const double> points,
+                                          std::array<double, 24>& out) {
+    const auto nodes = list.nodes_of(i);
+    const auto d = static_cast<std::size_t>(dim);
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+        for (std::size_t k = 0; k < d; ++k) out[n * d + k] = points[static_cast<std::size_t>(nodes[n]) * d + k];
+    return {out.data(), nodes.size() * d};
+}
+
 }  // namespace
 
 double element_shape_quality(const ElementList& list, std::size_t i, int dim, std::span<const double> points,
@@ -158,13 +168,8 @@ double element_shape_quality(const ElementList& list, std::size_t i, int dim, st
         return quality_detail::combine_corners(polygon_pieces(x, dim == 2, sign, nullptr));
     }
     if (type == CellType::polyhedron) return quality_detail::combine_corners(polyhedron_pieces(list, i, points, sign, nullptr));
-    const auto nodes = list.nodes_of(i);
     std::array<double, 24> coords;
-    for (std::size_t n = 0; n < nodes.size(); ++n)
-        for (int k = 0; k < dim; ++k)
-            coords[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)] =
-                points[static_cast<std::size_t>(nodes[n]) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
-    return cell_shape_quality(type, {coords.data(), nodes.size() * static_cast<std::size_t>(dim)}, dim, sign);
+    return cell_shape_quality(type, fixed_cell_coords(list, i, dim, points, coords), dim, sign);
 }
 
 int element_orientation(const ElementList& list, std::size_t i, int dim, std::span<const double> points) {
@@ -177,13 +182,8 @@ int element_orientation(const ElementList& list, std::size_t i, int dim, std::sp
     } else if (type == CellType::polyhedron) {
         polyhedron_pieces(list, i, points, 1, &measure);
     } else {
-        const auto nodes = list.nodes_of(i);
         std::array<double, 24> coords;
-        for (std::size_t n = 0; n < nodes.size(); ++n)
-            for (int k = 0; k < dim; ++k)
-                coords[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)] =
-                    points[static_cast<std::size_t>(nodes[n]) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
-        return cell_orientation(type, {coords.data(), nodes.size() * static_cast<std::size_t>(dim)}, dim);
+        return cell_orientation(type, fixed_cell_coords(list, i, dim, points, coords), dim);
     }
     return measure < 0 ? -1 : 1;
 }
