@@ -344,6 +344,11 @@ bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& metho
         // Sliding markers (2D cases, symmetry planes) need every boundary node
         // in one first pass: the whole case is read on rank 0.
         const std::vector<OpenFoamPatchType> patches = openfoam_patch_types(processors.front());
+        // So do cyclic patches: a node's image may be on another processor.
+        if (std::any_of(patches.begin(), patches.end(), [](const OpenFoamPatchType& p) {
+                return is_cyclic_type(p.type) || p.type == "processorCyclic";
+            }))
+            return false;
         std::vector<std::string> typed;
         for (const OpenFoamPatchType& p : patches)
             if (slides_by_type(p.type)) typed.push_back(p.name);

@@ -246,6 +246,7 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
         }
     TypedMotion typed = apply_marker_types(in.mesh, in.extras, in.spec, symmetry);
     in.sliding_by_type = std::move(typed.sliding);
+    in.coupled_by_type = std::move(typed.coupled);
     in.not_planar = std::move(typed.not_planar);
     if (typed.planar) {
         in.spec = planar_motion(*typed.planar, in.mesh, in.spec);
@@ -254,12 +255,14 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
         in.planar = std::move(typed.planar);
     }
     in.boundary = resolve_boundary(in.mesh, in.spec);
-    if (!typed.cyclic.empty())
+    if (!typed.uncoupled.empty())
         in.boundary.warnings.push_back(
-            {WarningCode::other, "the cyclic patches " + joined(typed.cyclic) +
-                                     " move as the motion says (fixed unless it names them), each on its own: dgwarp "
-                                     "does not couple a cyclic patch's two halves yet, so give both halves the same "
-                                     "motion, or none, for them to still match"});
+            {WarningCode::other, "the cyclic patches " + joined(typed.uncoupled) +
+                                     " are not coupled (dgwarp couples cyclic and cyclicSlip patches that name each "
+                                     "other as neighbourPatch and that the motion does not name; a cyclicAMI's halves "
+                                     "do not share nodes): they move as the motion says (fixed unless it names them), "
+                                     "each on its own, so give both halves the same motion, or none, for them to still "
+                                     "match"});
     if (!in.not_planar.empty())
         in.boundary.warnings.push_back(
             {WarningCode::other, "the empty or wedge patches slide but do not make a 2D case (" + in.not_planar +
@@ -416,9 +419,13 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
     if (!in.boundary.sliding_markers.empty()) out << "; sliding: " << joined(in.boundary.sliding_markers);
     if (!in.sliding_by_type.empty())
         out << "; sliding by their patch or BC type (unless the motion names them): " << joined(in.sliding_by_type);
+    if (!in.boundary.cyclic_markers.empty()) {
+        out << "; cyclic, each node moving as its image on the other half: " << joined(in.boundary.cyclic_markers);
+        if (!in.coupled_by_type.empty()) out << " (OpenFOAM cyclic patches and their neighbourPatch, unless the motion names them)";
+    }
     out << "\n";
     out << "boundary  " << b.nodes.size() << " nodes (" << moving_count(b) << " moving";
-    if (!in.boundary.slides.empty()) out << ", of them " << in.boundary.slides.size() << " sliding";
+    if (!in.boundary.slides.empty()) out << ", of them " << in.boundary.slides.size() << " sliding or cyclic";
     out << ")\n";
     for (const auto& w : in.boundary.warnings) warnings.print(w.text);
 }
@@ -462,6 +469,12 @@ nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
             {"laplacian_model", o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity"}};
 }
 
+nlohmann::json cyclic_pairs_json(const std::vector<std::pair<std::string, std::string>>& pairs) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& [a, b] : pairs) out.push_back({a, b});
+    return out;
+}
+
 nlohmann::json boundary_json(const Inputs& in) {
     const auto& b = in.boundary.boundary;
     return {{"nodes", b.nodes.size()},
@@ -471,6 +484,8 @@ nlohmann::json boundary_json(const Inputs& in) {
             {"sliding_markers", in.boundary.sliding_markers},
             {"sliding_nodes", in.boundary.slides.size()},
             {"sliding_by_type", in.sliding_by_type},
+            {"cyclic_markers", in.boundary.cyclic_markers},
+            {"cyclic_by_type", cyclic_pairs_json(in.coupled_by_type)},
             {"planar", in.planar ? nlohmann::json{{"plane_markers", in.planar->plane_markers},
                                                   {"nodes", in.mesh.num_points()},
                                                   {"cells", in.mesh.cells.size()},

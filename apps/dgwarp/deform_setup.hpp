@@ -82,6 +82,8 @@ struct Inputs {
     /// (`sliding_by_type`); for a 2D case, in its planes (motion/planar_motion.hpp).
     MotionSpec spec;
     std::vector<std::string> sliding_by_type;
+    /// The OpenFOAM cyclic patch pairs coupled because of their type (TypedMotion::coupled).
+    std::vector<std::pair<std::string, std::string>> coupled_by_type;
     /// A 2D case stored as 3D (an OpenFOAM 2D case): `mesh` is its 2D mesh,
     /// `file_mesh` the mesh read, which the outputs are (lift_points).
     std::optional<PlanarCase> planar;

@@ -96,6 +96,10 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
         throw py::value_error("marker '" + resolved.sliding_markers.front() +
                               "' slides: sliding markers are not supported by the Python package yet (the CLI's "
                               "`dgwarp deform` supports them, docs/MOTION.md)");
+    if (!resolved.cyclic_markers.empty())
+        throw py::value_error("marker '" + resolved.cyclic_markers.front() +
+                              "' is cyclic: cyclic markers are not supported by the Python package yet (the CLI's "
+                              "`dgwarp deform` supports them, docs/MOTION.md)");
     warn_all(resolved.warnings);
     return resolved;
 }

@@ -3,6 +3,8 @@
 // conversions between OpenFOAM and every other format are exact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -495,30 +497,70 @@ TEST(CliOpenFoam, ASnappyHexMeshCaseWithPolyhedraDeformsWithEveryMethod) {
     EXPECT_FALSE(std::filesystem::exists(dir / "s.su2"));
 }
 
-TEST(CliOpenFoam, CyclicPatchesAreSaidNotToBeCoupledAndProcessorCyclicIsRefused) {
-    // The cavity with its fixedWalls given the type cyclic: deform warns that
-    // their halves are not coupled (they stay fixed, as the motion says).
+TEST(CliOpenFoam, CyclicPatchesMoveAsTheirImagesSeriallyAndDecomposed) {
+    // channel395 coarsened (tests/data/openfoam/channel-cyclic): periodic in x
+    // (inout, a translation by 4) and z (sides, by 2). Its bottom wall moved
+    // along all three axes: fixed cyclic halves would shear the cells beside
+    // them; coupled, every node of a half moves exactly as its image.
     const auto dir = scratch_dir();
-    const auto c = foam_case_copy("cavity", dir);
-    const auto boundary = c / "constant" / "polyMesh" / "boundary";
-    std::string text = slurp(boundary);
-    const std::size_t at = text.find("type", text.find("fixedWalls"));
-    text.replace(at, text.find(';', at) - at, "type cyclic");
-    write_text(boundary, text);
-    const auto motion = write_text(dir / "m.json", R"({"markers": {"movingWall": {"translate": [0, 0.001, 0]}}})");
-    CommandResult r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(dir / "out/"));
+    const auto motion =
+        write_text(dir / "m.json", R"({"markers": {"bottomWall": {"translate": [0.3, 0.01, 0.2]}}})");
+    CommandResult r = run_cli("deform " + quoted(openfoam_case("channel-cyclic")) + " -m " + quoted(motion) + " -o " +
+                              quoted(dir / "serial/") + " --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE((r.out + r.err).find("the cyclic patches fixedWalls move as the motion says"), std::string::npos)
-        << r.out << r.err;
-    // A decomposed case whose processor patch is processorCyclic: refused, naming it, nothing written.
-    const auto d = foam_case_copy("mixed-decomposed", dir);
-    const auto b0 = d / "processor0" / "constant" / "polyMesh" / "boundary";
-    std::string b = slurp(b0);
-    const std::size_t p = b.find("type", b.find("procBoundary0to1"));
-    b.replace(p, b.find(';', p) - p, "type            processorCyclic");
-    write_text(b0, b);
-    r = run_cli("deform " + quoted(d) + " -m " + quoted(write_text(dir / "t.json", foam_lift_top)) + " -o " + quoted(d));
-    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-    EXPECT_NE(r.err.find("patch 'procBoundary0to1' is of type processorCyclic"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(d / "processor0" / "0"));
+    const auto report = nlohmann::json::parse(r.out);
+    EXPECT_EQ(report["boundary"]["cyclic_markers"].size(), 8u);
+    EXPECT_EQ(report["boundary"]["cyclic_by_type"][0], (nlohmann::json{"sides1_half0", "sides1_half1"}));
+    EXPECT_EQ(report["frames"][0]["quality"]["inverted"], 0);
+    const Mesh before = read_mesh(openfoam_case("channel-cyclic"));
+    const Mesh after = read_mesh(dir / "serial" / "0");
+    ASSERT_EQ(after.num_points(), before.num_points());
+    // Each node on x = 0 or z = 0 with its image 4 along x or 2 along z.
+    std::size_t pairs = 0;
+    double largest = 0;
+    for (std::size_t a = 0; a < before.num_points(); ++a)
+        for (std::size_t b = 0; b < before.num_points(); ++b) {
+            const double* xa = &before.points[3 * a];
+            const double* xb = &before.points[3 * b];
+            const bool image = (std::abs(xb[0] - xa[0] - 4) < 1e-9 && std::abs(xb[1] - xa[1]) < 1e-9 && std::abs(xb[2] - xa[2]) < 1e-9) ||
+                               (std::abs(xb[2] - xa[2] - 2) < 1e-9 && std::abs(xb[0] - xa[0]) < 1e-9 && std::abs(xb[1] - xa[1]) < 1e-9);
+            if (!image) continue;
+            ++pairs;
+            for (std::size_t d = 0; d < 3; ++d) {
+                const double da = after.points[3 * a + d] - xa[d], db = after.points[3 * b + d] - xb[d];
+                EXPECT_NEAR(da, db, 1e-14) << a << " and " << b;
+                largest = std::max(largest, std::abs(da));
+            }
+        }
+    EXPECT_EQ(pairs, 11u * 7 + 9u * 11);  // inout: 11 x 7 nodes (y by z); sides: 9 x 11 (x by y)
+    EXPECT_GT(largest, 0.05);
+    // The same case decomposePar'd in 2 (simple) and 4 (hierarchical), its
+    // processorCyclic faces read back into their cyclic patches: each
+    // processor's points are the serial case's.
+    const std::vector<double> serial = foam_body_numbers(slurp(dir / "serial" / "0" / "polyMesh" / "points"));
+    for (const std::string name : {"channel-cyclic-decomposed", "channel-cyclic-decomposed-4"}) {
+        SCOPED_TRACE(name);
+        const auto c = foam_case_copy(name, dir);
+        r = run_cli("deform " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time 1");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        OpenFoamSource source;
+        read_openfoam(c, {}, &source);
+        for (const OpenFoamProcessor& p : source.processors) {
+            const std::vector<double> ours =
+                foam_body_numbers(slurp(p.poly_mesh.parent_path().parent_path() / "1" / "polyMesh" / "points"));
+            // Each list: its size, then the coordinates.
+            ASSERT_EQ(ours.size(), 1 + 3 * p.points.size());
+            for (std::size_t i = 0; i < p.points.size(); ++i)
+                for (std::size_t d = 0; d < 3; ++d)
+                    EXPECT_EQ(ours[1 + 3 * i + d], serial[1 + 3 * static_cast<std::size_t>(p.points[i]) + d]);
+        }
+    }
+    // Named in the motion, cyclic patches move as it says, each on its own: a warning says so.
+    const auto fixed = write_text(
+        dir / "f.json",
+        R"({"markers": {"bottomWall": {"translate": [0, 0.001, 0]}, "inout1_half0": "fixed", "inout1_half1": "fixed"}})");
+    r = run_cli("deform " + quoted(openfoam_case("channel-cyclic")) + " -m " + quoted(fixed) + " -o " +
+                quoted(dir / "fixed/"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("the cyclic patches inout1_half0, inout1_half1 are not coupled"), std::string::npos) << r.err;
 }

@@ -83,6 +83,22 @@ TEST(MotionFile, SlideIsAMarkerMotion) {
     EXPECT_THROW(parse(R"({"markers": {"sym": "slides"}})"), ParseError);
 }
 
+TEST(MotionFile, CyclicNamesThePartner) {
+    const MotionSpec spec = parse(R"({"markers": {"in": {"cyclic": "out"}, "out": {"cyclic": "in"}}})");
+    ASSERT_TRUE(std::holds_alternative<CyclicMotion>(spec.frames[0].markers.at("in")));
+    EXPECT_EQ(std::get<CyclicMotion>(spec.frames[0].markers.at("in")).partner, "out");
+    EXPECT_STREQ(motion_kind_name(spec.frames[0].markers.at("out")), "cyclic");
+    for (const char* bad : {R"({"markers": {"in": {"cyclic": 3}}})", R"({"markers": {"in": {"cyclic": ""}}})",
+                            R"({"markers": {"in": {"cyclic": "out", "translate": [0, 1]}}})"}) {
+        try {
+            parse(bad);
+            FAIL() << bad;
+        } catch (const ParseError& e) {
+            EXPECT_NE(std::string(e.what()).find("markers.in"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(MotionFile, FilesAreReadRelativeToTheMotionFile) {
     const auto dir = test::scratch_dir();
     std::filesystem::create_directories(dir / "sub");

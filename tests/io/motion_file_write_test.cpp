@@ -54,6 +54,9 @@ void mfw_expect_same_motion(const MarkerMotion& a, const MarkerMotion& b, const 
         mfw_expect_same_table(s->positions, std::get<PrescribedPositions>(b).positions, what);
     if (const auto* n = std::get_if<PrescribedNodeMotions>(&a))
         mfw_expect_same_table(n->motions, std::get<PrescribedNodeMotions>(b).motions, what);
+    if (const auto* c = std::get_if<CyclicMotion>(&a)) {
+        EXPECT_EQ(c->partner, std::get<CyclicMotion>(b).partner) << what;
+    }
 }
 
 void mfw_expect_same_spec(const MotionSpec& a, const MotionSpec& b, const std::string& what) {
@@ -124,6 +127,7 @@ TEST(MotionFileWrite, EveryKindOfMotionReadsBackBitForBit) {
     frames.frames[0].markers["side"] = PrescribedNodeMotions{twist};
     frames.frames[0].markers["bottom"] = FixedMotion{};
     frames.frames[0].markers["sym"] = frames.frames[1].markers["sym"] = SlideMotion{};
+    frames.frames[0].markers["in"] = frames.frames[1].markers["in"] = CyclicMotion{"out"};
     // A rotation vector from degrees (17°), as the case motions make them.
     frames.frames[1].markers["top"] = RigidMotion{{{1, 2, 3}, {0, 17 * (std::numbers::pi / 180), 0}, {0.5, 0.5, 0.5}}};
     frames.frames[1].markers["bottom"] = PrescribedPositions{positions};  // one source: one file for both

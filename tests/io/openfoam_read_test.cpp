@@ -138,7 +138,9 @@ TEST(OpenFoamRead, PolyhedraAreKeptWithTheirFacesPointingOut) {
         EXPECT_EQ(counts[static_cast<std::size_t>(CellType::polyhedron)], polyhedra);
         std::int64_t boundary_polygons = 0;
         for (const Marker& m : mesh.markers) boundary_polygons += count_by_type(m.elements)[static_cast<std::size_t>(CellType::polygon)];
-        if (polygons >= 0) EXPECT_EQ(boundary_polygons, polygons);
+        if (polygons >= 0) {
+            EXPECT_EQ(boundary_polygons, polygons);
+        }
         // Each polyhedron: positive orientation and quality, its faces enclosing a
         // positive volume; all cells' volumes together that of the boundary faces.
         double cells_volume = 0, hex_volume = 0;
@@ -270,6 +272,34 @@ TEST(OpenFoamRead, DecomposedCasesReadAsTheWholeCase) {
             }
         }
     }
+}
+
+// channel395's cyclic patches decomposed two ways: the processorCyclic
+// patches' faces are their referPatch's again, in the case's order.
+TEST(OpenFoamRead, ProcessorCyclicFacesAreTheirCyclicPatchesFaces) {
+    const Mesh whole = read_openfoam(openfoam_case("channel-cyclic"));
+    for (const std::string name : {"channel-cyclic-decomposed", "channel-cyclic-decomposed-4"}) {
+        SCOPED_TRACE(name);
+        OpenFoamSource source;
+        const Mesh decomposed = read_openfoam(openfoam_case(name), {}, &source);
+        EXPECT_TRUE(decomposed == whole);
+        // The patches are the case's (no processor or processorCyclic one), with their entries.
+        ASSERT_EQ(source.patches.size(), 10u);
+        EXPECT_EQ(source.patches[6].type, "cyclic");
+        EXPECT_NE(std::find(source.patches[6].entries.begin(), source.patches[6].entries.end(),
+                            "neighbourPatch inout1_half1;"),
+                  source.patches[6].entries.end());
+        // decomposePar made processorCyclic patches (inout's faces whose images are on the other processor).
+        bool any = false;
+        for (const OpenFoamProcessor& p : source.processors)
+            any = any || slurp(p.poly_mesh / "boundary").find("processorCyclic;") != std::string::npos;
+        EXPECT_TRUE(any);
+    }
+    // One processor read alone keeps none of them as markers.
+    const OpenFoamProcessorMesh part =
+        read_openfoam_processor(openfoam_processor_meshes(openfoam_case("channel-cyclic-decomposed"))[0]);
+    EXPECT_EQ(part.mesh.markers.size(), part.patches.size());
+    EXPECT_EQ(part.patches.size(), 10u);
 }
 
 // The cell order's rule (openfoam_poly_mesh.hpp): whatever the order of a

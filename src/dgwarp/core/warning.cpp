@@ -14,6 +14,7 @@ std::string_view warning_code_name(WarningCode code) {
         case WarningCode::conflicting_shared_motions: return "conflicting-shared-motions";
         case WarningCode::outside_hull: return "outside-hull";
         case WarningCode::already_inverted: return "already-inverted";
+        case WarningCode::cyclic_mismatch: return "cyclic-mismatch";
         case WarningCode::other: return "other";
     }
     return "other";

@@ -23,6 +23,7 @@ enum class WarningCode {
     conflicting_shared_motions,  // a step gave coincident boundary nodes different motions (count: groups)
     outside_hull,                // volume nodes outside the Delaunay graph's hull (count)
     already_inverted,            // cells inverted or degenerate in the input (count; element: the worst)
+    cyclic_mismatch,             // other markers move a cyclic node and its image differently (count: groups; node: one)
     other,                       // a warning of a program built on the library, with text only
 };
 

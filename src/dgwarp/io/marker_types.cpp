@@ -29,6 +29,19 @@ bool is_cyclic_type(std::string_view type) {
     return type == "cyclic" || type == "cyclicAMI" || type == "cyclicACMI" || type == "cyclicSlip";
 }
 
+std::string cyclic_neighbour(const OpenFoamPatch& patch) {
+    constexpr std::string_view key = "neighbourPatch";
+    for (const std::string& e : patch.entries) {
+        if (e.compare(0, key.size(), key) != 0 || e.size() <= key.size() || (e[key.size()] != ' ' && e[key.size()] != '\t'))
+            continue;
+        std::string value = e.substr(key.size());
+        const auto first = value.find_first_not_of(" \t");
+        const auto last = value.find_last_not_of(" \t;");
+        return first == std::string::npos || last < first ? std::string() : value.substr(first, last - first + 1);
+    }
+    return {};
+}
+
 TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, MotionSpec& spec,
                                const std::vector<std::string>& also) {
     TypedMotion typed;
@@ -42,8 +55,23 @@ TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, Motio
             sliding.push_back(name);
     }
     typed.sliding = slide_unless_named(spec, sliding);
-    for (std::size_t m = 0; m < types.size(); ++m)
-        if (is_cyclic_type(types[m])) typed.cyclic.push_back(mesh.markers[m].name);
+    // Cyclic pairs: each cyclic patch with its neighbourPatch, once.
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (std::size_t m = 0; m < types.size(); ++m) {
+        if (!extras.openfoam || (types[m] != "cyclic" && types[m] != "cyclicSlip")) continue;
+        const std::string partner = cyclic_neighbour(extras.openfoam->patches[m]);
+        for (std::size_t k = m + 1; k < types.size(); ++k)
+            if (mesh.markers[k].name == partner && types[k] == types[m] &&
+                cyclic_neighbour(extras.openfoam->patches[k]) == mesh.markers[m].name)
+                pairs.emplace_back(mesh.markers[m].name, partner);
+    }
+    typed.coupled = couple_unless_named(spec, pairs);
+    for (std::size_t m = 0; m < types.size(); ++m) {
+        const std::string& name = mesh.markers[m].name;
+        const bool coupled = std::any_of(typed.coupled.begin(), typed.coupled.end(),
+                                         [&](const auto& p) { return p.first == name || p.second == name; });
+        if (is_cyclic_type(types[m]) && !coupled) typed.uncoupled.push_back(name);
+    }
     if (mesh.dim != 3) return typed;
     std::vector<std::size_t> planes;
     std::string axis;

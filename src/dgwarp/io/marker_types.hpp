@@ -34,16 +34,24 @@ struct TypedMotion {
     std::optional<PlanarCase> planar;
     /// When they all slide but are not such a case: why (they then slide in 3D).
     std::string not_planar;
-    /// The markers of an OpenFOAM cyclic type (cyclic, cyclicAMI, cyclicACMI,
-    /// cyclicSlip): dgwarp does not couple a cyclic patch's two halves, so they
-    /// move as the motion says (fixed by default), each on its own; the caller warns.
-    std::vector<std::string> cyclic;
+    /// OpenFOAM cyclic (and cyclicSlip) patches and their neighbourPatch made
+    /// each other's CyclicMotion (couple_unless_named): coupled, one pair each.
+    std::vector<std::pair<std::string, std::string>> coupled;
+    /// The markers of a cyclic type that are not coupled: cyclicAMI and
+    /// cyclicACMI (their halves' nodes are not images of each other), and
+    /// cyclic patches without a neighbourPatch in the mesh. They move as the
+    /// motion says (fixed by default), each on its own; the caller warns.
+    std::vector<std::string> uncoupled;
 };
+
+/// The partner an OpenFOAM patch's dictionary names (its neighbourPatch), or "".
+std::string cyclic_neighbour(const OpenFoamPatch& patch);
 
 /// Whether `type` is one of OpenFOAM's cyclic patch types (not processorCyclic).
 bool is_cyclic_type(std::string_view type);
 
-/// Makes the markers that slide by their type, and the markers `also` (an
+/// Makes the markers that slide by their type, and the cyclic pairs cyclic
+/// (unless the motion names either half), and the markers `also` (an
 /// SU2 configuration's MARKER_SYM: io/su2_config.hpp; names of `mesh`'s
 /// markers), slide in `spec` unless it names them, and finds the 2D case the
 /// `empty` or `wedge` markers make, if any (the caller deforms planar->mesh

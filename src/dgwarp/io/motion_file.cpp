@@ -106,13 +106,23 @@ MotionFrame MotionParser::parse_markers(const Json& markers, const JsonPlace& at
 MarkerMotion MotionParser::parse_marker_motion(const Json& value, const JsonPlace& at, bool in_frames) {
     constexpr const char* kinds =
         "\"fixed\", \"slide\" or one motion object: {\"rotate\": ..., \"translate\": ...}, "
-        "{\"displacement_file\": ...}, {\"surface_file\": ...}, {\"node_motion_file\": ...} or {\"periodic\": ...}";
+        "{\"displacement_file\": ...}, {\"surface_file\": ...}, {\"node_motion_file\": ...}, {\"periodic\": ...} or "
+        "{\"cyclic\": \"<partner marker>\"}";
     if (value.is_string()) {
         if (value.get<std::string>() == "fixed") return FixedMotion{};
         if (value.get<std::string>() == "slide") return SlideMotion{};
         json_fail(at, kinds, value);
     }
-    check_object(value, at, {"rotate", "translate", "displacement_file", "surface_file", "node_motion_file", "periodic"});
+    check_object(value, at,
+                 {"rotate", "translate", "displacement_file", "surface_file", "node_motion_file", "periodic", "cyclic"});
+    if (value.contains("cyclic")) {
+        if (value.size() != 1) json_fail(at, kinds, value);
+        const Json& partner = value["cyclic"];
+        if (!partner.is_string() || partner.get<std::string>().empty())
+            json_fail(at.key("cyclic"), "the name of the partner marker (the other half of the periodic boundary)",
+                      partner);
+        return CyclicMotion{partner.get<std::string>()};
+    }
     const bool rigid = value.contains("rotate") || value.contains("translate");
     const int others = int(value.contains("displacement_file")) + int(value.contains("surface_file")) +
                        int(value.contains("node_motion_file")) + int(value.contains("periodic"));

@@ -243,6 +243,7 @@ Json MotionWriter::marker_json(const MarkerMotion& motion, const std::string& ma
                                bool several_frames) {
     if (std::holds_alternative<FixedMotion>(motion)) return "fixed";
     if (std::holds_alternative<SlideMotion>(motion)) return "slide";
+    if (const auto* c = std::get_if<CyclicMotion>(&motion)) return {{"cyclic", c->partner}};
     if (const auto* r = std::get_if<RigidMotion>(&motion)) return rigid_json(r->motion);
     if (const auto* p = std::get_if<PeriodicMotion>(&motion)) return periodic_json(*p);
     if (const auto* d = std::get_if<PrescribedDisplacements>(&motion)) {

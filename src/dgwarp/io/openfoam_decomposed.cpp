@@ -198,6 +198,12 @@ OpenFoamProcessorMesh read_openfoam_processor(const fs::path& dir) {
     }
     out.mesh = std::move(part.mesh);
     out.mesh.cells = std::move(cells);
+    // A processorCyclic patch's faces are no marker of this part (each process
+    // reads such a case whole: deforms_per_processor).
+    std::vector<Marker> markers;
+    for (std::size_t k = 0; k < out.mesh.markers.size(); ++k)
+        if (!part.patches[part.marker_patch[k]].processor) markers.push_back(std::move(out.mesh.markers[k]));
+    out.mesh.markers = std::move(markers);
     out.interface_nodes = std::move(part.processor_nodes);
     out.points_format = part.points_format;
     for (const foam::Patch& patch : part.patches)
@@ -323,23 +329,31 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
                              "the patches of processor 0, in the same order (decomposePar writes every patch to every "
                              "processor)",
                              "other patches");
-    for (std::size_t m = 0; m < names.size(); ++m) {
-        // (face of the case, element) from every processor, in the case's face order.
-        std::vector<std::pair<std::int64_t, std::vector<NodeId>>> faces;
-        for (std::size_t p = 0; p < parts.size(); ++p) {
-            const foam::PolyMeshPart& part = parts[p].part;
-            const ElementList& elements = part.mesh.markers[m].elements;
-            std::int64_t start = 0;
-            for (const foam::Patch& patch : part.patches)
-                if (patch.name == names[m]) start = patch.start;
+    // Per marker of the case, (face of the case, element) from every
+    // processor; a processorCyclic patch's faces go to its referPatch.
+    std::vector<std::vector<std::pair<std::int64_t, std::vector<NodeId>>>> marker_faces(names.size());
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const foam::PolyMeshPart& part = parts[p].part;
+        for (std::size_t k = 0; k < part.mesh.markers.size(); ++k) {
+            const foam::Patch& patch = part.patches[part.marker_patch[k]];
+            const std::string& target = patch.refer_patch.empty() ? patch.name : patch.refer_patch;
+            const auto m = static_cast<std::size_t>(std::find(names.begin(), names.end(), target) - names.begin());
+            if (m == names.size())
+                throw ParseError((meshes[p] / "boundary").string(), patch.line,
+                                 "a referPatch that is a patch of the case in processorCyclic patch '" + patch.name + "'",
+                                 target);
+            const ElementList& elements = part.mesh.markers[k].elements;
             for (std::size_t e = 0; e < elements.size(); ++e) {
-                const std::int32_t signed_face = parts[p].face_of[static_cast<std::size_t>(start) + e];
+                const std::int32_t signed_face = parts[p].face_of[static_cast<std::size_t>(patch.start) + e];
                 std::vector<NodeId> nodes;
                 for (NodeId n : elements.nodes_of(e)) nodes.push_back(parts[p].point_of[static_cast<std::size_t>(n)]);
                 if (signed_face < 0) std::reverse(nodes.begin() + 1, nodes.end());  // turned in the processor
-                faces.emplace_back(signed_face < 0 ? -std::int64_t{signed_face} : signed_face, std::move(nodes));
+                marker_faces[m].emplace_back(signed_face < 0 ? -std::int64_t{signed_face} : signed_face, std::move(nodes));
             }
         }
+    }
+    for (std::size_t m = 0; m < names.size(); ++m) {
+        auto& faces = marker_faces[m];
         std::stable_sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         Marker marker{names[m], {}};
         marker.elements.reserve(faces.size(), 4);

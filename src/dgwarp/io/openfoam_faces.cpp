@@ -186,7 +186,7 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
     for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
         const Marker& marker = mesh.markers[m];
         Patch patch{marker.name, {}, static_cast<std::int64_t>(pm.num_faces()),
-                    static_cast<std::int64_t>(marker.elements.size()), 0};
+                    static_cast<std::int64_t>(marker.elements.size()), 0, false, {}};
         for (std::size_t e = 0; e < marker.elements.size(); ++e) {
             const auto element = marker.elements.nodes_of(e);
             KeyedFace probe{face_key(element), static_cast<int>(element.size()), -1, 0, 0};
@@ -230,7 +230,7 @@ PolyMesh faces_from_cells(const Mesh& mesh) {
             return a->cell != b->cell ? a->cell < b->cell : a->local < b->local;
         });
         Patch patch{"defaultFaces", {}, static_cast<std::int64_t>(pm.num_faces()),
-                    static_cast<std::int64_t>(rest.size()), 0};
+                    static_cast<std::int64_t>(rest.size()), 0, false, {}};
         for (const KeyedFace* f : rest) add_face(cell_face(mesh, f->cell, f->local, a), f->cell);
         pm.patches.push_back(std::move(patch));
     }

@@ -32,6 +32,9 @@ struct Patch {
     std::int64_t size = 0;   // nFaces
     std::size_t line = 0;    // line of its name in the boundary file (0 when written)
     bool processor = false;  // type processor or processorCyclic: faces shared with another processor
+    /// processorCyclic: the cyclic patch its faces belong to (its referPatch);
+    /// they are that patch's faces whose images are on another processor.
+    std::string refer_patch;
 };
 
 struct PolyMesh {
@@ -61,6 +64,11 @@ struct PolyMeshPart {
     Format points_format = Format::ascii;
     std::int64_t num_faces = 0;
     std::vector<NodeId> processor_nodes;  // the nodes of the processor patches' faces, sorted, each once
+    /// Per marker of `mesh`: its patch (an index into `patches`). Every patch
+    /// but the processor ones is a marker; so is each processorCyclic patch,
+    /// under its own name (read_openfoam_decomposed puts its faces back into
+    /// its referPatch).
+    std::vector<std::size_t> marker_patch;
 };
 PolyMeshPart read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files, bool processor_patches);
 /// The same, freeing each file's text once it is parsed (the faces, the

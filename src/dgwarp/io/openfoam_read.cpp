@@ -264,14 +264,6 @@ std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, st
                 patch.info.type = value;
                 has_type = true;
                 patch.processor = value == "processor" || value == "processorCyclic";
-                // A cyclic patch's faces on a processor boundary: read as interfaces they
-                // would be lost from the cyclic patch, and the written mesh broken.
-                if (value == "processorCyclic")
-                    throw FormatError(s.file() + ":" + str(static_cast<std::int64_t>(line)) + ": patch '" + patch.name +
-                                      "' is of type processorCyclic (faces of a cyclic patch on a processor "
-                                      "boundary): dgwarp does not couple cyclic patches across processors yet; "
-                                      "reconstruct the case (reconstructParMesh -constant), deform the serial case, "
-                                      "and decompose it again");
                 if (patch.processor && !processor_patches)
                     throw FormatError(s.file() + ":" + str(static_cast<std::int64_t>(line)) + ": patch '" + patch.name +
                                       "' is of type " + value +
@@ -287,10 +279,17 @@ std::vector<foam::Patch> read_boundary(Scanner& s, std::int64_t num_internal, st
                 patch.start = v;
                 has_start = true;
             } else {
+                if (key == "referPatch") patch.refer_patch = value;
                 patch.info.entries.push_back(key + " " + value + (value.front() == '{' ? "" : ";"));
             }
         }
         s.expect('}', "'}'");
+        // A cyclic patch's faces on a processor boundary: read as the faces of
+        // the cyclic patch they belong to, else they would be lost from it.
+        if (patch.info.type == "processorCyclic" && patch.refer_patch.empty())
+            s.fail_at(patch.line, "referPatch (the cyclic patch its faces belong to) in processorCyclic patch '" + patch.name + "'",
+                      "none");
+        if (patch.info.type != "processorCyclic") patch.refer_patch.clear();
         if (!has_type || !has_size || !has_start)
             s.fail_at(patch.line, "type, nFaces and startFace in patch '" + patch.name + "'",
                       !has_type ? "no type" : !has_size ? "no nFaces" : "no startFace");
@@ -428,8 +427,10 @@ foam::PolyMeshPart foam::poly_mesh_part(PolyMesh&& pm, std::int64_t num_cells, c
     mesh.cells = foam::cells_from_faces(pm, num_cells, where);
     mesh.points = std::move(pm.points);
     std::vector<NodeId> processor_nodes;
-    for (const foam::Patch& patch : pm.patches) {
-        if (patch.processor) {  // faces another processor shares: inner faces of the whole mesh
+    std::vector<std::size_t> marker_patch;
+    for (std::size_t p = 0; p < pm.patches.size(); ++p) {
+        const foam::Patch& patch = pm.patches[p];
+        if (patch.processor && patch.refer_patch.empty()) {  // faces another processor shares: inner faces of the whole mesh
             processor_nodes.insert(processor_nodes.end(), pm.face_nodes.begin() + pm.face_offsets[patch.start],
                                    pm.face_nodes.begin() + pm.face_offsets[patch.start + patch.size]);
             continue;
@@ -443,11 +444,13 @@ foam::PolyMeshPart foam::poly_mesh_part(PolyMesh&& pm, std::int64_t num_cells, c
             marker.elements.push_back(polygon_type(nodes.size()), nodes);
         }
         mesh.markers.push_back(std::move(marker));
+        marker_patch.push_back(p);
     }
     validate(mesh);
     std::sort(processor_nodes.begin(), processor_nodes.end());
     processor_nodes.erase(std::unique(processor_nodes.begin(), processor_nodes.end()), processor_nodes.end());
-    return {std::move(mesh), std::move(pm.patches), points_format, num_faces, std::move(processor_nodes)};
+    return {std::move(mesh), std::move(pm.patches), points_format, num_faces, std::move(processor_nodes),
+            std::move(marker_patch)};
 }
 
 foam::PolyMeshPart foam::read_poly_mesh_part(const std::filesystem::path& dir, const PolyMeshFiles& files,

@@ -66,9 +66,28 @@ std::vector<std::string> slide_unless_named(MotionSpec& spec, const std::vector<
     return made;
 }
 
+std::vector<std::pair<std::string, std::string>> couple_unless_named(
+    MotionSpec& spec, const std::vector<std::pair<std::string, std::string>>& pairs) {
+    std::vector<std::pair<std::string, std::string>> made;
+    if (spec.default_given || !std::holds_alternative<FixedMotion>(spec.default_motion)) return made;
+    const auto named = [&](const std::string& name) {
+        return std::any_of(spec.frames.begin(), spec.frames.end(),
+                           [&](const MotionFrame& f) { return f.markers.count(name) > 0; });
+    };
+    for (const auto& [a, b] : pairs) {
+        if (named(a) || named(b)) continue;
+        for (MotionFrame& f : spec.frames) {
+            f.markers.emplace(a, CyclicMotion{b});
+            f.markers.emplace(b, CyclicMotion{a});
+        }
+        made.emplace_back(a, b);
+    }
+    return made;
+}
+
 const char* motion_kind_name(const MarkerMotion& motion) {
     static constexpr const char* names[] = {"fixed",        "rigid",            "periodic", "displacement_file",
-                                            "surface_file", "node_motion_file", "slide"};
+                                            "surface_file", "node_motion_file", "slide",     "cyclic"};
     static_assert(std::variant_size_v<MarkerMotion> == std::size(names));
     return names[motion.index()];
 }

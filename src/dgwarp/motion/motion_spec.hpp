@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <utility>
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
@@ -97,8 +98,19 @@ struct SlideMotion {
     bool operator==(const SlideMotion&) const = default;
 };
 
+/// The marker is one half of a periodic boundary whose other half is marker
+/// `partner` (which must name this one back): an OpenFOAM cyclic patch. Its
+/// nodes are not boundary nodes for the methods, which move them as volume
+/// nodes, and each node and its image on the partner move alike, through the
+/// rigid motion that maps one half onto the other (motion/cyclic_pairs.hpp).
+/// A cyclic marker is cyclic in every frame, with the same partner.
+struct CyclicMotion {
+    std::string partner;
+    bool operator==(const CyclicMotion&) const = default;
+};
+
 using MarkerMotion = std::variant<FixedMotion, RigidMotion, PeriodicMotion, PrescribedDisplacements,
-                                  PrescribedPositions, PrescribedNodeMotions, SlideMotion>;
+                                  PrescribedPositions, PrescribedNodeMotions, SlideMotion, CyclicMotion>;
 
 /// One frame of a motion: the motion of each named marker.
 struct MotionFrame {
@@ -176,8 +188,16 @@ const MarkerMotion& marker_motion(const MotionSpec& spec, const MotionFrame& fra
 /// (io/marker_types.hpp). Returns the markers it made slide, in the order given.
 std::vector<std::string> slide_unless_named(MotionSpec& spec, const std::vector<std::string>& markers);
 
+/// The same for cyclic pairs (OpenFOAM's cyclic patches and their
+/// neighbourPatch): both markers of a pair that no frame names, under the
+/// same condition, become each other's CyclicMotion. Returns the pairs made
+/// cyclic, in the order given.
+std::vector<std::pair<std::string, std::string>> couple_unless_named(
+    MotionSpec& spec, const std::vector<std::pair<std::string, std::string>>& pairs);
+
 /// A short name of the kind of motion ("fixed", "rigid", "periodic",
-/// "displacement_file", "surface_file", "node_motion_file"), for messages.
+/// "displacement_file", "surface_file", "node_motion_file", "slide",
+/// "cyclic"), for messages.
 const char* motion_kind_name(const MarkerMotion& motion);
 
 }  // namespace dgwarp

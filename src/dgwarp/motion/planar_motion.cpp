@@ -32,6 +32,7 @@ public:
 private:
     MarkerMotion map(const FixedMotion& m) const { return m; }
     MarkerMotion map(const SlideMotion& m) const { return m; }
+    MarkerMotion map(const CyclicMotion& m) const { return m; }  // the 2D markers keep their names
     MarkerMotion map(const RigidMotion& m) const { return RigidMotion{common_motion(m.motion)}; }
     MarkerMotion map(const PeriodicMotion& m) const {
         PeriodicMotion out = m;

@@ -55,6 +55,11 @@ double bounding_box_diagonal(const Mesh& mesh) {
     return std::sqrt(sum);
 }
 
+std::span<const double> point(const Mesh& mesh, NodeId node) {
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    return {mesh.points.data() + static_cast<std::size_t>(node) * dim, dim};
+}
+
 /// The series context and the boundary set of (mesh, spec), and per boundary
 /// node whether it is on a static and on a moving marker.
 struct Series {
@@ -78,6 +83,75 @@ bool marker_slides(const MotionSpec& spec, const std::string& name) {
     return sliding > 0;
 }
 
+/// Marker m's partner when it is cyclic (CyclicMotion in every frame, the
+/// same partner, which names it back), else -1. Throws MeshError naming the
+/// marker when it is cyclic in some frames only, with different partners, or
+/// with a partner that is not cyclic with it.
+std::int64_t cyclic_partner(const Mesh& mesh, const MotionSpec& spec, std::size_t m) {
+    const std::string& name = mesh.markers[m].name;
+    const std::string at = spec.source.empty() ? std::string("motion") : spec.source;
+    std::size_t cyclic = 0;
+    std::string partner;
+    for (const MotionFrame& frame : spec.frames) {
+        const auto* c = std::get_if<CyclicMotion>(&marker_motion(spec, frame, name));
+        if (!c) continue;
+        if (cyclic > 0 && c->partner != partner)
+            throw MeshError(at + ": marker '" + name + "' is cyclic with '" + partner + "' and with '" + c->partner +
+                                "': a cyclic marker has one partner in every frame",
+                            name);
+        partner = c->partner;
+        ++cyclic;
+    }
+    if (cyclic == 0) return -1;
+    if (cyclic < spec.frames.size())
+        throw MeshError(at + ": marker '" + name + "' is cyclic in " + std::to_string(cyclic) + " of the " +
+                            std::to_string(spec.frames.size()) + " frames: a cyclic marker is cyclic in every frame",
+                        name);
+    const auto it = std::find_if(mesh.markers.begin(), mesh.markers.end(),
+                                 [&](const Marker& k) { return k.name == partner; });
+    if (it == mesh.markers.end() || partner == name)
+        throw MeshError(at + ": marker '" + name + "' is cyclic with '" + partner + "', " +
+                            (partner == name ? "itself" : "which the mesh does not have") +
+                            ": the partner is the marker that is the other half of the periodic boundary",
+                        name);
+    for (const MotionFrame& frame : spec.frames) {
+        const auto* back = std::get_if<CyclicMotion>(&marker_motion(spec, frame, partner));
+        if (!back || back->partner != name)
+            throw MeshError(at + ": marker '" + name + "' is cyclic with '" + partner + "', but '" + partner + "' is " +
+                                (back ? "cyclic with '" + back->partner + "'" : std::string("not cyclic")) +
+                                ": both halves of a periodic boundary name each other ({\"cyclic\": \"" + name +
+                                "\"} for '" + partner + "')",
+                            name);
+    }
+    return it - mesh.markers.begin();
+}
+
+/// Adds `nodes` (sorted, none of them in `slides`) to `slides` as free nodes
+/// (planes 0), keeping the nodes sorted.
+void add_free_nodes(SlideSet& slides, const Mesh& mesh, const std::vector<NodeId>& nodes) {
+    const auto dim = static_cast<std::size_t>(mesh.dim);
+    SlideSet out;
+    std::size_t i = 0, j = 0;
+    while (i < slides.nodes.size() || j < nodes.size()) {
+        const bool take_slide = j == nodes.size() || (i < slides.nodes.size() && slides.nodes[i] < nodes[j]);
+        const NodeId node = take_slide ? slides.nodes[i] : nodes[j];
+        out.nodes.push_back(node);
+        if (take_slide) {
+            out.planes.push_back(slides.planes[i]);
+            out.directions.insert(out.directions.end(), slides.directions.begin() + static_cast<std::ptrdiff_t>(3 * i),
+                                  slides.directions.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+            ++i;
+        } else {
+            out.planes.push_back(0);
+            out.directions.insert(out.directions.end(), {0.0, 0.0, 0.0});
+            ++j;
+        }
+        const double* x = mesh.points.data() + static_cast<std::size_t>(node) * dim;
+        out.origins.insert(out.origins.end(), x, x + dim);
+    }
+    slides = std::move(out);
+}
+
 Series make_series(const Mesh& mesh, const MotionSpec& spec) {
     check_marker_names(mesh, spec);
     Series s;
@@ -87,11 +161,18 @@ Series make_series(const Mesh& mesh, const MotionSpec& spec) {
     for (const Marker& m : mesh.markers) c.marker_nodes.push_back(marker_nodes(m));
     c.marker_moving.assign(n_markers, 0);
     c.marker_sliding.assign(n_markers, 0);
+    c.marker_cyclic.assign(n_markers, 0);
     std::vector<std::size_t> sliding;
+    std::vector<CyclicPair> pairs;
     for (std::size_t m = 0; m < n_markers; ++m) {
         if (marker_slides(spec, mesh.markers[m].name)) {
             c.marker_sliding[m] = 1;
             sliding.push_back(m);
+            continue;
+        }
+        if (const std::int64_t partner = cyclic_partner(mesh, spec, m); partner >= 0) {
+            c.marker_cyclic[m] = 1;
+            if (static_cast<std::size_t>(partner) > m) pairs.push_back({m, static_cast<std::size_t>(partner)});
             continue;
         }
         for (const MotionFrame& frame : spec.frames)
@@ -113,7 +194,8 @@ Series make_series(const Mesh& mesh, const MotionSpec& spec) {
             const auto slot = static_cast<std::int32_t>(
                 std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), node) - boundary.nodes.begin());
             c.slots[m].push_back(slot);
-            if (!c.marker_sliding[m]) (c.marker_moving[m] ? s.on_moving : s.on_static)[static_cast<std::size_t>(slot)] = 1;
+            if (!c.marker_sliding[m] && !c.marker_cyclic[m])
+                (c.marker_moving[m] ? s.on_moving : s.on_static)[static_cast<std::size_t>(slot)] = 1;
         }
     }
     boundary.moving.resize(n);
@@ -123,11 +205,26 @@ Series make_series(const Mesh& mesh, const MotionSpec& spec) {
     // The sliding nodes: on sliding markers only, and not at a corner (which
     // stays: neither moving nor static markers hold it, so it is static).
     // They move, by the motion the step's first pass gives them (SlidePass).
-    if (!sliding.empty()) {
+    // The cyclic markers' nodes on no other marker move too, as free sliding
+    // nodes, coupled to their images (cyclic_pairs.hpp).
+    if (!sliding.empty() || !pairs.empty()) {
         std::vector<NodeId> held;
         for (std::size_t b = 0; b < n; ++b)
             if (s.on_moving[b] || s.on_static[b]) held.push_back(boundary.nodes[b]);
-        s.slides = slide_planes(mesh, sliding, held).slides;
+        SlidePlanes planes = sliding.empty() ? SlidePlanes{} : slide_planes(mesh, sliding, held);
+        s.slides = std::move(planes.slides);
+        if (!pairs.empty()) {
+            std::vector<NodeId> free;
+            for (std::size_t m = 0; m < n_markers; ++m)
+                if (c.marker_cyclic[m]) free.insert(free.end(), c.marker_nodes[m].begin(), c.marker_nodes[m].end());
+            std::sort(free.begin(), free.end());
+            free.erase(std::unique(free.begin(), free.end()), free.end());
+            std::erase_if(free, [&](NodeId node) {
+                const auto in = [node](const std::vector<NodeId>& v) { return std::binary_search(v.begin(), v.end(), node); };
+                return in(held) || in(s.slides.nodes) || in(planes.corners);
+            });
+            add_free_nodes(s.slides, mesh, free);
+        }
         s.slides.slots.reserve(s.slides.size());
         for (const NodeId node : s.slides.nodes) {
             const auto b = static_cast<std::size_t>(
@@ -135,15 +232,24 @@ Series make_series(const Mesh& mesh, const MotionSpec& spec) {
             s.slides.slots.push_back(static_cast<std::int32_t>(b));
             boundary.moving[b] = 1;
         }
+        if (!pairs.empty()) {
+            CyclicGroups& g = s.slides.cyclic;
+            g = cyclic_groups(mesh, pairs);
+            for (const NodeId node : g.nodes) {
+                g.slots.push_back(static_cast<std::int32_t>(
+                    std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), node) - boundary.nodes.begin()));
+                const auto at = std::lower_bound(s.slides.nodes.begin(), s.slides.nodes.end(), node);
+                g.slide.push_back(at != s.slides.nodes.end() && *at == node
+                                      ? static_cast<std::int32_t>(at - s.slides.nodes.begin())
+                                      : -1);
+                const std::span<const double> x = point(mesh, node);
+                g.origins.insert(g.origins.end(), {x[0], x[1], x.size() == 3 ? x[2] : 0.0});
+            }
+        }
     }
     c.diagonal = bounding_box_diagonal(mesh);
     c.tolerance = spec.shared_tolerance > 0 ? spec.shared_tolerance : 1e-9 * c.diagonal;
     return s;
-}
-
-std::span<const double> point(const Mesh& mesh, NodeId node) {
-    const auto dim = static_cast<std::size_t>(mesh.dim);
-    return {mesh.points.data() + static_cast<std::size_t>(node) * dim, dim};
 }
 
 /// Whether two motions of node x agree: equal, or the same new position within tol.
@@ -334,7 +440,7 @@ std::int64_t warn_folded_faces(const Context& c, const BoundaryMotion& motion, c
         return cross(sub(x[1], x[0]), sub(x[2], x[0]));
     };
     for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
-        if (c.series.marker_sliding[m]) continue;  // its faces move with the volume
+        if (c.series.marker_sliding[m] || c.series.marker_cyclic[m]) continue;  // its faces move with the volume
         const ElementList& faces = mesh.markers[m].elements;
         std::size_t folded = 0, example = 0;
         std::vector<P> before, after;
@@ -400,6 +506,37 @@ BoundaryMotion resolve_at(const Context& c, const MotionFrame& frame, double tim
     const std::int64_t folded = warn_folded_faces(c, f.motion, at, warnings);
     if (folded_faces) *folded_faces = folded;
     return std::move(f.motion);
+}
+
+/// A warning when other markers move nodes of a cyclic group (a node and its
+/// images) differently, through their rotations: the two halves then cannot
+/// stay images of each other.
+void warn_cyclic_mismatch(const Mesh& mesh, const SlideSet& slides, double tolerance, const BoundaryMotion& motion,
+                          const std::string& at, std::vector<Warning>& warnings) {
+    const CyclicGroups& g = slides.cyclic;
+    if (g.empty()) return;
+    std::vector<double> d(3 * g.nodes.size(), 0.0);
+    std::vector<char> held(g.nodes.size());
+    for (std::size_t m = 0; m < g.nodes.size(); ++m) {
+        held[m] = g.slide[m] < 0;
+        if (!held[m]) continue;
+        const std::span<const double> x(g.origins.data() + 3 * m, static_cast<std::size_t>(mesh.dim));
+        double y[3] = {0, 0, 0};
+        apply_motion(motion[static_cast<std::size_t>(g.slots[m])], x, {y, x.size()});
+        for (std::size_t k = 0; k < x.size(); ++k) d[3 * m + k] = y[k] - x[k];
+    }
+    NodeId node = -1;
+    const std::int64_t count = cyclic_disagreements(g, d, held, tolerance, &node);
+    if (count == 0) return;
+    Warning w{WarningCode::cyclic_mismatch,
+              at + ": " + std::to_string(count) + (count == 1 ? " node" : " nodes") +
+                  " of cyclic markers and their images are moved differently by the other markers they are on "
+                  "(node " + std::to_string(node) +
+                  "): each moves as its own markers say, so there the two halves of the periodic boundary no longer "
+                  "match; give both halves' walls the same motion",
+              "", count};
+    w.node = node;
+    warnings.push_back(std::move(w));
 }
 
 /// Warnings for markers the motion file names that have no nodes in the mesh.
@@ -470,6 +607,7 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
     ResolvedBoundary out;
     for (std::size_t m = 0; m < mesh.markers.size(); ++m)
         (c.series.marker_sliding[m]  ? out.sliding_markers
+         : c.series.marker_cyclic[m] ? out.cyclic_markers
          : c.series.marker_moving[m] ? out.moving_markers
                                      : out.static_markers)
             .push_back(mesh.markers[m].name);
@@ -497,8 +635,10 @@ ResolvedBoundary resolve_boundary(const Mesh& mesh, const MotionSpec& spec) {
 
     // Resolve every frame the spec writes out (step 0 for periodic motions),
     // so that bad files and conflicts fail before any deformation.
-    for (std::size_t f = 0; f < spec.frames.size(); ++f)
-        resolve_at(c, spec.frames[f], 0.0, where(spec, f), out.warnings);
+    for (std::size_t f = 0; f < spec.frames.size(); ++f) {
+        const BoundaryMotion motion = resolve_at(c, spec.frames[f], 0.0, where(spec, f), out.warnings);
+        warn_cyclic_mismatch(mesh, series.slides, c.series.tolerance, motion, where(spec, f), out.warnings);
+    }
     out.boundary = std::move(series.boundary);
     out.context = std::move(series.context);
     out.slides = std::move(series.slides);
@@ -513,6 +653,7 @@ ResolvedFrame resolve_frame(const Mesh& mesh, const MotionSpec& spec, const Reso
     ResolvedFrame out;
     out.motion = resolve_at(c, frame_spec(spec, frame), frame_time(spec, frame), where(spec, frame), out.warnings,
                             &out.folded_faces);
+    warn_cyclic_mismatch(mesh, resolved.slides, c.series.tolerance, out.motion, where(spec, frame), out.warnings);
     return out;
 }
 

@@ -43,6 +43,7 @@ struct SeriesContext {
     std::vector<std::vector<std::int32_t>> slots;   // per marker node: its index in the BoundarySet
     std::vector<char> marker_moving;                // per mesh marker: 1 when some frame moves it
     std::vector<char> marker_sliding;               // per mesh marker: 1 when it slides (SlideMotion)
+    std::vector<char> marker_cyclic;                // per mesh marker: 1 when it is cyclic (CyclicMotion)
     double diagonal = 0;                            // of the mesh's bounding box
     double tolerance = 0;                           // for new positions of shared nodes to agree
 };
@@ -57,6 +58,10 @@ struct ResolvedBoundary {
     /// first pass gives: run/slide_pass.hpp), but where too many planes meet
     /// (static).
     std::vector<std::string> sliding_markers;
+    /// Cyclic markers (CyclicMotion), in mesh order. Their nodes on no other
+    /// marker are in `slides` too (free, planes 0, unless also on a sliding
+    /// marker); slides.cyclic couples every cyclic node to its images.
+    std::vector<std::string> cyclic_markers;
     SlideSet slides;
     std::vector<Warning> warnings;            // e.g. nodes shared by moving and static markers
     SeriesContext context;                    // what resolve_frame reuses for every frame

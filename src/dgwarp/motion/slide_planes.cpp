@@ -133,6 +133,7 @@ namespace {
 
 /// Keeps only the part of `v` (dim values) in the node's plane or along its line.
 void project_one(const SlideSet& slides, std::size_t i, std::size_t dim, double* v) {
+    if (slides.planes[i] == 0) return;  // free
     const double* u = slides.directions.data() + i * 3;
     double along = 0;
     for (std::size_t k = 0; k < dim; ++k) along += v[k] * u[k];

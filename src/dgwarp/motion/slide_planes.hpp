@@ -22,16 +22,22 @@
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/motion/cyclic_pairs.hpp"
 
 namespace dgwarp {
 
-/// The sliding nodes and how each may move.
+/// The sliding nodes and how each may move. The nodes of cyclic markers
+/// (CyclicMotion) on no other marker are among them too: the first pass moves
+/// them as it moves the sliding ones, then `cyclic` couples each to its images.
 struct SlideSet {
     std::vector<NodeId> nodes;          // sorted
-    std::vector<std::uint8_t> planes;   // per node: 1 (in a plane) or 2 (3D: along a line)
-    std::vector<double> directions;     // per node, 3 values: the plane's unit normal (1) or the line's unit direction (2)
+    /// per node: 1 (in a plane), 2 (3D: along a line) or 0 (free: a cyclic
+    /// marker's node on no sliding marker)
+    std::vector<std::uint8_t> planes;
+    std::vector<double> directions;     // per node, 3 values: the plane's unit normal (1), the line's unit direction (2), zeros (0)
     std::vector<double> origins;        // per node, dim values: its original coordinates
     std::vector<std::int32_t> slots;    // per node: its index in the run's BoundarySet (resolve_boundary sets them)
+    CyclicGroups cyclic;                // the cyclic markers' nodes, grouped with their images
     bool empty() const { return nodes.empty(); }
     std::size_t size() const { return nodes.size(); }
 };

@@ -6,6 +6,38 @@
 
 namespace dgwarp {
 
+namespace {
+
+/// Each cyclic node and its images (slides.cyclic) moved alike: the free ones
+/// (`displacement`, per sliding node) take what a held one's motion gives it
+/// (`motion`), else their mean, through their rotations; then back in their
+/// planes (a no-op where the planes are images of each other, as a 2D case's
+/// front and back are under its translation).
+void couple_cyclic_nodes(const SlideSet& slides, int dim, const BoundaryMotion& motion, std::vector<double>& displacement) {
+    const CyclicGroups& g = slides.cyclic;
+    if (g.empty()) return;
+    const auto d = static_cast<std::size_t>(dim);
+    std::vector<double> vectors(3 * g.nodes.size(), 0.0);
+    std::vector<char> held(g.nodes.size());
+    for (std::size_t m = 0; m < g.nodes.size(); ++m) {
+        held[m] = g.slide[m] < 0;
+        const std::span<const double> x(g.origins.data() + 3 * m, d);
+        double y[3] = {0, 0, 0};
+        if (held[m]) apply_motion(motion[static_cast<std::size_t>(g.slots[m])], x, {y, d});
+        for (std::size_t k = 0; k < d; ++k)
+            vectors[3 * m + k] =
+                held[m] ? y[k] - x[k] : displacement[static_cast<std::size_t>(g.slide[m]) * d + k];
+    }
+    couple_cyclic_vectors(g, vectors, held);
+    for (std::size_t m = 0; m < g.nodes.size(); ++m)
+        if (!held[m])
+            for (std::size_t k = 0; k < d; ++k)
+                displacement[static_cast<std::size_t>(g.slide[m]) * d + k] = vectors[3 * m + k];
+    project_slide_vectors(slides, dim, displacement);
+}
+
+}  // namespace
+
 Method slide_pass_method(const ResolvedBoundary& resolved) {
     const std::size_t others = resolved.boundary.nodes.size() - resolved.slides.size();
     return others <= max_slide_rbf_centres ? Method::rbf : Method::dg_harmonic;
@@ -58,6 +90,7 @@ void slide_motion(const SlidePass& pass, BoundaryMotion& motion) {
         for (std::size_t k = 0; k < dim; ++k) displacement[i * dim + k] = moved[at + k] - pass.points[at + k];
     }
     project_slide_vectors(pass.slides, pass.dim, displacement);
+    couple_cyclic_nodes(pass.slides, pass.dim, motion, displacement);
     for (std::size_t i = 0; i < pass.slides.size(); ++i) {
         NodeMotion m;
         for (std::size_t k = 0; k < dim; ++k) m.translation[k] = displacement[i * dim + k];
