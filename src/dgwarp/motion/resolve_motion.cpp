@@ -529,11 +529,11 @@ void warn_cyclic_mismatch(const Mesh& mesh, const SlideSet& slides, double toler
     const std::int64_t count = cyclic_disagreements(g, d, held, tolerance, &node);
     if (count == 0) return;
     Warning w{WarningCode::cyclic_mismatch,
-              at + ": " + std::to_string(count) + (count == 1 ? " node" : " nodes") +
-                  " of cyclic markers and their images are moved differently by the other markers they are on "
-                  "(node " + std::to_string(node) +
+              at + ": on " + std::to_string(count) + (count == 1 ? " node" : " nodes") +
+                  " of cyclic markers, other markers move the node and its image differently (e.g. node " +
+                  std::to_string(node) +
                   "): each moves as its own markers say, so there the two halves of the periodic boundary no longer "
-                  "match; give both halves' walls the same motion",
+                  "match; give both halves' walls the same motion (through the rotation between the halves)",
               "", count};
     w.node = node;
     warnings.push_back(std::move(w));
