@@ -55,7 +55,7 @@ std::vector<std::string> marker_list(py::handle obj, const char* what) {
 /// shared-node rule and tolerance of such a file); or, for a motion, as that
 /// motion classifies it.
 ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle static_markers, SharedNodeRule rule,
-                          double tolerance, SharedNodeRule& rule_used, double& tolerance_used) {
+                          double tolerance, SharedNodeRule& rule_used, double& tolerance_used, MotionSpec& used) {
     tolerance = shared_tolerance_arg(tolerance);
     MotionSpec spec;
     if (py::isinstance<PyMotion>(moving) || py::isinstance<py::dict>(moving)) {
@@ -87,21 +87,24 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
     }
     rule_used = spec.shared_nodes;
     tolerance_used = spec.shared_tolerance;
+    used = spec;
     ResolvedBoundary resolved;
     {
         py::gil_scoped_release release;
         resolved = resolve_boundary(mesh.mesh, spec);
     }
-    if (!resolved.sliding_markers.empty())
-        throw py::value_error("marker '" + resolved.sliding_markers.front() +
-                              "' slides: sliding markers are not supported by the Python package yet (the CLI's "
-                              "`dgwarp deform` supports them, docs/MOTION.md)");
-    if (!resolved.cyclic_markers.empty())
-        throw py::value_error("marker '" + resolved.cyclic_markers.front() +
-                              "' is cyclic: cyclic markers are not supported by the Python package yet (the CLI's "
-                              "`dgwarp deform` supports them, docs/MOTION.md)");
     warn_all(resolved.warnings);
     return resolved;
+}
+
+/// A plan over one process's part (comm=) cannot run the sliding and cyclic
+/// nodes' first pass, which needs every boundary node.
+void refuse_slides_with_comm(const ResolvedBoundary& b) {
+    if (b.slides.empty()) return;
+    const std::string marker = b.sliding_markers.empty() ? b.cyclic_markers.front() : b.sliding_markers.front();
+    throw py::value_error("marker '" + marker + "' " + (b.sliding_markers.empty() ? "is cyclic" : "slides") +
+                          ": a plan prepared with comm= has no sliding or cyclic markers (their first pass needs "
+                          "every boundary node); prepare it on one process");
 }
 
 /// What `dgwarp deform` warns about a plan (volume nodes outside the graph's hull).
@@ -125,10 +128,11 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     p->options = method_options(method, kwargs, "prepare");
     p->mesh = mesh;
     p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
-                           p->shared_nodes, p->shared_tolerance);
+                           p->shared_nodes, p->shared_tolerance, p->classified_by);
     if (!comm.is_none()) {
         // This process's part, prepared with the others (py_mpi.hpp).
         if (!progress.is_none()) throw py::value_error("prepare(comm=...) takes no progress callback");
+        refuse_slides_with_comm(p->boundary);
         p->distributed = prepare_distributed_plan(comm, method, mesh->mesh.dim, mesh->mesh.points, global_ids,
                                                   p->boundary.boundary, p->options);
         p->comm = comm;
@@ -138,6 +142,7 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     ProgressBridge bridge(progress);
     bridge.run([&] {
         p->plan = prepare_for_frames(method, mesh->mesh, p->boundary.boundary, p->options, bridge.function());
+        if (!p->boundary.slides.empty()) p->slide = prepare_slide_pass(mesh->mesh, p->boundary, p->options);
     });
     warn_plan(*p);
     return p;
@@ -178,7 +183,7 @@ std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh
         moving_names = names;
     }
     p->boundary = classify(*mesh, moving_names, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
-                           p->shared_nodes, p->shared_tolerance);
+                           p->shared_nodes, p->shared_tolerance, p->classified_by);
     {
         py::gil_scoped_release release;
         if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) check_plan_fits(*d, mesh->mesh.points, p->boundary.boundary);
@@ -187,6 +192,7 @@ std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh
             // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
             attach_frame_guard(p->plan, mesh->mesh, p->boundary.boundary, p->options);
         }
+        if (!p->boundary.slides.empty()) p->slide = prepare_slide_pass(mesh->mesh, p->boundary, p->options);
     }
     warn_plan(*p);
     return p;
@@ -203,7 +209,8 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
         auto p = std::make_shared<PyPlan>();
         p->mesh = mesh;
         p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
-                               p->shared_nodes, p->shared_tolerance);
+                               p->shared_nodes, p->shared_tolerance, p->classified_by);
+        refuse_slides_with_comm(p->boundary);
         p->distributed = load_distributed_plan_file(comm, path, mesh->mesh.dim, mesh->mesh.points, global_ids,
                                                     p->boundary.boundary);
         p->comm = comm;
@@ -228,7 +235,7 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
 // prepared again from the same inputs when unpickled: their preparation is
 // deterministic, so the plan deforms to the same bits either way.
 constexpr const char* plan_state_tag = "dgwarp.Plan";
-constexpr int plan_state_version = 1;
+constexpr int plan_state_version = 2;  // 2: the sliding markers and the cyclic pairs too
 
 py::tuple plan_state(const PyPlan& p) {
     if (p.distributed)
@@ -243,14 +250,24 @@ py::tuple plan_state(const PyPlan& p) {
         }
         bytes = py::bytes(reinterpret_cast<const char*>(file.data()), file.size());
     }
+    // Each cyclic marker with its partner.
+    py::list cyclic;
+    const Mesh& mesh = p.mesh->mesh;
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
+        if (p.boundary.context.marker_cyclic[m]) {
+            const MotionSpec& spec = p.classified_by;
+            const auto& motion = marker_motion(spec, spec.frames.at(0), mesh.markers[m].name);
+            cyclic.append(py::make_tuple(mesh.markers[m].name, std::get<CyclicMotion>(motion).partner));
+        }
     return py::make_tuple(plan_state_tag, plan_state_version, std::const_pointer_cast<PyMesh>(p.mesh),
                           std::string(method_name(method)), options_dict(method, p.options),
                           p.boundary.moving_markers, p.boundary.static_markers,
-                          std::string(shared_nodes_name(p.shared_nodes)), p.shared_tolerance, bytes);
+                          std::string(shared_nodes_name(p.shared_nodes)), p.shared_tolerance, bytes,
+                          p.boundary.sliding_markers, cyclic);
 }
 
 std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
-    if (t.size() != 10 || !py::isinstance<py::str>(t[0]) || t[0].cast<std::string>() != plan_state_tag)
+    if (t.size() != 12 || !py::isinstance<py::str>(t[0]) || t[0].cast<std::string>() != plan_state_tag)
         throw py::value_error("not the pickled state of a dgwarp.Plan");
     if (t[1].cast<int>() != plan_state_version)
         throw py::value_error("a dgwarp.Plan pickled by another version of dgwarp (state version " +
@@ -259,9 +276,25 @@ std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
     auto mesh = t[2].cast<std::shared_ptr<PyMesh>>();
     const std::string method = t[3].cast<std::string>();
     const py::kwargs options = py::kwargs(t[4].cast<py::dict>());
-    const py::list moving = t[5].cast<py::list>(), fixed = t[6].cast<py::list>();
+    py::object moving = t[5].cast<py::list>(), fixed = t[6].cast<py::list>();
     const std::string shared_nodes = t[7].cast<std::string>();
     const double tolerance = t[8].cast<double>();
+    const py::list sliding = t[10].cast<py::list>(), cyclic = t[11].cast<py::list>();
+    if (!sliding.empty() || !cyclic.empty()) {
+        // The classification as a motion in the motion-file form: moving
+        // markers given a (zero) motion, sliding and cyclic ones as they were.
+        py::dict markers;
+        for (auto name : moving) markers[name] = py::dict(py::arg("translate") = py::make_tuple(0.0, 0.0));
+        for (auto name : sliding) markers[name] = py::str("slide");
+        for (auto pair : cyclic) {
+            const py::tuple ab = pair.cast<py::tuple>();
+            markers[ab[0]] = py::dict(py::arg("cyclic") = ab[1]);
+        }
+        py::dict motion(py::arg("markers") = markers, py::arg("shared_nodes") = shared_nodes);
+        if (tolerance > 0) motion["shared_tolerance"] = tolerance;
+        moving = motion;
+        fixed = py::none();
+    }
     if (t[9].is_none()) return prepare_plan(mesh, moving, fixed, method, shared_nodes, tolerance, py::none(), py::none(), py::none(),
                                             options);
     const std::string bytes = t[9].cast<std::string>();
@@ -292,6 +325,11 @@ std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
 py::object derivative_product(const PyPlan& p, py::handle in, py::handle out, bool transpose) {
     const char* name = transpose ? "deform_derivative_transpose" : "deform_derivative";
     if (p.distributed) throw py::value_error(std::string(name) + ": not for a plan prepared with comm=");
+    if (p.slide)
+        throw py::value_error(std::string(name) + ": not for a plan with sliding or cyclic markers (marker '" +
+                              (p.boundary.sliding_markers.empty() ? p.boundary.cyclic_markers.front()
+                                                                  : p.boundary.sliding_markers.front()) +
+                              "'): their nodes' motion comes from a first pass the derivative does not follow");
     const auto dim = static_cast<py::ssize_t>(p.mesh->mesh.dim);
     const auto points = static_cast<py::ssize_t>(p.mesh->mesh.num_points());
     const auto boundary = static_cast<py::ssize_t>(p.boundary.boundary.nodes.size());
@@ -370,8 +408,8 @@ py::object deform_step(const PyPlan& p, py::handle motion, long long frame_arg, 
         static const OriginalCells none;
         const OriginalCells& original = guards_frames(p.plan, options) ? p.original() : none;  // measured once
         bridge.run([&] {
-            measured = step_frame(p.plan, mesh, original, p.boundary.boundary.nodes, nullptr, boundary_motion, options,
-                                  xs, report, bridge.function());
+            measured = step_frame(p.plan, mesh, original, p.boundary.boundary.nodes, p.slide ? &*p.slide : nullptr,
+                                  boundary_motion, options, xs, report, bridge.function());
         });
     }
     report.warnings = std::move(warnings);

@@ -6,11 +6,13 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/run/original_cells.hpp"
+#include "dgwarp/run/slide_pass.hpp"
 #include "py_mesh.hpp"
 #include "py_mpi.hpp"
 
@@ -23,6 +25,10 @@ struct PyPlan {
     double shared_tolerance = 0;  // as given to the classification (0: the default)
     MethodOptions options;       // as used (a loaded plan's own)
     Plan plan;                   // unused (default) when distributed
+    /// With sliding or cyclic markers: their first pass (run/slide_pass.hpp),
+    /// which every step runs before the plan's.
+    std::optional<SlidePass> slide;
+    MotionSpec classified_by;    // the motion (or the marker lists made one) the boundary was classified by
     /// A plan over this process's part, prepared with comm= (py_mpi.hpp),
     /// and the mpi4py communicator it uses (kept alive with the plan).
     std::shared_ptr<const DistributedHolder> distributed;

@@ -27,13 +27,25 @@ ResolvedFrame resolve_motion_frame(const PyPlan& p, const MotionSpec& spec, std:
     const Mesh& mesh = p.mesh->mesh;
     check_marker_names(mesh, spec);
     const MotionFrame& f = frame_spec(spec, frame);
-    for (std::size_t m = 0; m < mesh.markers.size(); ++m)
-        if (!p.boundary.context.marker_moving[m] &&
-            !std::holds_alternative<FixedMotion>(marker_motion(spec, f, mesh.markers[m].name)))
-            throw MeshError((spec.source.empty() ? std::string("motion") : spec.source) + " moves marker '" +
-                                mesh.markers[m].name +
-                                "', which the plan holds static; prepare the plan with it among the moving markers",
-                            mesh.markers[m].name);
+    const std::string source = spec.source.empty() ? std::string("motion") : spec.source;
+    const SeriesContext& c = p.boundary.context;
+    for (std::size_t m = 0; m < mesh.markers.size(); ++m) {
+        const std::string& name = mesh.markers[m].name;
+        const MarkerMotion& motion = marker_motion(spec, f, name);
+        if (std::holds_alternative<FixedMotion>(motion) || c.marker_moving[m]) continue;
+        // A sliding or cyclic marker of the plan: the step's motion may say so again (or leave it out).
+        if (c.marker_sliding[m] && std::holds_alternative<SlideMotion>(motion)) continue;
+        if (c.marker_cyclic[m] && std::holds_alternative<CyclicMotion>(motion)) continue;
+        const char* held = c.marker_sliding[m] ? "sliding" : c.marker_cyclic[m] ? "cyclic" : "static";
+        if (std::holds_alternative<SlideMotion>(motion) || std::holds_alternative<CyclicMotion>(motion))
+            throw MeshError(source + " makes marker '" + name + "' " + motion_kind_name(motion) +
+                                ", which the plan holds " + held +
+                                "; prepare the plan with a motion that makes it " + motion_kind_name(motion),
+                            name);
+        throw MeshError(source + " moves marker '" + name + "', which the plan holds " + held +
+                            "; prepare the plan with it among the moving markers",
+                        name);
+    }
     return resolve_frame(mesh, spec, p.boundary, frame);
 }
 
