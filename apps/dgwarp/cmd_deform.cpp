@@ -210,6 +210,7 @@ void run_deform(const DeformArgs& given) {
         throw CLI::ValidationError("--foam-processors",
                                    "is for an OpenFOAM case holding constant/polyMesh and processor* folders "
                                    "(decomposePar's usual layout) deformed into an OpenFOAM case");
+    a.setup.writable_for = given.output;  // marker names the output cannot hold are made into ones it can
     std::vector<std::string> foam_times;
     const std::vector<Method> methods = chosen_methods(a.setup, true);
     const bool several = methods.size() > 1;

@@ -231,6 +231,12 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     progress.phase("reading " + args.mesh);
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
     apply_marker_renames(in.mesh, args.rename_markers);
+    // Names the output cannot hold (a CGNS BC "UserDefined 1" for an OpenFOAM
+    // patch): made into names it can, in the motion too, and said below.
+    std::vector<MarkerRename> made;
+    if (!args.writable_for.empty()) made = make_marker_names_writable(in.mesh, args.writable_for);
+    for (const MarkerRename& r : made) rename_marker(in.spec, r.from, r.to);
+    if (in.extras.cgns && !made.empty()) in.extras.cgns.reset();  // a renamed CGNS input is written whole
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
     // Markers that slide by their type; a 2D case deformed as its 2D mesh.
@@ -263,6 +269,11 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
                                      "do not share nodes): they move as the motion says (fixed unless it names them), "
                                      "each on its own, so give both halves the same motion, or none, for them to still "
                                      "match"});
+    for (const MarkerRename& r : made)
+        in.boundary.warnings.push_back(
+            {WarningCode::other, args.writable_for + " cannot hold the marker name '" + r.from + "': it is written as '" +
+                                     r.to + "' (--rename-marker '" + r.from + "=NEW' names it otherwise)",
+             r.to});
     if (!in.not_planar.empty())
         in.boundary.warnings.push_back(
             {WarningCode::other, "the empty or wedge patches slide but do not make a 2D case (" + in.not_planar +

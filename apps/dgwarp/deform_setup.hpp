@@ -35,6 +35,10 @@ struct SetupArgs {
     int zone = 1;
     std::string su2_config;  // an SU2 configuration whose MARKER_SYM markers slide
     std::vector<std::string> rename_markers;  // "OLD=NEW", applied to the mesh read
+    /// The output the run writes (deform's -o): marker names its format cannot
+    /// hold are made into names it can (make_marker_names_writable), in the
+    /// mesh and the motion alike, with a warning; "" for none.
+    std::string writable_for;
     int threads = 0;
     // The method options, with the library's defaults.
     double a_translation = DgIdwOptions{}.a_translation;

@@ -388,8 +388,8 @@ TEST(CliOpenFoam, ConvertKeepsCellAndPointZonesAndNamesTheZonesItDrops) {
 }
 
 // CGNS BC names OpenFOAM cannot hold (cgns-convert's "UserDefined 1", issue
-// #30 item 5): convert writes them with '_' and says so; --rename-marker
-// names them; deform refuses them before any work.
+// #30 item 5): convert and deform write them with '_' and say so (the motion
+// naming them as the file does); --rename-marker names them.
 TEST(CliOpenFoam, CgnsNamesWithBlanksBecomePatchNames) {
     const auto dir = scratch_dir();
     const auto cgns = source_dir() / "tests/data/cgns/mixed.cgns";
@@ -405,9 +405,18 @@ TEST(CliOpenFoam, CgnsNamesWithBlanksBecomePatchNames) {
     EXPECT_NE(r.err.find("--rename-marker 'nosuch=top': unknown marker 'nosuch'; the mesh has: UserDefined 1"), std::string::npos) << r.err;
     const auto motion = write_text(dir / "lift.json", R"({"markers": {"top": {"translate": [0, 0, 0.01]}}})");
     r = run_cli("deform " + quoted(cgns) + " -m " + quoted(motion) + " -o " + quoted(dir / "moved/") + " --rename-marker 'UserDefined 5=top'");
-    EXPECT_EQ(r.exit_code, 2);
-    EXPECT_NE(r.err.find("marker 'UserDefined 1' cannot name an OpenFOAM patch"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dir / "moved"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("cannot hold the marker name 'UserDefined 2': it is written as 'UserDefined_2'"), std::string::npos) << r.err;
+    const Mesh moved = read_mesh(dir / "moved" / "0");
+    ASSERT_EQ(moved.markers.size(), 5u);
+    EXPECT_EQ(moved.markers[1].name, "UserDefined_2");
+    // The motion names a marker as the file does: it moves the renamed patch.
+    const auto by_file_name =
+        write_text(dir / "lift2.json", R"({"markers": {"UserDefined 5": {"translate": [0, 0, 0.01]}}})");
+    r = run_cli("deform " + quoted(cgns) + " -m " + quoted(by_file_name) + " -o " + quoted(dir / "moved2/") + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["boundary"]["moving_markers"], (nlohmann::json{"UserDefined_5"}));
+    EXPECT_TRUE(read_mesh(dir / "moved2" / "0").points == moved.points);
 }
 
 // A time folder as input (issue #30 item 5): CASE/T holding polyMesh/points

@@ -69,3 +69,21 @@ TEST(MotionSpec, FrameCountTimeAndDefault) {
     EXPECT_DOUBLE_EQ(frame_time(periodic, 4), 0.2);
     EXPECT_EQ(&frame_spec(periodic, 6), &periodic.frames[0]);
 }
+
+TEST(MotionSpec, RenameMarkerRenamesTheKeyAndTheCyclicPartnersInEveryFrame) {
+    MotionSpec spec;
+    spec.frames.resize(2);
+    for (MotionFrame& f : spec.frames) {
+        f.markers["in 1"] = CyclicMotion{"out"};
+        f.markers["out"] = CyclicMotion{"in 1"};
+        f.markers["wall"] = FixedMotion{};
+    }
+    rename_marker(spec, "in 1", "in_1");
+    rename_marker(spec, "nosuch", "x");  // no marker of that name: nothing changes
+    for (const MotionFrame& f : spec.frames) {
+        EXPECT_EQ(f.markers.size(), 3u);
+        EXPECT_EQ(f.markers.count("in 1"), 0u);
+        EXPECT_EQ(std::get<CyclicMotion>(f.markers.at("in_1")).partner, "out");
+        EXPECT_EQ(std::get<CyclicMotion>(f.markers.at("out")).partner, "in_1");
+    }
+}

@@ -85,6 +85,17 @@ std::vector<std::pair<std::string, std::string>> couple_unless_named(
     return made;
 }
 
+void rename_marker(MotionSpec& spec, const std::string& from, const std::string& to) {
+    for (MotionFrame& f : spec.frames) {
+        if (auto node = f.markers.extract(from)) {
+            node.key() = to;
+            f.markers.insert(std::move(node));
+        }
+        for (auto& [name, motion] : f.markers)
+            if (auto* c = std::get_if<CyclicMotion>(&motion); c && c->partner == from) c->partner = to;
+    }
+}
+
 const char* motion_kind_name(const MarkerMotion& motion) {
     static constexpr const char* names[] = {"fixed",        "rigid",            "periodic", "displacement_file",
                                             "surface_file", "node_motion_file", "slide",     "cyclic"};

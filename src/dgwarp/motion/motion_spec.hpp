@@ -195,6 +195,11 @@ std::vector<std::string> slide_unless_named(MotionSpec& spec, const std::vector<
 std::vector<std::pair<std::string, std::string>> couple_unless_named(
     MotionSpec& spec, const std::vector<std::pair<std::string, std::string>>& pairs);
 
+/// Renames marker `from` to `to` in every frame of `spec` (its key, and the
+/// partner of the cyclic markers that name it): what a mesh whose marker was
+/// renamed after the motion file was written needs.
+void rename_marker(MotionSpec& spec, const std::string& from, const std::string& to);
+
 /// A short name of the kind of motion ("fixed", "rigid", "periodic",
 /// "displacement_file", "surface_file", "node_motion_file", "slide",
 /// "cyclic"), for messages.
