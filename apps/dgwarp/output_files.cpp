@@ -70,9 +70,11 @@ std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path&
     }
     if (!processors.empty()) {
         std::vector<std::filesystem::path> files;
+        const auto time = openfoam_decomposed_time(path);
         for (const auto& dir : processors) {
             for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
             for (const char* name : processor_addressing_file_names) files.push_back(dir / name);
+            if (time) files.push_back(dir.parent_path().parent_path() / time->time / "polyMesh" / "points");
         }
         return files;
     }

@@ -419,6 +419,35 @@ TEST(CliOpenFoam, CgnsNamesWithBlanksBecomePatchNames) {
     EXPECT_TRUE(read_mesh(dir / "moved2" / "0").points == moved.points);
 }
 
+// A time of a decomposed case as input: CASE/T, where the processors hold
+// processorN/T/polyMesh/points (what deform writes), is the case's mesh with
+// those points; deformed again, it may not overwrite its own points.
+TEST(CliOpenFoam, ATimeOfADecomposedCaseReadsAsItsMeshWithThosePoints) {
+    const auto dir = scratch_dir();
+    const auto c = foam_case_copy("channel-cyclic-decomposed-4", dir);
+    const auto motion =
+        write_text(dir / "m.json", R"({"markers": {"bottomWall": {"translate": [0.3, 0.01, 0.2]}}})");
+    ASSERT_EQ(run_cli("deform -q " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(dir / "serial/")).exit_code, 0);
+    ASSERT_EQ(run_cli("deform -q " + quoted(c) + " -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time 1").exit_code, 0);
+    EXPECT_FALSE(std::filesystem::exists(c / "1"));  // decomposed times are the processors'
+    const Mesh at_one = read_mesh(c / "1");
+    EXPECT_TRUE(at_one.points == read_mesh(dir / "serial" / "0").points) << "not the deformed points";
+    EXPECT_TRUE(at_one.cells == read_mesh(c).cells);
+    CommandResult r = run_cli("quality " + quoted(c / "1"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    r = run_cli("deform " + quoted(c / "1") + " -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time 1");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("polyMesh/points is an input of this command"), std::string::npos) << r.err;
+    // From time 1 to time 2: the motion applied to the time-1 mesh.
+    ASSERT_EQ(run_cli("deform -q " + quoted(c / "1") + " -m " + quoted(motion) + " -o " + quoted(c) + " --foam-time 2").exit_code, 0);
+    const Mesh at_two = read_mesh(c / "2");
+    EXPECT_FALSE(at_two.points == at_one.points);
+    // A time no processor has: no such file.
+    r = run_cli("quality " + quoted(c / "7"));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+}
+
 // A time folder as input (issue #30 item 5): CASE/T holding polyMesh/points
 // (what deform writes) is the case's mesh with those points.
 TEST(CliOpenFoam, ATimeFolderReadsAsTheMeshWithItsPoints) {

@@ -17,6 +17,7 @@
 // format they were read in, leaving every other file as it is.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -85,7 +86,20 @@ std::filesystem::path openfoam_points_folder(const std::filesystem::path& path);
 /// constant/polyMesh whose processorN folders, N = 0, 1, ... without a gap,
 /// hold polyMeshes; empty for any other path. Throws FormatError for a
 /// collated decomposition (one processors<N> folder).
+/// For CASE/T, a time of a decomposed case (below), the case's processors.
 std::vector<std::filesystem::path> openfoam_processor_meshes(const std::filesystem::path& path);
+
+/// A time of a decomposed case, given as CASE/T: CASE is a decomposed case
+/// (processor folders, no constant/polyMesh), CASE/T is no mesh folder (it
+/// may not exist: decomposed times are processorN/T), and
+/// CASE/processor0/T/polyMesh holds points (what `deform` and a parallel
+/// moving-mesh run write). read_openfoam reads the processors' meshes with
+/// their time T points.
+struct OpenFoamDecomposedTime {
+    std::filesystem::path case_folder;
+    std::string time;
+};
+std::optional<OpenFoamDecomposedTime> openfoam_decomposed_time(const std::filesystem::path& path);
 
 /// The processorN folders of a decomposed case in its usual layout: `path`
 /// holds constant/polyMesh (which read_openfoam reads and deform writes) and
@@ -143,7 +157,8 @@ std::vector<OpenFoamProcessor> read_processors_beside(const std::filesystem::pat
 /// whole mesh's `points` (num_points × 3) through p.points.
 std::vector<double> processor_points(const OpenFoamProcessor& p, std::span<const double> points);
 
-/// True when `path` is a folder: read_mesh reads it as an OpenFOAM case.
+/// True when `path` is a folder or a time of a decomposed case
+/// (openfoam_decomposed_time): read_mesh reads it as an OpenFOAM case.
 bool is_openfoam_input(const std::filesystem::path& path);
 
 /// True when write_mesh writes `path` as an OpenFOAM case folder: it is a

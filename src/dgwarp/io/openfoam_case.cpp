@@ -108,7 +108,7 @@ fs::path find_poly_mesh(const fs::path& path) {
                       "dgwarp reads a folder as an OpenFOAM mesh");
 }
 
-bool is_openfoam_input(const fs::path& path) { return is_folder(path); }
+bool is_openfoam_input(const fs::path& path) { return is_folder(path) || openfoam_decomposed_time(path).has_value(); }
 
 bool is_openfoam_output(const fs::path& path) {
     return is_folder(path) || (!path.empty() && path.filename().empty()) || path.extension().empty();
@@ -126,8 +126,10 @@ fs::path openfoam_points_folder(const fs::path& path) {
 }
 
 Mesh read_openfoam(const fs::path& path, const ProgressFn& progress, OpenFoamSource* source) {
-    if (const auto meshes = openfoam_processor_meshes(path); !meshes.empty())
-        return foam::read_openfoam_decomposed(meshes, progress, source);
+    if (const auto meshes = openfoam_processor_meshes(path); !meshes.empty()) {
+        const auto time = openfoam_decomposed_time(path);
+        return foam::read_openfoam_decomposed(meshes, progress, source, time ? time->time : std::string());
+    }
     const fs::path dir = find_poly_mesh(path), points_dir = openfoam_points_folder(path);
     PolyMeshFiles files;
     std::string* parts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};

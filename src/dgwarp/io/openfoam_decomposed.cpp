@@ -102,7 +102,33 @@ std::vector<fs::path> openfoam_unread_processor_folders(const fs::path& path) {
     return folders;
 }
 
+namespace {
+/// openfoam_processor_meshes of a case folder (not of a time of one).
+std::vector<fs::path> case_processor_meshes(const fs::path& path);
+}  // namespace
+
+std::optional<OpenFoamDecomposedTime> openfoam_decomposed_time(const fs::path& path) {
+    fs::path p = path;
+    if (p.filename().empty()) p = p.parent_path();
+    if (p.empty() || !p.has_parent_path() || is_folder(p / "polyMesh") || is_folder(p / "constant")) return std::nullopt;
+    const fs::path case_folder = p.parent_path();
+    const std::string time = p.filename().string();
+    if (time.empty() || time == "." || time == ".." || time == "constant" || !is_folder(case_folder / "processor0"))
+        return std::nullopt;
+    const fs::path points = case_folder / "processor0" / time / "polyMesh";
+    std::error_code ec;
+    if (!fs::exists(points / "points", ec) && !fs::exists(points / "points.gz", ec)) return std::nullopt;
+    if (case_processor_meshes(case_folder).empty()) return std::nullopt;
+    return OpenFoamDecomposedTime{case_folder, time};
+}
+
 std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
+    if (const auto t = openfoam_decomposed_time(path)) return case_processor_meshes(t->case_folder);
+    return case_processor_meshes(path);
+}
+
+namespace {
+std::vector<fs::path> case_processor_meshes(const fs::path& path) {
     if (!is_folder(path) || is_folder(path / "constant" / "polyMesh")) return {};
     if (const auto collated = numbered_folders(path, "processors"); !collated.empty())
         throw FormatError(collated.begin()->second.string() +
@@ -124,6 +150,7 @@ std::vector<fs::path> openfoam_processor_meshes(const fs::path& path) {
     }
     return meshes;
 }
+}  // namespace
 
 std::vector<OpenFoamProcessor> read_processors_beside(const fs::path& path, std::size_t num_points) {
     std::vector<OpenFoamProcessor> processors;
@@ -212,7 +239,7 @@ OpenFoamProcessorMesh read_openfoam_processor(const fs::path& dir) {
 }
 
 Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const ProgressFn& progress,
-                                    OpenFoamSource* source) {
+                                    OpenFoamSource* source, const std::string& time) {
     std::vector<ProcessorPart> parts;
     std::int64_t num_points = 0, num_cells = 0, local_points = 0;
     for (std::size_t p = 0; p < meshes.size(); ++p) {
@@ -220,6 +247,8 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
         PolyMeshFiles files;
         std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
         for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
+        // A time's points (processorN/T/polyMesh/points), every processor's.
+        if (!time.empty()) files.points = foam::read_mesh_file(dir.parent_path().parent_path() / time / "polyMesh", "points");
         ProcessorPart part{foam::read_poly_mesh_part(dir, std::move(files), true), {}, {}, {}};
         const Mesh& m = part.part.mesh;
         part.point_of = read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(m.num_points()), false);

@@ -87,8 +87,10 @@ std::string read_mesh_file(const std::filesystem::path& dir, const char* name);
 
 /// read_openfoam of a decomposed case whose processors' polyMesh folders
 /// are `meshes` (openfoam_processor_meshes).
+/// With `time`, each processor's points are its time folder's
+/// (processorN/<time>/polyMesh/points; IoError naming a missing one).
 Mesh read_openfoam_decomposed(const std::vector<std::filesystem::path>& meshes, const ProgressFn& progress,
-                              OpenFoamSource* source);
+                              OpenFoamSource* source, const std::string& time = {});
 
 /// A labelList file (a decomposed case's pointProcAddressing, ...).
 std::vector<std::int32_t> read_label_list_file(const std::string& file, std::string_view content);
