@@ -267,12 +267,13 @@ py::tuple plan_state(const PyPlan& p) {
 }
 
 std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
-    if (t.size() != 12 || !py::isinstance<py::str>(t[0]) || t[0].cast<std::string>() != plan_state_tag)
+    if (t.size() < 2 || !py::isinstance<py::str>(t[0]) || t[0].cast<std::string>() != plan_state_tag)
         throw py::value_error("not the pickled state of a dgwarp.Plan");
-    if (t[1].cast<int>() != plan_state_version)
+    if (!py::isinstance<py::int_>(t[1]) || t[1].cast<int>() != plan_state_version)
         throw py::value_error("a dgwarp.Plan pickled by another version of dgwarp (state version " +
                               py::str(t[1]).cast<std::string>() + ", this one reads " +
                               std::to_string(plan_state_version) + "): pickle it again");
+    if (t.size() != 12) throw py::value_error("not the pickled state of a dgwarp.Plan");
     auto mesh = t[2].cast<std::shared_ptr<PyMesh>>();
     const std::string method = t[3].cast<std::string>();
     const py::kwargs options = py::kwargs(t[4].cast<py::dict>());

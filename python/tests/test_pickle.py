@@ -85,6 +85,10 @@ def test_a_damaged_pickle_is_refused(naca_file):
         dgwarp.Plan.__new__(dgwarp.Plan).__setstate__(tuple(state))
     with pytest.raises(ValueError, match="not the pickled state of a dgwarp.Plan"):
         dgwarp.Plan.__new__(dgwarp.Plan).__setstate__(("something else",))
+    older = list(plan.__getstate__())[:10]  # version 1 had no sliding or cyclic markers
+    older[1] = 1
+    with pytest.raises(ValueError, match=r"pickled by another version of dgwarp \(state version 1, this one reads 2\)"):
+        dgwarp.Plan.__new__(dgwarp.Plan).__setstate__(tuple(older))
     mesh_state = list(plan.mesh.__getstate__())
     mesh_state[3] = mesh_state[3][:-8]  # a point short
     with pytest.raises(ValueError, match="points are not whole rows"):
