@@ -97,5 +97,31 @@ TEST(MarkerTypes, FilesWithoutTypesSlideNothing) {
     EXPECT_EQ(marker_types(mesh, none), std::vector<std::string>(mesh.markers.size()));
 }
 
+TEST(MarkerTypes, OpenFoamCyclicPatchesAndTheirNeighbourPatchAreCoupledUnlessNamed) {
+    MeshExtras extras;
+    const Mesh mesh = read_case("channel-cyclic", extras);
+    ASSERT_TRUE(extras.openfoam);
+    EXPECT_EQ(cyclic_neighbour(extras.openfoam->patches[6]), "inout1_half1");
+    EXPECT_EQ(cyclic_neighbour(extras.openfoam->patches[0]), "");  // bottomWall
+    MotionSpec spec;
+    spec.frames.emplace_back();
+    spec.frames[0].markers["bottomWall"] = RigidMotion{NodeMotion{{0.01, 0, 0}, {}, {}}};
+    spec.frames[0].markers["inout1_half1"] = FixedMotion{};  // named: that pair is not coupled
+    const TypedMotion typed = apply_marker_types(mesh, extras, spec);
+    const std::vector<std::pair<std::string, std::string>> coupled{
+        {"sides1_half0", "sides1_half1"}, {"sides2_half0", "sides2_half1"}, {"inout2_half0", "inout2_half1"}};
+    EXPECT_EQ(typed.coupled, coupled);
+    EXPECT_EQ(typed.uncoupled, (std::vector<std::string>{"inout1_half0", "inout1_half1"}));
+    EXPECT_EQ(std::get<CyclicMotion>(spec.frames[0].markers.at("sides1_half1")).partner, "sides1_half0");
+    EXPECT_EQ(spec.frames[0].markers.count("inout1_half0"), 0u);
+    // A default in the motion: nothing is coupled.
+    MotionSpec with_default;
+    with_default.frames.emplace_back();
+    with_default.default_given = true;
+    const TypedMotion none = apply_marker_types(mesh, extras, with_default);
+    EXPECT_TRUE(none.coupled.empty());
+    EXPECT_EQ(none.uncoupled.size(), 8u);
+}
+
 }  // namespace
 }  // namespace dgwarp
