@@ -246,9 +246,9 @@ Mesh foam::read_openfoam_decomposed(const std::vector<fs::path>& meshes, const P
         const fs::path& dir = meshes[p];
         PolyMeshFiles files;
         std::string* texts[] = {&files.points, &files.faces, &files.owner, &files.neighbour, &files.boundary};
-        for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(dir, poly_mesh_file_names[k]);
-        // A time's points (processorN/T/polyMesh/points), every processor's.
-        if (!time.empty()) files.points = foam::read_mesh_file(dir.parent_path().parent_path() / time / "polyMesh", "points");
+        // A time's points (processorN/T/polyMesh/points), every processor's, else constant's.
+        const fs::path points_dir = time.empty() ? dir : dir.parent_path().parent_path() / time / "polyMesh";
+        for (int k = 0; k < 5; ++k) *texts[k] = foam::read_mesh_file(k == 0 ? points_dir : dir, poly_mesh_file_names[k]);
         ProcessorPart part{foam::read_poly_mesh_part(dir, std::move(files), true), {}, {}, {}};
         const Mesh& m = part.part.mesh;
         part.point_of = read_addressing(dir, "pointProcAddressing", static_cast<std::int64_t>(m.num_points()), false);

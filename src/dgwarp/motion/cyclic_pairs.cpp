@@ -282,6 +282,20 @@ void couple_cyclic_vectors(const CyclicGroups& groups, std::span<double> vectors
     }
 }
 
+CyclicVectors held_cyclic_displacements(const CyclicGroups& groups, int dim, const BoundaryMotion& motion) {
+    const auto d = static_cast<std::size_t>(dim);
+    CyclicVectors out{std::vector<double>(3 * groups.nodes.size(), 0.0), std::vector<char>(groups.nodes.size(), 0)};
+    for (std::size_t m = 0; m < groups.nodes.size(); ++m) {
+        out.held[m] = groups.slide[m] < 0;
+        if (!out.held[m]) continue;
+        const std::span<const double> x(groups.origins.data() + 3 * m, d);
+        double y[3] = {0, 0, 0};
+        apply_motion(motion[static_cast<std::size_t>(groups.slots[m])], x, {y, d});
+        for (std::size_t k = 0; k < d; ++k) out.vectors[3 * m + k] = y[k] - x[k];
+    }
+    return out;
+}
+
 std::int64_t cyclic_disagreements(const CyclicGroups& groups, std::span<const double> vectors,
                                   std::span<const char> held, double tolerance, NodeId* node) {
     std::int64_t count = 0;

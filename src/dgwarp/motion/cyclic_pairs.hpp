@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
 
@@ -54,6 +55,16 @@ CyclicGroups cyclic_groups(const Mesh& mesh, std::span<const CyclicPair> pairs);
 /// to the group's first node (R_held^T v_held), or, when no member is held,
 /// the mean of the members' vectors brought there. Held members keep theirs.
 void couple_cyclic_vectors(const CyclicGroups& groups, std::span<double> vectors, std::span<const char> held);
+
+/// Per member of `groups` (resolved: slots, slide and origins filled): held
+/// (another marker moves it: slide < 0) or not, and for a held member the
+/// displacement its NodeMotion in `motion` (one per boundary slot) gives it
+/// (3 values per member; zeros for the free ones, for the caller to fill).
+struct CyclicVectors {
+    std::vector<double> vectors;
+    std::vector<char> held;
+};
+CyclicVectors held_cyclic_displacements(const CyclicGroups& groups, int dim, const BoundaryMotion& motion);
 
 /// How many groups have held members whose vectors disagree through their
 /// rotations by more than `tolerance` (a length); their first such member's

@@ -515,18 +515,9 @@ void warn_cyclic_mismatch(const Mesh& mesh, const SlideSet& slides, double toler
                           const std::string& at, std::vector<Warning>& warnings) {
     const CyclicGroups& g = slides.cyclic;
     if (g.empty()) return;
-    std::vector<double> d(3 * g.nodes.size(), 0.0);
-    std::vector<char> held(g.nodes.size());
-    for (std::size_t m = 0; m < g.nodes.size(); ++m) {
-        held[m] = g.slide[m] < 0;
-        if (!held[m]) continue;
-        const std::span<const double> x(g.origins.data() + 3 * m, static_cast<std::size_t>(mesh.dim));
-        double y[3] = {0, 0, 0};
-        apply_motion(motion[static_cast<std::size_t>(g.slots[m])], x, {y, x.size()});
-        for (std::size_t k = 0; k < x.size(); ++k) d[3 * m + k] = y[k] - x[k];
-    }
+    const CyclicVectors held = held_cyclic_displacements(g, mesh.dim, motion);
     NodeId node = -1;
-    const std::int64_t count = cyclic_disagreements(g, d, held, tolerance, &node);
+    const std::int64_t count = cyclic_disagreements(g, held.vectors, held.held, tolerance, &node);
     if (count == 0) return;
     Warning w{WarningCode::cyclic_mismatch,
               at + ": on " + std::to_string(count) + (count == 1 ? " node" : " nodes") +

@@ -17,17 +17,11 @@ void couple_cyclic_nodes(const SlideSet& slides, int dim, const BoundaryMotion& 
     const CyclicGroups& g = slides.cyclic;
     if (g.empty()) return;
     const auto d = static_cast<std::size_t>(dim);
-    std::vector<double> vectors(3 * g.nodes.size(), 0.0);
-    std::vector<char> held(g.nodes.size());
-    for (std::size_t m = 0; m < g.nodes.size(); ++m) {
-        held[m] = g.slide[m] < 0;
-        const std::span<const double> x(g.origins.data() + 3 * m, d);
-        double y[3] = {0, 0, 0};
-        if (held[m]) apply_motion(motion[static_cast<std::size_t>(g.slots[m])], x, {y, d});
-        for (std::size_t k = 0; k < d; ++k)
-            vectors[3 * m + k] =
-                held[m] ? y[k] - x[k] : displacement[static_cast<std::size_t>(g.slide[m]) * d + k];
-    }
+    auto [vectors, held] = held_cyclic_displacements(g, dim, motion);
+    for (std::size_t m = 0; m < g.nodes.size(); ++m)
+        if (!held[m])
+            for (std::size_t k = 0; k < d; ++k)
+                vectors[3 * m + k] = displacement[static_cast<std::size_t>(g.slide[m]) * d + k];
     couple_cyclic_vectors(g, vectors, held);
     for (std::size_t m = 0; m < g.nodes.size(); ++m)
         if (!held[m])
