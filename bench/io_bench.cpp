@@ -12,6 +12,7 @@
 
 #include "bench_timing.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/io/file_bytes.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/text_reader.hpp"
 
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
     const auto out = std::filesystem::temp_directory_path() /
                      ("dgwarp-bench-io" + path.extension().string());
     std::printf("%s: %.1f MB\n", path.string().c_str(), mb);
-    const double bytes = median_seconds(repeats, [&] { (void)read_file_text(path); });
+    const double bytes = median_seconds(repeats, [&] { (void)FileBytes::read(path); });
     std::printf("the file's bytes into memory: %.3f s (%.0f MB/s)\n", bytes, mb / bytes);
     for (int threads : {1, 2}) {
         set_num_threads(threads);

@@ -64,13 +64,16 @@ std::string read_file_text(const std::filesystem::path& path) {
 }
 
 TextReader TextReader::open(const std::filesystem::path& path) {
-    return TextReader(path.string(), read_file_text(path));
+    return TextReader(path.string(), FileBytes::read(path));
 }
 
 TextReader::TextReader(std::string file_name, std::string content)
-    : file_(std::move(file_name)), content_(std::move(content)) {
+    : TextReader(std::move(file_name), FileBytes(std::move(content))) {}
+
+TextReader::TextReader(std::string file_name, FileBytes content)
+    : file_(std::move(file_name)), bytes_(std::move(content)) {
     // A UTF-8 byte order mark (editors on Windows write one) is not part of the first line.
-    if (content_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
+    if (bytes_.view().starts_with("\xEF\xBB\xBF")) pos_ = 3;
 }
 
 void TextReader::set_progress(ProgressFn progress) {
@@ -83,21 +86,22 @@ void TextReader::report_progress() { report_progress_to(pos_); }
 void TextReader::report_progress_to(std::size_t pos) {
     if (!progress_ || pos < next_report_) return;
     constexpr std::size_t mib = std::size_t{1} << 20;
-    const std::size_t size = content_.size();
+    const std::size_t size = content().size();
     progress_(size == 0 ? 1.0 : std::min(1.0, static_cast<double>(pos) / static_cast<double>(size)));
     next_report_ = pos + std::max(mib, size / 100);
 }
 
 bool TextReader::next_line() {
+    const std::string_view text = content();
     if (pos_ >= next_report_) report_progress();
-    if (pos_ >= content_.size()) {
+    if (pos_ >= text.size()) {
         line_ = {};
         cursor_ = 0;
         return false;
     }
-    std::size_t end = content_.find('\n', pos_);
-    if (end == std::string::npos) end = content_.size();
-    std::string_view l(content_.data() + pos_, end - pos_);
+    std::size_t end = text.find('\n', pos_);
+    if (end == std::string::npos) end = text.size();
+    std::string_view l(text.data() + pos_, end - pos_);
     if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
     line_ = l;
     cursor_ = 0;
@@ -107,14 +111,15 @@ bool TextReader::next_line() {
 }
 
 void TextReader::seek(std::size_t pos, std::size_t line_number) {
-    pos_ = std::min(pos, content_.size());
+    const std::string_view text = content();
+    pos_ = std::min(pos, text.size());
     line_number_ = line_number;
     // The current line: the one ending just before pos (its '\n', or the end of the content).
     std::size_t end = pos_;
-    if (end > 0 && content_[end - 1] == '\n') --end;
-    const std::size_t nl = end == 0 ? std::string::npos : content_.rfind('\n', end - 1);
+    if (end > 0 && text[end - 1] == '\n') --end;
+    const std::size_t nl = end == 0 ? std::string::npos : text.rfind('\n', end - 1);
     const std::size_t start = nl == std::string::npos ? 0 : nl + 1;
-    line_ = std::string_view(content_.data() + start, end - start);
+    line_ = std::string_view(text.data() + start, end - start);
     if (!line_.empty() && line_.back() == '\r') line_.remove_suffix(1);
     cursor_ = line_.size();
 }

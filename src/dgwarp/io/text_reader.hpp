@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "dgwarp/core/progress.hpp"
+#include "dgwarp/io/file_bytes.hpp"
 
 namespace dgwarp {
 
@@ -19,11 +20,13 @@ std::string read_file_text(const std::filesystem::path& path);
 
 class TextReader {
 public:
-    /// Reads the whole file into memory; throws IoError when it cannot be read.
+    /// A reader over the file's bytes (mapped when large: file_bytes.hpp);
+    /// throws IoError when it cannot be read.
     static TextReader open(const std::filesystem::path& path);
     /// A reader over `content`, reporting errors as coming from `file_name`.
     /// A UTF-8 byte order mark at its start is skipped.
     TextReader(std::string file_name, std::string content);
+    TextReader(std::string file_name, FileBytes content);
 
     /// Reports the bytes consumed / the content's size to `progress` as
     /// next_line() advances: every 1% or 1 MiB, whichever is more.
@@ -42,17 +45,17 @@ public:
     /// Byte offset of the current line's first character in the content.
     /// (the content's size at the end of the file).
     std::size_t line_offset() const {
-        return line_.data() ? static_cast<std::size_t>(line_.data() - content_.data()) : content_.size();
+        return line_.data() ? static_cast<std::size_t>(line_.data() - content().data()) : content().size();
     }
     /// The whole content.
-    std::string_view content() const { return content_; }
+    std::string_view content() const { return bytes_.view(); }
     /// 1-based number of the current line (0 before the first next_line()).
     std::size_t line_number() const { return line_number_; }
     const std::string& file() const { return file_; }
-    bool at_end() const { return pos_ >= content_.size(); }
+    bool at_end() const { return pos_ >= content().size(); }
     /// Bytes after the current line: bounds what a count read from a header
     /// can honestly announce, before anything is allocated for it.
-    std::size_t remaining_bytes() const { return at_end() ? 0 : content_.size() - pos_; }
+    std::size_t remaining_bytes() const { return at_end() ? 0 : content().size() - pos_; }
 
     /// The next whitespace-separated token of the current line, or an empty
     /// view at the end of the line.
@@ -86,7 +89,7 @@ public:
 
 private:
     std::string file_;
-    std::string content_;
+    FileBytes bytes_;
     std::size_t pos_ = 0;
     std::string_view line_;
     std::size_t cursor_ = 0;  // position of the next token in line_

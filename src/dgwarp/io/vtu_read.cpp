@@ -531,9 +531,9 @@ Mesh read_vtu_text(const std::string& file_name, std::string content) {
 }
 
 Mesh read_vtu(const std::filesystem::path& path, const ProgressFn& progress) {
-    const std::string content = read_file_text(path);
+    const FileBytes content = FileBytes::read(path);
     const std::string file = path.string();
-    return VtuReader(file, content, progress).read();
+    return VtuReader(file, content.view(), progress).read();
 }
 
 }  // namespace dgwarp

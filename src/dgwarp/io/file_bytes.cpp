@@ -1,0 +1,68 @@
+#include "dgwarp/io/file_bytes.hpp"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/io/text_reader.hpp"
+
+namespace dgwarp {
+
+namespace {
+// Smaller files are read: a mapping costs a few system calls, and its pages
+// are no cheaper than a small string's.
+constexpr off_t smallest_mapped = off_t{1} << 20;
+}  // namespace
+
+FileBytes FileBytes::read(const std::filesystem::path& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    struct stat st {};
+    if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= smallest_mapped) {
+        const auto size = static_cast<std::size_t>(st.st_size);
+        // MAP_POPULATE: the page table is filled in one call (the file's pages
+        // are read first when they are not cached), not one fault per page.
+        void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        ::close(fd);
+        if (p != MAP_FAILED) {
+            FileBytes bytes;
+            bytes.mapped_ = p;
+            bytes.mapped_size_ = size;
+            bytes.view_ = std::string_view(static_cast<const char*>(p), size);
+            return bytes;
+        }
+    } else if (fd >= 0) {
+        ::close(fd);
+    }
+    // Everything else, errors included, as read_file_text has it.
+    return FileBytes(read_file_text(path));
+}
+
+FileBytes::FileBytes(FileBytes&& other) noexcept { *this = std::move(other); }
+
+FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
+    if (this == &other) return *this;
+    release();
+    const bool was_mapped = other.mapped_ != nullptr;
+    text_ = std::move(other.text_);
+    mapped_ = std::exchange(other.mapped_, nullptr);
+    mapped_size_ = std::exchange(other.mapped_size_, 0);
+    view_ = was_mapped ? std::string_view(static_cast<const char*>(mapped_), mapped_size_) : std::string_view(text_);
+    other.view_ = std::string_view(other.text_);
+    return *this;
+}
+
+FileBytes::~FileBytes() { release(); }
+
+void FileBytes::release() noexcept {
+    if (mapped_) ::munmap(mapped_, mapped_size_);
+    mapped_ = nullptr;
+    mapped_size_ = 0;
+}
+
+}  // namespace dgwarp

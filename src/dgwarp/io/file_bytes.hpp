@@ -1,0 +1,44 @@
+#pragma once
+// A file's bytes for a reader, without copying them where the system allows
+// (issue #33): a large regular file is mapped read-only, so that its bytes
+// are the page cache's own pages (reading 261 MB into a fresh string took
+// 1.3 s in a virtual machine whose page faults are dear, mapping it 0.13 s);
+// a small file, and anything mmap refuses, is read into a string.
+//
+// A mapped file must not shrink while it is read: its bytes past the new end
+// would no longer exist, and touching them stops the process (SIGBUS).
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace dgwarp {
+
+class FileBytes {
+public:
+    /// The bytes of the file at `path`; throws IoError as read_file_text
+    /// (text_reader.hpp) does: a folder, a device, a pipe, a missing or
+    /// unreadable file.
+    static FileBytes read(const std::filesystem::path& path);
+    /// Bytes held in memory (tests, text made by a program).
+    explicit FileBytes(std::string text) : text_(std::move(text)), view_(text_) {}
+
+    FileBytes(FileBytes&& other) noexcept;
+    FileBytes& operator=(FileBytes&& other) noexcept;
+    FileBytes(const FileBytes&) = delete;
+    FileBytes& operator=(const FileBytes&) = delete;
+    ~FileBytes();
+
+    std::string_view view() const { return view_; }
+    /// Whether the bytes are a mapping of the file (false: a string).
+    bool mapped() const { return mapped_ != nullptr; }
+
+private:
+    FileBytes() = default;
+    std::string text_;
+    void* mapped_ = nullptr;  // the mapping's start, or nullptr
+    std::size_t mapped_size_ = 0;
+    std::string_view view_;
+    void release() noexcept;
+};
+
+}  // namespace dgwarp
