@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
         const double t_summary = median_seconds(repeats, [&] { s = summarize_quality(q); });
         const double t_original = median_seconds(repeats, [&] { original = measure_original(mesh); });
         const double t_frame = median_seconds(repeats, [&] { cells = measure_frame(mesh, moved, original, fixed); });
-        const double t_ratio_summary = median_seconds(repeats, [&] { (void)summarize_ratios(cells.ratio); });
+        const double t_ratio_summary = median_seconds(repeats, [&] { (void)summarize_ratios(cells.quality, original.quality); });
         std::printf("%d thread%s: cell_orientations %.1f ms, dominant %.1f ms, cell_qualities %.1f ms (%.1f ns/cell), "
                     "summarize_quality %.1f ms, summarize_ratios %.1f ms\n",
                     threads, threads > 1 ? "s" : "", 1e3 * t_own, 1e3 * t_dominant, 1e3 * t_quality,

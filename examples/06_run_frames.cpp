@@ -62,7 +62,10 @@ int main(int argc, char** argv) {
             moved.points.assign(f.points.begin(), f.points.end());
             char name[64];
             std::snprintf(name, sizeof name, "frame_%04zu.vtu", f.frame);
-            write_mesh(name, moved, MeshFields{{}, {{"quality", 1, f.cells.quality}, {"quality_ratio", 1, f.cells.ratio}}});
+            write_mesh(name, moved,
+                       MeshFields{{},
+                                  {{"quality", 1, f.cells.quality},
+                                   {"quality_ratio", 1, quality_ratios(f.cells.quality, d.original.quality)}}});
             return true;
         };
         const RunReport run = run_frames(RunContext::of(mesh, spec, d), {}, on);

@@ -55,7 +55,7 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
 
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 /// `beside`: with --foam-processors, the processor folders written with the whole case.
-MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
+MethodRun run_method(Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
                      const std::vector<std::string>& foam_times, const std::vector<OpenFoamProcessor>& beside,
                      ProgressLine& progress, WarningPrinter& warnings) {
     MethodRun run;
@@ -71,7 +71,6 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         std::cerr << "warning: " << w << "\n";
     WriteOptions write_options;
     write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
-    Mesh deformed = output_mesh(in);  // a 2D case's outputs are its 3D mesh
     std::vector<double> lifted;
     RunOptions options;
     options.frame.repair = a.untangle ? Repair::untangle : a.no_untangle ? Repair::none : Repair::method_default;
@@ -118,9 +117,11 @@ MethodRun run_method(const Inputs& in, Method method, const DeformArgs& a, bool 
         } else if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, v.frame, frames);
             const std::span<const double> points = output_points(in, v.points, lifted);
-            std::copy(points.begin(), points.end(), deformed.points.begin());
-            write_mesh(path, deformed, deformation_fields(output_mesh(in), points, v.cells.quality, v.cells.ratio),
-                       write_options);
+            const MeshFields fields =
+                writes_fields(path) ? deformation_fields(output_mesh(in), points, v.cells.quality,
+                                                         quality_ratios(v.cells.quality, in.original.quality))
+                                    : MeshFields{};
+            write_output_mesh(in, path, points, fields, write_options);
             f.output = path.string();
             f.write_seconds = sw.lap();
         }
@@ -224,7 +225,7 @@ void run_deform(const DeformArgs& given) {
     }
     const bool text = !a.json && !a.quiet;
     ProgressLine progress(text);
-    const Inputs in = read_inputs(a.setup, progress, [&](const MotionSpec& spec) {
+    Inputs in = read_inputs(a.setup, progress, [&](const MotionSpec& spec) {
         // Every file this run may write (each method's, each frame's), before any work.
         std::vector<std::filesystem::path> inputs = motion_files(spec);
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});

@@ -263,7 +263,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         // The frame's quality, reduced over the processes.
         const FrameCells cells = measure_frame(in.mesh, deformed, in.original, in.boundary.boundary.nodes);
         f.quality = case_quality(cells.quality, part.cell_ids);
-        f.ratio = case_ratios(cells.ratio, part.cell_ids);
+        f.ratio = case_ratios(quality_ratios(cells.quality, in.original.quality), part.cell_ids);
         std::tie(f.worst_inverted, f.inverted_by_motion) = case_worst(cells.inverted, cells.quality, part.cell_ids, 10);
         std::tie(f.worst_on_boundary, f.inverted_on_boundary) =
             case_worst(cells.inverted_on_boundary, cells.quality, part.cell_ids, 10);

@@ -249,6 +249,24 @@ TEST(QualityRatios, NonPositiveOriginalGivesZeroAndSummaryFindsTheWorst) {
     EXPECT_EQ(s.min, -0.5);
     EXPECT_EQ(s.worst_cell, 4);
     EXPECT_NEAR(s.mean, 0.2, 1e-15);
+    // Summarised without the array: the same bits.
+    const RatioSummary fused = summarize_ratios(deformed, original);
+    EXPECT_EQ(fused.min, s.min);
+    EXPECT_EQ(fused.mean, s.mean);
+    EXPECT_EQ(fused.worst_cell, s.worst_cell);
+}
+
+TEST(QualityRatios, SummarisedWithoutTheArrayGivesTheSameBitsOnAPerturbedGrid) {
+    const Mesh m = perturbed_hex_grid(6, 5, 4, 7);
+    const auto original = cell_qualities(m, cell_orientations(m));
+    std::vector<double> deformed = original;
+    for (std::size_t i = 0; i < deformed.size(); ++i) deformed[i] *= 0.3 + 0.7 * std::sin(1.7 * static_cast<double>(i));
+    const RatioSummary a = summarize_ratios(quality_ratios(deformed, original));
+    const RatioSummary b = summarize_ratios(deformed, original);
+    EXPECT_EQ(a.min, b.min);
+    EXPECT_EQ(a.mean, b.mean);
+    EXPECT_EQ(a.worst_cell, b.worst_cell);
+    EXPECT_LT(a.min, 0);
 }
 
 TEST(MeshQuality, NewlyInvertedCellsAreTheValidOnesThatInverted) {

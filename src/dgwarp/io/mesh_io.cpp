@@ -168,6 +168,10 @@ void check_mesh_writable(const std::filesystem::path& path, const Mesh& mesh, co
     }
 }
 
+bool writes_fields(const std::filesystem::path& path) {
+    return !writes_openfoam(path) && lower_case_extension(path) == ".vtu";
+}
+
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                 const WriteOptions& options) {
     if (writes_openfoam(path)) {

@@ -104,6 +104,10 @@ void check_mesh_writable(const std::filesystem::path& path, const Mesh& mesh, co
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields = {},
                 const WriteOptions& options = {});
 
+/// Whether write_mesh to `path` writes the MeshFields it is given (VTU);
+/// the other formats ignore them, so a caller need not make them.
+bool writes_fields(const std::filesystem::path& path);
+
 /// The extension of `path` in lower case (".su2" for "WING.SU2"): formats
 /// are chosen by it without regard to case.
 std::string lower_case_extension(const std::filesystem::path& path);

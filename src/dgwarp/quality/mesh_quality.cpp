@@ -145,28 +145,44 @@ std::vector<std::int64_t> newly_inverted_cells(std::span<const double> deformed,
     return cells;
 }
 
+namespace {
+double quality_ratio(double deformed, double original) { return original > 0 ? deformed / original : 0.0; }
+
+/// summarize_ratios over ratio(i) for i in [0, n).
+template <class Ratio>
+RatioSummary summarize_ratio_values(std::size_t n, const Ratio& ratio) {
+    RatioSummary s;
+    if (n == 0) return s;
+    OrderedSum sum;
+    s.min = ratio(0);
+    s.worst_cell = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double r = ratio(i);
+        sum.add(r);
+        if (r < s.min) {
+            s.min = r;
+            s.worst_cell = static_cast<std::int64_t>(i);
+        }
+    }
+    s.mean = sum.value() / static_cast<double>(n);
+    return s;
+}
+}  // namespace
+
 std::vector<double> quality_ratios(std::span<const double> deformed, std::span<const double> original) {
     assert(deformed.size() == original.size());
     std::vector<double> ratio(deformed.size());
-    for (std::size_t i = 0; i < ratio.size(); ++i) ratio[i] = original[i] > 0 ? deformed[i] / original[i] : 0.0;
+    for (std::size_t i = 0; i < ratio.size(); ++i) ratio[i] = quality_ratio(deformed[i], original[i]);
     return ratio;
 }
 
 RatioSummary summarize_ratios(std::span<const double> ratios) {
-    RatioSummary s;
-    if (ratios.empty()) return s;
-    OrderedSum sum;
-    s.min = ratios[0];
-    s.worst_cell = 0;
-    for (std::size_t i = 0; i < ratios.size(); ++i) {
-        sum.add(ratios[i]);
-        if (ratios[i] < s.min) {
-            s.min = ratios[i];
-            s.worst_cell = static_cast<std::int64_t>(i);
-        }
-    }
-    s.mean = sum.value() / static_cast<double>(ratios.size());
-    return s;
+    return summarize_ratio_values(ratios.size(), [&](std::size_t i) { return ratios[i]; });
+}
+
+RatioSummary summarize_ratios(std::span<const double> deformed, std::span<const double> original) {
+    assert(deformed.size() == original.size());
+    return summarize_ratio_values(deformed.size(), [&](std::size_t i) { return quality_ratio(deformed[i], original[i]); });
 }
 
 }  // namespace dgwarp

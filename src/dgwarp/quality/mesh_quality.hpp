@@ -84,5 +84,8 @@ std::vector<double> quality_ratios(std::span<const double> deformed, std::span<c
 /// Min and mean (compensated sum in cell order) of quality_ratios, and the
 /// first cell with the smallest ratio; worst_cell -1 for empty input.
 RatioSummary summarize_ratios(std::span<const double> ratios);
+/// summarize_ratios(quality_ratios(deformed, original)), the same bits,
+/// without the array of ratios.
+RatioSummary summarize_ratios(std::span<const double> deformed, std::span<const double> original);
 
 }  // namespace dgwarp

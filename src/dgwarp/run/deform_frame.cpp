@@ -47,7 +47,6 @@ FrameCells measure_frame(const Mesh& mesh, std::span<const double> points, const
     FrameCells c;
     c.quality = original.layout ? cell_qualities(*original.layout, mesh, points, original.orientation)
                                 : cell_qualities(mesh, points, original.orientation);
-    c.ratio = quality_ratios(c.quality, original.quality);
     c.inverted = newly_inverted_cells(c.quality, original.quality);
     c.inverted_on_boundary = cells_with_only_fixed_nodes(mesh.cells, fixed, c.inverted);
     return c;
@@ -147,7 +146,7 @@ FrameCells finish_frame(Method method, const Mesh& mesh, const OriginalCells& or
         report.repair_seconds += sw.lap();
     }
     report.quality = summarize_quality(cells.quality);
-    report.ratio = summarize_ratios(cells.ratio);
+    report.ratio = summarize_ratios(cells.quality, original.quality);
     report.inverted_by_motion = static_cast<std::int64_t>(cells.inverted.size());
     report.worst_inverted = worst_cells(cells.inverted, cells.quality, options.worst_count);
     report.inverted_on_boundary = static_cast<std::int64_t>(cells.inverted_on_boundary.size());

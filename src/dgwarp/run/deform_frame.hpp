@@ -35,8 +35,10 @@ struct FrameOptions {
 
 /// Per cell of a frame: its quality and ratio to the original's, and the cells the run inverted.
 struct FrameCells {
-    std::vector<double> quality;  // judged by the original's orientation (OriginalCells::orientation)
-    std::vector<double> ratio;    // quality / the original's (quality_ratios)
+    /// Judged by the original's orientation (OriginalCells::orientation). The
+    /// ratios to the original's, where wanted, are quality_ratios(quality,
+    /// original.quality): not kept, a mesh of 5M cells would hold 40 MB more.
+    std::vector<double> quality;
     /// Cells valid in the original and inverted now (newly_inverted_cells):
     /// what makes a frame invalid; cells already inverted in the input are not the motion's doing.
     std::vector<std::int64_t> inverted;
