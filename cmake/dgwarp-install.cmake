@@ -35,6 +35,10 @@ foreach(link ${dgwarp_system_libraries})
   set_target_properties(dgwarp_${link} PROPERTIES EXPORT_NAME link_${link})
   list(APPEND dgwarp_install_targets dgwarp_${link})
 endforeach()
+# The Gmsh module the case generators load (cases/gmsh_cases_module.hpp).
+if(TARGET dgwarp_gmsh_cases)
+  install(TARGETS dgwarp_gmsh_cases LIBRARY DESTINATION ${DGWARP_GMSH_CASES_INSTALL_DIR})
+endif()
 install(TARGETS ${dgwarp_install_targets} EXPORT dgwarpTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 set(DGWARP_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/dgwarp)

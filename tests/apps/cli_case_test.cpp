@@ -162,3 +162,19 @@ TEST(DeformGuardCli, AStepBelowTheBarIsSolvedAgainByLaplacianAndTheReportSaysSo)
                   .exit_code,
               1);
 }
+
+TEST(CaseGmshModule, TheCommandLoadsGmshOnlyWhenItMeshesACase) {
+    // Gmsh and OpenCASCADE cost 0.2 s and 49 MB at every start of a program
+    // linking them: the command loads them (cases/gmsh_cases_module.hpp) only to mesh.
+    const CommandResult version = run_command("LD_DEBUG=files " + quoted(cli_path()) + " --version");
+    ASSERT_EQ(version.exit_code, 0) << version.err;
+    EXPECT_NE(version.err.find("libc.so"), std::string::npos) << "LD_DEBUG printed nothing?";
+    EXPECT_EQ(version.err.find("libgmsh"), std::string::npos) << "dgwarp --version loaded Gmsh";
+    const auto dir = scratch_dir();
+    const CommandResult meshed =
+        run_command("LD_DEBUG=files " + quoted(cli_path()) + " case naca0012 -o " + quoted(dir / "n.su2"));
+    ASSERT_EQ(meshed.exit_code, 0) << meshed.err;
+    EXPECT_NE(meshed.err.find("libdgwarp_gmsh_cases.so"), std::string::npos);
+    EXPECT_NE(meshed.err.find("libgmsh"), std::string::npos);
+    EXPECT_EQ(read_mesh(dir / "n.su2").num_points(), make_case("naca0012").num_points());
+}

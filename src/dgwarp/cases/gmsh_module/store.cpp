@@ -26,8 +26,6 @@ int classify(int tag, double plate_z) {
 
 }  // namespace
 
-std::array<double, 3> store_centre() { return {0, 0, 0}; }
-
 Mesh make_store(const StoreOptions& o) {
     if (!(o.store_radius > 0 && o.store_length > 2 * o.store_radius && o.h_store > 0 && o.h_plate > 0 &&
           o.growth > 0 && o.h_max > 0) ||

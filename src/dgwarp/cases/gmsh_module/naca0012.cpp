@@ -12,10 +12,6 @@
 
 namespace dgwarp {
 
-double naca0012_half_thickness(double x) {
-    return 5 * 0.12 * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x - 0.1036 * x * x * x * x);
-}
-
 Mesh make_naca0012(const Naca0012Options& o) {
     if (o.points_per_side < 4 || !(o.farfield_radius > 1.5) || o.farfield_points < 8 || !(o.growth > 0) ||
         o.sliver_half_width < 0 || !(o.sliver_length > 0) || o.sliver_half_width >= o.sliver_length)

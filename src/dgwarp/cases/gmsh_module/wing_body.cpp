@@ -8,20 +8,14 @@
 #include <vector>
 
 #include "dgwarp/cases/gmsh_session.hpp"
+#include "dgwarp/cases/wing_body_geometry.hpp"
 #include "dgwarp/core/error.hpp"
 
 namespace dgwarp {
 
 namespace {
 
-// The geometry of wing_body.hpp.
-constexpr double fuselage_length = 10, fuselage_radius = 0.6;
-constexpr double root_chord = 2.2, tip_chord = 0.9, semi_span = 6, root_leading_edge = -1.1, sweep = 1.5;
-constexpr double thickness = 0.12;  // thickness / chord of the elliptic sections
-constexpr double hinge_y = 0.9, gap = 0.06;
-constexpr double box_x0 = -25, box_x1 = 30, box_y1 = 25, box_z = 25;
-
-double chord_at(double y) { return root_chord + (tip_chord - root_chord) * y / semi_span; }
+using namespace wing_body_geometry;
 
 /// The wing's section at span station y: an ellipse in the plane y, chord along
 /// x, thickness along z, as an OCC wire.
@@ -48,16 +42,6 @@ int classify(int tag) {
 }
 
 }  // namespace
-
-WingBodyOptions wing_body_size(int size) {
-    switch (size) {
-        case 0: return {0.15, 0.2, 0.2, 3, 1};
-        case 1: return {};
-        default: throw MeshError("wing-body: size must be 0 or 1, not " + std::to_string(size));
-    }
-}
-
-WingHinge wing_body_hinge() { return {{0, hinge_y, thickness * chord_at(hinge_y) / 2}, {1, 0, 0}}; }
 
 Mesh make_wing_body(const WingBodyOptions& c) {
     if (!(c.h_wing > 0 && c.h_body > 0 && c.growth > 0 && c.h_max > 0) || c.threads < 1)

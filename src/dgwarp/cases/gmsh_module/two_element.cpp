@@ -37,13 +37,6 @@ std::vector<int> add_airfoil(int n, double chord, double x0, double y0) {
 
 }  // namespace
 
-std::array<double, 2> two_element_hinge(const TwoElementOptions& o) {
-    // Just below the leading edge: every point of the flap above the hinge
-    // moves aft as the trailing edge goes down, so the flap turns away from
-    // the main element and the slot opens.
-    return {o.flap_leading_edge[0], o.flap_leading_edge[1] - 0.03 * o.flap_chord};
-}
-
 Mesh make_two_element(const TwoElementOptions& o) {
     if (o.main_points_per_side < 8 || o.flap_points_per_side < 8 || !(o.flap_chord > 0 && o.flap_chord < 1) ||
         !(o.farfield_radius > 2) || o.farfield_points < 8 || !(o.growth > 0))

@@ -12,15 +12,6 @@
 
 namespace dgwarp {
 
-SphereBoxOptions sphere_box_paper_size(int size) {
-    switch (size) {
-        case 0: return {0.0444, 0.55, 0.0413, 0.55, 1};
-        case 1: return {0.0444, 0.55, 0.025, 0.55, 1};
-        case 2: return {0.025, 0.3, 0.028, 0.204, 1};
-        default: throw MeshError("squeezed-sphere: size must be 0, 1 or 2, not " + std::to_string(size));
-    }
-}
-
 Mesh make_sphere_box(const SphereBoxOptions& c) {
     if (!(c.h_sphere > 0 && c.h_max > 0 && c.growth > 0 && c.h_box > 0) || c.threads < 1)
         throw MeshError("sphere-box: mesh sizes, growth and threads must be positive");
