@@ -5,12 +5,15 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdint>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <streambuf>
 #include <string>
+#include <vector>
 
 #include "dgwarp/core/error.hpp"
 
@@ -57,6 +60,72 @@ void create_new_file(const std::filesystem::path& file, const std::filesystem::p
     }
     ::close(fd);
 }
+
+/// The output stream's buffer: writes go to the file descriptor (large ones
+/// straight from the caller's memory), and every `kick` bytes the disk is
+/// asked to start writing them (sync_file_range, SYNC_FILE_RANGE_WRITE: no
+/// wait), so that the fsync at the end waits for the last few megabytes
+/// rather than the whole file (0.2-0.3 s for 261 MB measured in a virtual
+/// machine, now spent while the next rows are formatted).
+class FileOut : public std::streambuf {
+public:
+    explicit FileOut(int fd) : fd_(fd), buffer_(std::size_t{1} << 16) {
+        setp(buffer_.data(), buffer_.data() + buffer_.size());
+    }
+    /// errno of the first failed write, 0 when none failed.
+    int error() const { return error_; }
+
+protected:
+    int_type overflow(int_type c) override {
+        if (!drain()) return traits_type::eof();
+        if (!traits_type::eq_int_type(c, traits_type::eof())) {
+            *pptr() = traits_type::to_char_type(c);
+            pbump(1);
+        }
+        return traits_type::not_eof(c);
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        if (n < static_cast<std::streamsize>(buffer_.size()) / 2) return std::streambuf::xsputn(s, n);
+        if (!drain() || !write_all(s, static_cast<std::size_t>(n))) return 0;
+        return n;
+    }
+    int sync() override { return drain() ? 0 : -1; }
+
+private:
+    static constexpr std::uint64_t kick = std::uint64_t{32} << 20;
+    int fd_;
+    std::vector<char> buffer_;
+    std::uint64_t written_ = 0, kicked_ = 0;
+    int error_ = 0;
+
+    bool drain() {
+        const auto n = static_cast<std::size_t>(pptr() - pbase());
+        setp(buffer_.data(), buffer_.data() + buffer_.size());
+        return n == 0 || write_all(buffer_.data(), n);
+    }
+    bool write_all(const char* p, std::size_t n) {
+        if (error_) return false;
+        while (n > 0) {
+            const ssize_t k = ::write(fd_, p, n);
+            if (k < 0) {
+                if (errno == EINTR) continue;
+                error_ = errno;
+                return false;
+            }
+            p += k;
+            n -= static_cast<std::size_t>(k);
+            written_ += static_cast<std::uint64_t>(k);
+        }
+        if (written_ - kicked_ >= kick) {
+#ifdef SYNC_FILE_RANGE_WRITE
+            ::sync_file_range(fd_, static_cast<off_t>(kicked_), static_cast<off_t>(written_ - kicked_),
+                              SYNC_FILE_RANGE_WRITE);
+#endif
+            kicked_ = written_;
+        }
+        return true;
+    }
+};
 
 void sync_file(const std::filesystem::path& path) {
     int fd = ::open(path.c_str(), O_RDONLY);
@@ -149,11 +218,25 @@ void check_folder_writable(const std::filesystem::path& folder) {
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
     write_file_atomically_at(path, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw IoError(path.string(), std::string("cannot open the temporary file ") + tmp.string() +
-                                                   ": " + std::strerror(errno));
+        // Opened without O_TRUNC (the file is new and empty): ext4 flushes a
+        // truncated-and-rewritten file at its close (auto_da_alloc), which
+        // the fsync after it would only wait for again.
+        const int fd = ::open(tmp.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd < 0) {
+            const int err = errno;
+            throw IoError(path.string(),
+                          std::string("cannot open the temporary file ") + tmp.string() + ": " + std::strerror(err), err);
+        }
+        struct Closer {
+            int fd;
+            ~Closer() { ::close(fd); }
+        } closer{fd};
+        FileOut buffer(fd);
+        std::ostream out(&buffer);
         write(out);
         out.flush();
+        if (buffer.error() != 0)
+            throw IoError(path.string(), std::string("write failed: ") + std::strerror(buffer.error()), buffer.error());
         if (!out) throw IoError(path.string(), "write failed (disk full?)");
     });
 }

@@ -31,7 +31,7 @@ using msh::gmsh_type_id;
 void write_int(std::ostream& out, std::int64_t v) { write_number(out, static_cast<long long>(v)); }
 
 // Appends `x y z` of node i (z = 0 for a 2D mesh).
-void append_point(std::string& s, const Mesh& mesh, std::size_t i) {
+void append_point(RowText& s, const Mesh& mesh, std::size_t i) {
     const double* p = mesh.points.data() + i * static_cast<std::size_t>(mesh.dim);
     append_number(s, p[0]);
     s += ' ';
@@ -41,7 +41,7 @@ void append_point(std::string& s, const Mesh& mesh, std::size_t i) {
 }
 
 // Appends the node tags of element i of `list` in Gmsh order, each preceded by a space.
-void append_element_nodes(std::string& s, const ElementList& list, std::size_t i) {
+void append_element_nodes(RowText& s, const ElementList& list, std::size_t i) {
     const CellType t = list.types[i];
     const auto vtk = list.nodes_of(i);
     std::array<NodeId, 8> gmsh{};
@@ -129,11 +129,11 @@ void write_41(std::ostream& out, const Mesh& mesh) {
         out << '\n' << mesh.dim << " 1 0 ";
         write_int(out, num_points);
         out << '\n';
-        write_rows(out, num_points, [&](std::int64_t i, std::string& text) {
+        write_rows(out, num_points, [&](std::int64_t i, RowText& text) {
             append_number(text, static_cast<long long>(i) + 1);
             text += '\n';
         });
-        write_rows(out, num_points, [&](std::int64_t i, std::string& text) {
+        write_rows(out, num_points, [&](std::int64_t i, RowText& text) {
             append_point(text, mesh, static_cast<std::size_t>(i));
             text += '\n';
         });
@@ -168,7 +168,7 @@ void write_41(std::ostream& out, const Mesh& mesh) {
         out << ' ' << gmsh_type_id(b.list->types[b.begin]) << ' ';
         write_int(out, static_cast<std::int64_t>(b.end - b.begin));
         out << '\n';
-        write_rows(out, static_cast<std::int64_t>(b.end - b.begin), [&](std::int64_t k, std::string& text) {
+        write_rows(out, static_cast<std::int64_t>(b.end - b.begin), [&](std::int64_t k, RowText& text) {
             append_number(text, static_cast<long long>(tag + k) + 1);
             append_element_nodes(text, *b.list, b.begin + static_cast<std::size_t>(k));
             text += '\n';
@@ -182,7 +182,7 @@ void write_22(std::ostream& out, const Mesh& mesh) {
     out << "$Nodes\n";
     write_int(out, static_cast<std::int64_t>(mesh.num_points()));
     out << '\n';
-    write_rows(out, static_cast<std::int64_t>(mesh.num_points()), [&](std::int64_t i, std::string& text) {
+    write_rows(out, static_cast<std::int64_t>(mesh.num_points()), [&](std::int64_t i, RowText& text) {
         append_number(text, static_cast<long long>(i) + 1);
         text += ' ';
         append_point(text, mesh, static_cast<std::size_t>(i));
@@ -199,7 +199,7 @@ void write_22(std::ostream& out, const Mesh& mesh) {
     std::int64_t tag = 0;
     // Each element line: tag type 2 physical elementary nodes...
     auto write_list = [&](const ElementList& list, std::int64_t physical, std::int64_t elementary) {
-        write_rows(out, static_cast<std::int64_t>(list.size()), [&](std::int64_t k, std::string& text) {
+        write_rows(out, static_cast<std::int64_t>(list.size()), [&](std::int64_t k, RowText& text) {
             const auto i = static_cast<std::size_t>(k);
             append_number(text, static_cast<long long>(tag + k) + 1);
             text += ' ';

@@ -117,7 +117,7 @@ std::string openfoam_points_text(std::span<const double> points, Format format, 
         out << ")";
     } else {
         out << "\n(\n";
-        write_rows(out, static_cast<std::int64_t>(n), [&](std::int64_t i, std::string& text) {
+        write_rows(out, static_cast<std::int64_t>(n), [&](std::int64_t i, RowText& text) {
             text.push_back('(');
             for (std::size_t d = 0; d < 3; ++d) {
                 if (d) text.push_back(' ');

@@ -34,7 +34,7 @@ void check_marker_names(const Mesh& mesh) {
 /// One element per line: SU2 type id, node ids, then (SU2 writes it for
 /// volume cells, not for boundary elements) the element index.
 void write_elements(std::ostream& out, const ElementList& elements, bool with_index) {
-    write_rows(out, static_cast<std::int64_t>(elements.size()), [&](std::int64_t i, std::string& text) {
+    write_rows(out, static_cast<std::int64_t>(elements.size()), [&](std::int64_t i, RowText& text) {
         const auto k = static_cast<std::size_t>(i);
         append_number(text, static_cast<long long>(vtk_cell_id(elements.types[k])));
         for (NodeId n : elements.nodes_of(k)) {
@@ -65,7 +65,7 @@ void write_su2(std::ostream& out, const Mesh& mesh) {
     const std::size_t n = mesh.num_points();
     const auto dim = static_cast<std::size_t>(mesh.dim);
     out << "NPOIN= " << n << '\n';
-    write_rows(out, static_cast<std::int64_t>(n), [&](std::int64_t i, std::string& text) {
+    write_rows(out, static_cast<std::int64_t>(n), [&](std::int64_t i, RowText& text) {
         for (std::size_t d = 0; d < dim; ++d) {
             append_number(text, mesh.points[static_cast<std::size_t>(i) * dim + d]);
             text.push_back('\t');
