@@ -182,3 +182,37 @@ TEST(RecordLines, GmshBlocksReadOnThreadsRoundTripAndNameABadLine) {
     }
     set_num_threads(before);
 }
+
+TEST(RecordLines, JoinedPartsAreTheListPushedInOrderPolyhedraWithTheirFaces) {
+    // A pyramid as a polyhedron (a square and four triangles), between other cells.
+    const std::vector<NodeId> rings = {0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+    const std::vector<int> sizes = {4, 3, 3, 3, 3};
+    const std::vector<NodeId> tet = {0, 1, 2, 4}, hex = {0, 1, 2, 3, 4, 5, 6, 7};
+    ElementList expected;
+    std::vector<ElementList> parts(5);
+    const auto push = [&](std::size_t part, int what) {
+        for (ElementList* l : {&expected, &parts[part]}) {
+            if (what == 0) l->push_back(CellType::tetrahedron, tet);
+            if (what == 1) l->push_polyhedron(rings, sizes);
+            if (what == 2) l->push_back(CellType::hexahedron, hex);
+        }
+    };
+    push(0, 0);
+    push(0, 2);
+    push(1, 1);  // the first polyhedron: the lists before it get their (empty) faces
+    push(1, 0);
+    push(3, 2);  // part 2 stays empty
+    push(4, 1);
+    push(4, 1);
+    ElementList joined;
+    append_element_parts(joined, parts);
+    EXPECT_EQ(joined, expected);
+    // Without polyhedra the face arrays stay empty.
+    ElementList plain;
+    std::vector<ElementList> plain_parts(2);
+    plain_parts[0].push_back(CellType::tetrahedron, tet);
+    plain_parts[1].push_back(CellType::hexahedron, hex);
+    append_element_parts(plain, plain_parts);
+    EXPECT_FALSE(plain.has_faces());
+    EXPECT_EQ(plain.size(), 2u);
+}

@@ -1,10 +1,13 @@
 // Cells from OpenFOAM's faces (openfoam_poly_mesh.hpp).
 #include <algorithm>
+#include <exception>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/io/record_lines.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
 
 namespace dgwarp::foam {
@@ -269,70 +272,96 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
         return s + (ids.size() > 8 ? ", ..." : "");
     };
 
+    // The cells in chunks on the threads, each into a list of its own; the
+    // lists are then joined in order. A chunk stops at its first bad cell:
+    // the error of the first chunk that has one is the first in cell order,
+    // the one the serial loop gave.
+    constexpr std::int64_t chunk = 1 << 14;
+    const std::int64_t chunks = (num_cells + chunk - 1) / chunk;
+    std::vector<ElementList> parts(static_cast<std::size_t>(chunks));
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(chunks));
+    parallel_for(
+        chunks,
+        [&](std::int64_t p) {
+            try {
+                const std::int64_t first = p * chunk, last = std::min(num_cells, first + chunk);
+                ElementList& cells = parts[static_cast<std::size_t>(p)];
+                cells.reserve(static_cast<std::size_t>(last - first), 8);
+                std::vector<NodeId> rings;
+                std::vector<int> sizes;
+                std::vector<std::pair<NodeId, NodeId>> edges, reversed;
+                for (std::int64_t c = first; c < last; ++c) {
+                    const std::int64_t count = start[c + 1] - start[c];
+                    if (count == 0)
+                        throw ParseError(where.owner_file, 0,
+                                         "every cell from 0 to " + std::to_string(num_cells - 1) +
+                                             " (the largest in owner and neighbour) to own or neighbour faces",
+                                         "cell " + std::to_string(c) + " has none");
+                    // The cell's faces pointing out of it: a face points out of its owner, the neighbour sees it reversed.
+                    rings.clear();
+                    sizes.clear();
+                    for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
+                        const std::int64_t f = face_of(faces[k]);
+                        const auto size = static_cast<int>(mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
+                        for (int i = 0; i < size; ++i) {
+                            const int j = faces[k] >= 0 ? i : (size - i) % size;
+                            rings.push_back(mesh.face_nodes[mesh.face_offsets[f] + j]);
+                        }
+                        sizes.push_back(size);
+                    }
+                    bool simple = count <= 6 && std::all_of(sizes.begin(), sizes.end(), [](int n) { return n <= 4; });
+                    CellFaces cf;
+                    if (simple) {
+                        std::size_t at = 0;
+                        for (int size : sizes) {
+                            cf.size[cf.count] = size;
+                            for (int i = 0; i < size; ++i) cf.node[cf.count][i] = rings[at++];
+                            ++cf.count;
+                        }
+                    }
+                    const OrderedCell oc = simple ? order_cell(cf) : OrderedCell{};
+                    if (oc.shape == CellShape::not_closed)
+                        throw ParseError(where.faces_file, line_of(c),
+                                         "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
+                                             ", oriented by owner and neighbour) to close a " +
+                                             std::string(cell_type_name(oc.type)),
+                                         "faces that do not");
+                    if (oc.shape == CellShape::ok) {
+                        cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
+                        continue;
+                    }
+                    // A polyhedron: closed when each edge of its faces is met once each way.
+                    edges.clear();
+                    reversed.clear();
+                    std::size_t at = 0;
+                    for (int size : sizes) {
+                        for (int i = 0; i < size; ++i) {
+                            const NodeId a = rings[at + static_cast<std::size_t>(i)],
+                                         b = rings[at + static_cast<std::size_t>((i + 1) % size)];
+                            edges.emplace_back(a, b);
+                            reversed.emplace_back(b, a);
+                        }
+                        at += static_cast<std::size_t>(size);
+                    }
+                    std::sort(edges.begin(), edges.end());
+                    std::sort(reversed.begin(), reversed.end());
+                    if (count < 4 || edges != reversed || std::adjacent_find(edges.begin(), edges.end()) != edges.end())
+                        throw ParseError(where.faces_file, line_of(c),
+                                         "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
+                                             ", oriented by owner and neighbour) to close a polyhedron (each edge "
+                                             "once each way)",
+                                         "faces that do not");
+                    push_canonical_polyhedron(rings, sizes, cells);
+                }
+            } catch (...) {
+                errors[static_cast<std::size_t>(p)] = std::current_exception();
+            }
+        },
+        1);
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
     ElementList cells;
-    cells.reserve(static_cast<std::size_t>(num_cells), 8);
-    std::vector<NodeId> rings;
-    std::vector<int> sizes;
-    std::vector<std::pair<NodeId, NodeId>> edges, reversed;
-    for (std::int64_t c = 0; c < num_cells; ++c) {
-        const std::int64_t count = start[c + 1] - start[c];
-        if (count == 0)
-            throw ParseError(where.owner_file, 0, "every cell from 0 to " + std::to_string(num_cells - 1) +
-                                                      " (the largest in owner and neighbour) to own or neighbour faces",
-                             "cell " + std::to_string(c) + " has none");
-        // The cell's faces pointing out of it: a face points out of its owner, the neighbour sees it reversed.
-        rings.clear();
-        sizes.clear();
-        for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
-            const std::int64_t f = face_of(faces[k]);
-            const auto size = static_cast<int>(mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
-            for (int i = 0; i < size; ++i) {
-                const int j = faces[k] >= 0 ? i : (size - i) % size;
-                rings.push_back(mesh.face_nodes[mesh.face_offsets[f] + j]);
-            }
-            sizes.push_back(size);
-        }
-        bool simple = count <= 6 && std::all_of(sizes.begin(), sizes.end(), [](int n) { return n <= 4; });
-        CellFaces cf;
-        if (simple) {
-            std::size_t at = 0;
-            for (int size : sizes) {
-                cf.size[cf.count] = size;
-                for (int i = 0; i < size; ++i) cf.node[cf.count][i] = rings[at++];
-                ++cf.count;
-            }
-        }
-        const OrderedCell oc = simple ? order_cell(cf) : OrderedCell{};
-        if (oc.shape == CellShape::not_closed)
-            throw ParseError(where.faces_file, line_of(c),
-                             "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
-                                 ", oriented by owner and neighbour) to close a " + std::string(cell_type_name(oc.type)),
-                             "faces that do not");
-        if (oc.shape == CellShape::ok) {
-            cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
-            continue;
-        }
-        // A polyhedron: closed when each edge of its faces is met once each way.
-        edges.clear();
-        reversed.clear();
-        std::size_t at = 0;
-        for (int size : sizes) {
-            for (int i = 0; i < size; ++i) {
-                const NodeId a = rings[at + static_cast<std::size_t>(i)], b = rings[at + static_cast<std::size_t>((i + 1) % size)];
-                edges.emplace_back(a, b);
-                reversed.emplace_back(b, a);
-            }
-            at += static_cast<std::size_t>(size);
-        }
-        std::sort(edges.begin(), edges.end());
-        std::sort(reversed.begin(), reversed.end());
-        if (count < 4 || edges != reversed || std::adjacent_find(edges.begin(), edges.end()) != edges.end())
-            throw ParseError(where.faces_file, line_of(c),
-                             "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
-                                 ", oriented by owner and neighbour) to close a polyhedron (each edge once each way)",
-                             "faces that do not");
-        push_canonical_polyhedron(rings, sizes, cells);
-    }
+    append_element_parts(cells, parts);
     return cells;
 }
 

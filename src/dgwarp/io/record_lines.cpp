@@ -62,6 +62,21 @@ void append_element_parts(ElementList& out, const std::vector<ElementList>& part
             for (std::size_t i = 1; i < p.offsets.size(); ++i) out.offsets[cell_at[c] + i] = base + p.offsets[i];
         },
         1);
+    // Polyhedra's faces (rare: one pass on this thread), where any list has them.
+    const bool faces = out.has_faces() || std::any_of(parts.begin(), parts.end(), [](const ElementList& p) { return p.has_faces(); });
+    if (!faces) return;
+    if (out.face_first.empty()) out.face_first.assign(cell_at[0] + 1, 0);
+    for (const ElementList& p : parts) {
+        const auto face_base = static_cast<std::int64_t>(out.face_offsets.size()) - 1;
+        const auto node_base = static_cast<std::int64_t>(out.face_nodes.size());
+        if (!p.has_faces()) {
+            out.face_first.insert(out.face_first.end(), p.size(), face_base);
+            continue;
+        }
+        for (std::size_t i = 1; i < p.face_first.size(); ++i) out.face_first.push_back(face_base + p.face_first[i]);
+        for (std::size_t f = 1; f < p.face_offsets.size(); ++f) out.face_offsets.push_back(node_base + p.face_offsets[f]);
+        out.face_nodes.insert(out.face_nodes.end(), p.face_nodes.begin(), p.face_nodes.end());
+    }
 }
 
 }  // namespace dgwarp

@@ -45,7 +45,7 @@ std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t 
                                               std::int64_t per_chunk = 1 << 12);
 
 /// Appends the elements of `parts` (one list per chunk, in order) to `out`,
-/// the copies on the threads.
+/// the copies on the threads; polyhedra with their faces.
 void append_element_parts(ElementList& out, const std::vector<ElementList>& parts);
 
 /// Calls parse(c) for every chunk index c of `block`, on several threads, in
