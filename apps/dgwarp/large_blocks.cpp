@@ -8,8 +8,9 @@
 // 3.2 us a fault), for every such array, at every run. On 2 MiB pages the same
 // array takes 128 faults.
 //
-// So the command (only the executable: this file is not in the library, which
-// leaves allocation to its host) replaces the global operator new/delete:
+// So the command (the executable, and the benchmarks that time what it does:
+// this file is not in the library, which leaves allocation to its host)
+// replaces the global operator new/delete:
 // blocks of `large` bytes or more are mapped 2 MiB-aligned and advised to the
 // kernel as huge-page memory (madvise MADV_HUGEPAGE: honoured where the
 // kernel's transparent_hugepage setting is "madvise" or "always", ignored where
