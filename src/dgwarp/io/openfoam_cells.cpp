@@ -272,97 +272,108 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
         return s + (ids.size() > 8 ? ", ..." : "");
     };
 
-    // The cells in chunks on the threads, each into a list of its own; the
-    // lists are then joined in order. A chunk stops at its first bad cell:
-    // the error of the first chunk that has one is the first in cell order,
-    // the one the serial loop gave.
+    // The cells in chunks on the threads, each into a list of its own, a wave
+    // of chunks at a time; each wave's lists are then joined to the cells in
+    // order (so that only a wave's lists exist beside the cells). A chunk
+    // stops at its first bad cell: the error of the first chunk that has one
+    // is the first in cell order, the one a serial loop gives.
     constexpr std::int64_t chunk = 1 << 14;
     const std::int64_t chunks = (num_cells + chunk - 1) / chunk;
-    std::vector<ElementList> parts(static_cast<std::size_t>(chunks));
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(chunks));
-    parallel_for(
-        chunks,
-        [&](std::int64_t p) {
-            try {
-                const std::int64_t first = p * chunk, last = std::min(num_cells, first + chunk);
-                ElementList& cells = parts[static_cast<std::size_t>(p)];
-                cells.reserve(static_cast<std::size_t>(last - first), 8);
-                std::vector<NodeId> rings;
-                std::vector<int> sizes;
-                std::vector<std::pair<NodeId, NodeId>> edges, reversed;
-                for (std::int64_t c = first; c < last; ++c) {
-                    const std::int64_t count = start[c + 1] - start[c];
-                    if (count == 0)
-                        throw ParseError(where.owner_file, 0,
-                                         "every cell from 0 to " + std::to_string(num_cells - 1) +
-                                             " (the largest in owner and neighbour) to own or neighbour faces",
-                                         "cell " + std::to_string(c) + " has none");
-                    // The cell's faces pointing out of it: a face points out of its owner, the neighbour sees it reversed.
-                    rings.clear();
-                    sizes.clear();
-                    for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
-                        const std::int64_t f = face_of(faces[k]);
-                        const auto size = static_cast<int>(mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
-                        for (int i = 0; i < size; ++i) {
-                            const int j = faces[k] >= 0 ? i : (size - i) % size;
-                            rings.push_back(mesh.face_nodes[mesh.face_offsets[f] + j]);
+    const std::int64_t wave = 4 * std::max(1, num_threads());
+    ElementList all;
+    all.types.reserve(static_cast<std::size_t>(num_cells));
+    all.offsets.reserve(static_cast<std::size_t>(num_cells) + 1);
+    all.nodes.reserve(static_cast<std::size_t>(num_cells) * 4);
+    std::vector<ElementList> parts;
+    std::vector<std::exception_ptr> errors;
+    for (std::int64_t first_chunk = 0; first_chunk < chunks; first_chunk += wave) {
+        const std::int64_t in_wave = std::min(wave, chunks - first_chunk);
+        parts.assign(static_cast<std::size_t>(in_wave), ElementList{});
+        errors.assign(static_cast<std::size_t>(in_wave), nullptr);
+        parallel_for(
+            in_wave,
+            [&](std::int64_t w) {
+                try {
+                    const std::int64_t p = first_chunk + w;
+                    const std::int64_t first = p * chunk, last = std::min(num_cells, first + chunk);
+                    ElementList& cells = parts[static_cast<std::size_t>(w)];
+                    cells.reserve(static_cast<std::size_t>(last - first), 8);
+                    std::vector<NodeId> rings;
+                    std::vector<int> sizes;
+                    std::vector<std::pair<NodeId, NodeId>> edges, reversed;
+                    for (std::int64_t c = first; c < last; ++c) {
+                        const std::int64_t count = start[c + 1] - start[c];
+                        if (count == 0)
+                            throw ParseError(where.owner_file, 0,
+                                             "every cell from 0 to " + std::to_string(num_cells - 1) +
+                                                 " (the largest in owner and neighbour) to own or neighbour faces",
+                                             "cell " + std::to_string(c) + " has none");
+                        // The cell's faces pointing out of it: a face points out of its owner, the neighbour sees it reversed.
+                        rings.clear();
+                        sizes.clear();
+                        for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
+                            const std::int64_t f = face_of(faces[k]);
+                            const auto size = static_cast<int>(mesh.face_offsets[f + 1] - mesh.face_offsets[f]);
+                            for (int i = 0; i < size; ++i) {
+                                const int j = faces[k] >= 0 ? i : (size - i) % size;
+                                rings.push_back(mesh.face_nodes[mesh.face_offsets[f] + j]);
+                            }
+                            sizes.push_back(size);
                         }
-                        sizes.push_back(size);
-                    }
-                    bool simple = count <= 6 && std::all_of(sizes.begin(), sizes.end(), [](int n) { return n <= 4; });
-                    CellFaces cf;
-                    if (simple) {
+                        bool simple = count <= 6 && std::all_of(sizes.begin(), sizes.end(), [](int n) { return n <= 4; });
+                        CellFaces cf;
+                        if (simple) {
+                            std::size_t at = 0;
+                            for (int size : sizes) {
+                                cf.size[cf.count] = size;
+                                for (int i = 0; i < size; ++i) cf.node[cf.count][i] = rings[at++];
+                                ++cf.count;
+                            }
+                        }
+                        const OrderedCell oc = simple ? order_cell(cf) : OrderedCell{};
+                        if (oc.shape == CellShape::not_closed)
+                            throw ParseError(where.faces_file, line_of(c),
+                                             "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
+                                                 ", oriented by owner and neighbour) to close a " +
+                                                 std::string(cell_type_name(oc.type)),
+                                             "faces that do not");
+                        if (oc.shape == CellShape::ok) {
+                            cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
+                            continue;
+                        }
+                        // A polyhedron: closed when each edge of its faces is met once each way.
+                        edges.clear();
+                        reversed.clear();
                         std::size_t at = 0;
                         for (int size : sizes) {
-                            cf.size[cf.count] = size;
-                            for (int i = 0; i < size; ++i) cf.node[cf.count][i] = rings[at++];
-                            ++cf.count;
+                            for (int i = 0; i < size; ++i) {
+                                const NodeId a = rings[at + static_cast<std::size_t>(i)],
+                                             b = rings[at + static_cast<std::size_t>((i + 1) % size)];
+                                edges.emplace_back(a, b);
+                                reversed.emplace_back(b, a);
+                            }
+                            at += static_cast<std::size_t>(size);
                         }
+                        std::sort(edges.begin(), edges.end());
+                        std::sort(reversed.begin(), reversed.end());
+                        if (count < 4 || edges != reversed || std::adjacent_find(edges.begin(), edges.end()) != edges.end())
+                            throw ParseError(where.faces_file, line_of(c),
+                                             "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
+                                                 ", oriented by owner and neighbour) to close a polyhedron (each edge "
+                                                 "once each way)",
+                                             "faces that do not");
+                        push_canonical_polyhedron(rings, sizes, cells);
                     }
-                    const OrderedCell oc = simple ? order_cell(cf) : OrderedCell{};
-                    if (oc.shape == CellShape::not_closed)
-                        throw ParseError(where.faces_file, line_of(c),
-                                         "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
-                                             ", oriented by owner and neighbour) to close a " +
-                                             std::string(cell_type_name(oc.type)),
-                                         "faces that do not");
-                    if (oc.shape == CellShape::ok) {
-                        cells.push_back(oc.type, {oc.node.data(), static_cast<std::size_t>(nodes_per_cell(oc.type))});
-                        continue;
-                    }
-                    // A polyhedron: closed when each edge of its faces is met once each way.
-                    edges.clear();
-                    reversed.clear();
-                    std::size_t at = 0;
-                    for (int size : sizes) {
-                        for (int i = 0; i < size; ++i) {
-                            const NodeId a = rings[at + static_cast<std::size_t>(i)],
-                                         b = rings[at + static_cast<std::size_t>((i + 1) % size)];
-                            edges.emplace_back(a, b);
-                            reversed.emplace_back(b, a);
-                        }
-                        at += static_cast<std::size_t>(size);
-                    }
-                    std::sort(edges.begin(), edges.end());
-                    std::sort(reversed.begin(), reversed.end());
-                    if (count < 4 || edges != reversed || std::adjacent_find(edges.begin(), edges.end()) != edges.end())
-                        throw ParseError(where.faces_file, line_of(c),
-                                         "the faces of cell " + std::to_string(c) + " (faces " + face_list(c) +
-                                             ", oriented by owner and neighbour) to close a polyhedron (each edge "
-                                             "once each way)",
-                                         "faces that do not");
-                    push_canonical_polyhedron(rings, sizes, cells);
+                } catch (...) {
+                    errors[static_cast<std::size_t>(w)] = std::current_exception();
                 }
-            } catch (...) {
-                errors[static_cast<std::size_t>(p)] = std::current_exception();
-            }
-        },
-        1);
-    for (const std::exception_ptr& e : errors)
-        if (e) std::rethrow_exception(e);
-    ElementList cells;
-    append_element_parts(cells, parts);
-    return cells;
+            },
+            1);
+        for (const std::exception_ptr& e : errors)
+            if (e) std::rethrow_exception(e);
+        append_element_parts(all, parts);
+    }
+    return all;
 }
 
 }  // namespace dgwarp::foam
