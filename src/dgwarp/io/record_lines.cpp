@@ -63,7 +63,8 @@ void append_element_parts(ElementList& out, const std::vector<ElementList>& part
         },
         1);
     // Polyhedra's faces (rare: one pass on this thread), where any list has them.
-    const bool faces = out.has_faces() || std::any_of(parts.begin(), parts.end(), [](const ElementList& p) { return p.has_faces(); });
+    const bool faces = out.has_faces() ||
+                       std::any_of(parts.begin(), parts.end(), [](const ElementList& p) { return p.has_faces(); });
     if (!faces) return;
     if (out.face_first.empty()) out.face_first.assign(cell_at[0] + 1, 0);
     for (const ElementList& p : parts) {
