@@ -18,16 +18,10 @@
 // in a small table, so operator delete tells one from a malloc'd pointer for
 // certain (an address test first, then the table).
 //
-// Not under the sanitizers, which replace operator new themselves.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define DGWARP_NO_LARGE_BLOCKS 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define DGWARP_NO_LARGE_BLOCKS 1
-#endif
-#endif
+// Not under the sanitizers, which replace operator new themselves (large_blocks.hpp).
+#include "large_blocks.hpp"
 
-#if defined(__linux__) && !defined(DGWARP_NO_LARGE_BLOCKS)
+#if DGWARP_LARGE_BLOCKS
 
 #include <sys/mman.h>
 

@@ -13,19 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "large_blocks.hpp"
+
 // Under the sanitizers the program keeps their operator new (large_blocks.cpp
 // compiles to nothing there), so there is nothing of ours to check.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define DGWARP_NO_LARGE_BLOCKS 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define DGWARP_NO_LARGE_BLOCKS 1
-#endif
-#endif
-#ifdef DGWARP_NO_LARGE_BLOCKS
-#define SKIP_UNDER_SANITIZERS() GTEST_SKIP() << "a sanitizer's operator new is in use"
-#else
+#if DGWARP_LARGE_BLOCKS
 #define SKIP_UNDER_SANITIZERS() (void)0
+#else
+#define SKIP_UNDER_SANITIZERS() GTEST_SKIP() << "a sanitizer's operator new is in use"
 #endif
 
 namespace {

@@ -19,8 +19,10 @@
 
 namespace dgwarp::detail {
 
+constexpr int gmsh_cases_version = 1;
+
 struct GmshCases {
-    int version = 1;  // gmsh_cases_version: a module of another build is refused
+    int version = gmsh_cases_version;  // a module of another build is refused
     Mesh (*naca0012)(const Naca0012Options&) = nullptr;
     Mesh (*sphere_box)(const SphereBoxOptions&) = nullptr;
     Mesh (*store)(const StoreOptions&) = nullptr;
@@ -28,8 +30,6 @@ struct GmshCases {
     Mesh (*wing_body)(const WingBodyOptions&) = nullptr;
     Mesh (*random_scene_mesh)(const RandomScene&) = nullptr;
 };
-
-constexpr int gmsh_cases_version = 1;
 
 }  // namespace dgwarp::detail
 

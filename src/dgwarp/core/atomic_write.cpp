@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <random>
 #include <streambuf>

@@ -33,7 +33,6 @@ FileBytes FileBytes::read(const std::filesystem::path& path) {
             FileBytes bytes;
             bytes.mapped_ = p;
             bytes.mapped_size_ = size;
-            bytes.view_ = std::string_view(static_cast<const char*>(p), size);
             return bytes;
         }
     } else if (fd >= 0) {
@@ -48,12 +47,9 @@ FileBytes::FileBytes(FileBytes&& other) noexcept { *this = std::move(other); }
 FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
     if (this == &other) return *this;
     release();
-    const bool was_mapped = other.mapped_ != nullptr;
     text_ = std::move(other.text_);
     mapped_ = std::exchange(other.mapped_, nullptr);
     mapped_size_ = std::exchange(other.mapped_size_, 0);
-    view_ = was_mapped ? std::string_view(static_cast<const char*>(mapped_), mapped_size_) : std::string_view(text_);
-    other.view_ = std::string_view(other.text_);
     return *this;
 }
 

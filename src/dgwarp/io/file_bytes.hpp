@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace dgwarp {
 
@@ -20,7 +21,7 @@ public:
     /// unreadable file.
     static FileBytes read(const std::filesystem::path& path);
     /// Bytes held in memory (tests, text made by a program).
-    explicit FileBytes(std::string text) : text_(std::move(text)), view_(text_) {}
+    explicit FileBytes(std::string text) : text_(std::move(text)) {}
 
     FileBytes(FileBytes&& other) noexcept;
     FileBytes& operator=(FileBytes&& other) noexcept;
@@ -28,7 +29,9 @@ public:
     FileBytes& operator=(const FileBytes&) = delete;
     ~FileBytes();
 
-    std::string_view view() const { return view_; }
+    std::string_view view() const {
+        return mapped_ ? std::string_view(static_cast<const char*>(mapped_), mapped_size_) : std::string_view(text_);
+    }
     /// Whether the bytes are a mapping of the file (false: a string).
     bool mapped() const { return mapped_ != nullptr; }
 
@@ -37,7 +40,6 @@ private:
     std::string text_;
     void* mapped_ = nullptr;  // the mapping's start, or nullptr
     std::size_t mapped_size_ = 0;
-    std::string_view view_;
     void release() noexcept;
 };
 
