@@ -20,8 +20,6 @@ namespace {
 
 using quality_detail::simplex_block;
 
-CellType simplex_type(int dim) { return dim == 3 ? CellType::tetrahedron : CellType::triangle; }
-
 /// Blocks of the passes: fixed, so that the work does not depend on the thread count.
 constexpr std::int64_t pass_block = 1 << 14;
 
@@ -64,40 +62,20 @@ std::unique_ptr<double[]> points_in_order(std::span<const NodeId> order, int dim
 
 QualityLayout make_quality_layout(const Mesh& mesh) {
     QualityLayout g;
-    const ElementList& cells = mesh.cells;
-    if (cells.size() > std::numeric_limits<std::uint32_t>::max()) return g;
     g.dim = mesh.dim;
     g.num_points = mesh.num_points();
-    g.num_cells = cells.size();
+    g.num_cells = mesh.cells.size();
     g.local_order = morton_numbering(mesh.dim, mesh.points);
-    std::vector<NodeId> local_id(g.num_points);
-    for (std::size_t k = 0; k < g.num_points; ++k)
-        local_id[static_cast<std::size_t>(g.local_order[k])] = static_cast<NodeId>(k);
-    // The simplices in the cells' order, with local node ids.
-    const CellType simplex = simplex_type(mesh.dim);
-    const auto corners = static_cast<std::size_t>(mesh.dim + 1);
-    const auto simplices =
-        static_cast<std::size_t>(std::count(cells.types.begin(), cells.types.end(), simplex));
-    g.simplex_nodes.resize(simplices * corners);
-    g.simplex_cell.resize(simplices);
-    g.other_cells.reserve(cells.size() - simplices);
-    std::size_t s = 0;
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        if (cells.types[c] != simplex) {
-            g.other_cells.push_back(static_cast<std::uint32_t>(c));
-            continue;
-        }
-        const NodeId* nodes = cells.nodes.data() + cells.offsets[c];
-        for (std::size_t i = 0; i < corners; ++i)
-            g.simplex_nodes[s * corners + i] = local_id[static_cast<std::size_t>(nodes[i])];
-        g.simplex_cell[s++] = static_cast<std::uint32_t>(c);
-    }
+    g.local_id.resize(g.num_points);
+    const auto n = static_cast<std::int64_t>(g.num_points);
+    parallel_for(n, [&](std::int64_t k) {
+        g.local_id[static_cast<std::size_t>(g.local_order[static_cast<std::size_t>(k)])] = static_cast<NodeId>(k);
+    });
     return g;
 }
 
 std::size_t layout_bytes(const QualityLayout& g) {
-    return g.local_order.size() * sizeof(NodeId) + g.simplex_nodes.size() * sizeof(NodeId) +
-           g.simplex_cell.size() * sizeof(std::uint32_t) + g.other_cells.size() * sizeof(std::uint32_t);
+    return (g.local_order.size() + g.local_id.size()) * sizeof(NodeId);
 }
 
 namespace {
@@ -112,55 +90,62 @@ std::unique_ptr<double[]> local_points(const QualityLayout& g, std::span<const d
     return local;
 }
 
-/// Calls kernel(block, count, results) on the layout's simplices [first, end)
-/// a block at a time, the block's edge vectors laid out column by column
-/// (sign from `orientations`, +1 without), then done(s, value) per simplex.
-template <int Dim, class Kernel, class Done>
-void for_each_simplex_block(const QualityLayout& g, const double* p, std::span<const std::int8_t> orientations,
-                            std::int64_t first, std::int64_t end, Kernel&& kernel, Done&& done) {
+/// The pass over cells [first, end): the simplices (type `simplex`) a
+/// block at a time, their edge vectors laid out column by column from the
+/// local points `p` (sign from `orientations`, +1 without), through
+/// kernel(block, count, results), then done(cell, value) per simplex; any
+/// other cell by other(cell), in turn.
+template <int Dim, class Kernel, class Done, class Other>
+void pass_cells(const QualityLayout& g, const ElementList& cells, const double* p,
+                std::span<const std::int8_t> orientations, std::int64_t first, std::int64_t end, Kernel&& kernel,
+                Done&& done, Other&& other) {
+    constexpr CellType simplex = Dim == 3 ? CellType::tetrahedron : CellType::triangle;
     quality_detail::SimplexBlock block;
     double value[simplex_block];
-    for (std::int64_t s0 = first; s0 < end; s0 += static_cast<std::int64_t>(simplex_block)) {
-        const auto count = static_cast<std::size_t>(std::min<std::int64_t>(simplex_block, end - s0));
-        const NodeId* v = g.simplex_nodes.data() + static_cast<std::size_t>(s0) * (Dim + 1);
-        for (std::size_t i = 0; i < count; ++i, v += Dim + 1) {
-            const double* x0 = p + Dim * static_cast<std::size_t>(v[0]);
+    std::size_t cell_of[simplex_block];
+    NodeId local[simplex_block][Dim + 1];
+    auto c = static_cast<std::size_t>(first);
+    const auto stop = static_cast<std::size_t>(end);
+    while (c < stop) {
+        // Up to a block of simplices: first their nodes' local ids (independent
+        // loads from local_id, many in flight), then their points.
+        std::size_t count = 0;
+        for (; c < stop && count < simplex_block; ++c) {
+            if (cells.types[c] != simplex) {
+                other(c);
+                continue;
+            }
+            const NodeId* v = cells.nodes.data() + cells.offsets[c];
+            for (int k = 0; k <= Dim; ++k) local[count][k] = g.local_id[static_cast<std::size_t>(v[k])];
+            cell_of[count++] = c;
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            const double* x0 = p + Dim * static_cast<std::size_t>(local[i][0]);
             for (int k = 1; k <= Dim; ++k) {
-                const double* xk = p + Dim * static_cast<std::size_t>(v[k]);
+                const double* xk = p + Dim * static_cast<std::size_t>(local[i][k]);
                 for (int j = 0; j < Dim; ++j) block.e[(k - 1) * Dim + j][i] = xk[j] - x0[j];
             }
-            block.sign[i] = orientations.empty() || orientations[g.simplex_cell[static_cast<std::size_t>(s0) + i]] >= 0
-                                ? 1.0
-                                : -1.0;
+            block.sign[i] = orientations.empty() || orientations[cell_of[i]] >= 0 ? 1.0 : -1.0;
         }
+        if (count == 0) continue;
         kernel(block, count, value);
-        for (std::size_t i = 0; i < count; ++i) done(static_cast<std::size_t>(s0) + i, value[i]);
+        for (std::size_t i = 0; i < count; ++i) done(cell_of[i], value[i]);
     }
 }
 
-/// The pass: per simplex kernel(...) then done(cell, value); the other cells one by one, other(cell).
+/// The pass over every cell of `mesh` (pass_cells), in fixed blocks over the threads.
 template <class Kernel3, class Kernel2, class Done, class Other>
-void layout_pass(const QualityLayout& g, const double* p, std::span<const std::int8_t> orientations,
+void layout_pass(const QualityLayout& g, const Mesh& mesh, const double* p, std::span<const std::int8_t> orientations,
                  Kernel3&& kernel3, Kernel2&& kernel2, Done&& done, Other&& other) {
-    const auto simplices = static_cast<std::int64_t>(g.simplex_cell.size());
-    const auto others = static_cast<std::int64_t>(g.other_cells.size());
-    const std::int64_t simplex_blocks = (simplices + pass_block - 1) / pass_block;
-    const std::int64_t blocks = simplex_blocks + (others + pass_block - 1) / pass_block;
+    const auto n = static_cast<std::int64_t>(mesh.cells.size());
     parallel_for(
-        blocks,
+        (n + pass_block - 1) / pass_block,
         [&](std::int64_t b) {
-            if (b < simplex_blocks) {
-                const std::int64_t first = b * pass_block, end = std::min(simplices, first + pass_block);
-                const auto to_cell = [&](std::size_t s, double value) { done(g.simplex_cell[s], value); };
-                if (g.dim == 3)
-                    for_each_simplex_block<3>(g, p, orientations, first, end, kernel3, to_cell);
-                else
-                    for_each_simplex_block<2>(g, p, orientations, first, end, kernel2, to_cell);
-                return;
-            }
-            const std::int64_t first = (b - simplex_blocks) * pass_block;
-            for (std::int64_t i = first; i < std::min(others, first + pass_block); ++i)
-                other(g.other_cells[static_cast<std::size_t>(i)]);
+            const std::int64_t first = b * pass_block, end = std::min(n, first + pass_block);
+            if (g.dim == 3)
+                pass_cells<3>(g, mesh.cells, p, orientations, first, end, kernel3, done, other);
+            else
+                pass_cells<2>(g, mesh.cells, p, orientations, first, end, kernel2, done, other);
         },
         1);
 }
@@ -174,9 +159,9 @@ std::vector<double> cell_qualities(const QualityLayout& layout, const Mesh& mesh
     if (!local) return cell_qualities(mesh, points, orientations);
     std::vector<double> quality(mesh.cells.size());
     layout_pass(
-        layout, local.get(), orientations, quality_detail::tetrahedron_qualities, quality_detail::triangle_qualities,
-        [&](std::uint32_t c, double q) { quality[c] = q; },
-        [&](std::uint32_t c) {
+        layout, mesh, local.get(), orientations, quality_detail::tetrahedron_qualities,
+        quality_detail::triangle_qualities, [&](std::size_t c, double q) { quality[c] = q; },
+        [&](std::size_t c) {
             quality[c] = element_shape_quality(mesh.cells, c, mesh.dim, points, orientations[c]);
         });
     return quality;
@@ -187,9 +172,9 @@ std::vector<std::int8_t> cell_orientations(const QualityLayout& layout, const Me
     if (!local) return cell_orientations(mesh);
     std::vector<std::int8_t> orientation(mesh.cells.size());
     layout_pass(
-        layout, local.get(), {}, quality_detail::tetrahedron_alphas, quality_detail::triangle_alphas,
-        [&](std::uint32_t c, double alpha) { orientation[c] = static_cast<std::int8_t>(alpha < 0 ? -1 : 1); },
-        [&](std::uint32_t c) {
+        layout, mesh, local.get(), {}, quality_detail::tetrahedron_alphas, quality_detail::triangle_alphas,
+        [&](std::size_t c, double alpha) { orientation[c] = static_cast<std::int8_t>(alpha < 0 ? -1 : 1); },
+        [&](std::size_t c) {
             orientation[c] = static_cast<std::int8_t>(element_orientation(mesh.cells, c, mesh.dim, mesh.points));
         });
     return orientation;
