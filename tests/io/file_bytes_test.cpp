@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "dgwarp/core/error.hpp"
@@ -31,7 +32,48 @@ std::string varied_text(std::size_t n) {
     return s;
 }
 
+/// Kilobytes of the process's memory in the mapping that starts at `start`
+/// (its Rss line in /proc/self/smaps); -1 when no mapping starts there.
+long mapping_rss_kb(const void* start) {
+    std::ifstream smaps("/proc/self/smaps");
+    std::string line;
+    bool in = false;
+    while (std::getline(smaps, line)) {
+        std::uintptr_t from = 0;
+        if (std::istringstream head(line); line.find('-') != std::string::npos && (head >> std::hex >> from) &&
+                                           line.find(':') > line.find('-')) {
+            in = from == reinterpret_cast<std::uintptr_t>(start);
+            continue;
+        }
+        if (in && line.rfind("Rss:", 0) == 0) return std::stol(line.substr(4));
+    }
+    return -1;
+}
+
 }  // namespace
+
+TEST(FileBytes, ReleasedPagesLeaveMemoryAndTheBytesStayReadable) {
+    const auto dir = test::scratch_dir();
+    const std::string large = varied_text((std::size_t{8} << 20) + 777);
+    FileBytes bytes = FileBytes::read(write_bytes(dir, "released.txt", large));
+    ASSERT_TRUE(bytes.mapped());
+    const void* start = bytes.view().data();
+    const long all = mapping_rss_kb(start);
+    EXPECT_GE(all, 8 * 1024 - 64);  // populated when mapped
+    bytes.release_before(large.size() / 2);
+    const long half = mapping_rss_kb(start);
+    EXPECT_LE(half, all / 2 + 8);
+    bytes.release_before(100);  // behind what is released: nothing
+    EXPECT_EQ(mapping_rss_kb(start), half);
+    bytes.release_before(large.size() + 4096);  // beyond the end: up to it
+    EXPECT_LE(mapping_rss_kb(start), 4);
+    // The bytes are the file's still (read again from the page cache).
+    EXPECT_EQ(bytes.view(), large);
+    // A string's bytes: nothing to release, nothing changes.
+    FileBytes text(std::string("a string"));
+    text.release_before(5);
+    EXPECT_EQ(text.view(), "a string");
+}
 
 TEST(FileBytes, ALargeFileIsMappedASmallOneReadBothItsBytes) {
     const auto dir = test::scratch_dir();

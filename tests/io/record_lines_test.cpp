@@ -216,3 +216,87 @@ TEST(RecordLines, JoinedPartsAreTheListPushedInOrderPolyhedraWithTheirFaces) {
     EXPECT_FALSE(plain.has_faces());
     EXPECT_EQ(plain.size(), 2u);
 }
+
+namespace {
+
+// "HEAD\n" then n element records "k id..." (k = 3: a triangle, 4: a
+// quadrilateral, in turn by threes), the record `bad` (if any) with a token
+// the parser below refuses.
+std::string element_records(int n, int bad = -1) {
+    std::string s = "HEAD\n";
+    for (int i = 0; i < n; ++i) {
+        const int k = i % 3 == 0 ? 4 : 3;
+        s += std::to_string(k);
+        for (int j = 0; j < k; ++j) s += " " + (i == bad && j == 1 ? std::string("x") : std::to_string(i + j));
+        s += "\n";
+    }
+    return s;
+}
+
+bool parse_element_record(std::string_view line, ElementList& out) {
+    LineTokens tokens(line);
+    std::int64_t k = 0, id = 0;
+    if (!parse_plain_digits(tokens.next(), k) || (k != 3 && k != 4)) return false;
+    std::vector<NodeId> nodes;
+    for (std::int64_t j = 0; j < k; ++j) {
+        if (!parse_plain_digits(tokens.next(), id)) return false;
+        nodes.push_back(static_cast<NodeId>(id));
+    }
+    out.push_back(k == 3 ? CellType::triangle : CellType::quadrilateral, nodes);
+    return true;
+}
+
+}  // namespace
+
+TEST(RecordLines, ElementsParsedInWavesAreTheListPushedLineByLineAndAFailureLeavesTheListAsItWas) {
+    // 200,000 records: 49 chunks of 4096, so two waves or more whatever the thread count.
+    const int n = 200000;
+    ASSERT_GT(static_cast<std::size_t>(n) / 4096, element_wave_chunks());
+    const std::vector<NodeId> tet = {7, 8, 9, 10};
+    ElementList expected;
+    expected.push_back(CellType::tetrahedron, tet);  // what the list held before the block
+    {
+        const std::string text = element_records(n);
+        TextReader walk("e.txt", text);
+        walk.next_line();
+        for (int i = 0; i < n; ++i) {
+            ASSERT_TRUE(walk.next_line());
+            ASSERT_TRUE(parse_element_record(walk.line(), expected));
+        }
+    }
+    const int before = num_threads();
+    for (int threads : {1, 2, 3}) {
+        set_num_threads(threads);
+        for (int bad : {-1, 5, 150000}) {  // none, in the first wave, in a later one
+            const std::string text = element_records(n, bad);
+            TextReader r("e.txt", text);
+            ASSERT_TRUE(r.next_line());
+            const auto block = split_record_lines(r, n, SkippedLines{});
+            ASSERT_TRUE(block);
+            ElementList out;
+            out.push_back(CellType::tetrahedron, tet);
+            const ElementList held = out;
+            const bool ok = parse_element_chunks(r, *block, out, [&](std::size_t c, ElementList& part) {
+                EXPECT_TRUE(part.empty());
+                return for_each_record_line(r.content(), block->chunks[c], SkippedLines{},
+                                            [&](std::string_view line, std::int64_t, std::size_t) {
+                                                return parse_element_record(line, part);
+                                            });
+            });
+            EXPECT_EQ(ok, bad < 0) << threads << " threads, bad record " << bad;
+            EXPECT_EQ(out, bad < 0 ? expected : held) << threads << " threads, bad record " << bad;
+        }
+    }
+    set_num_threads(before);
+    // A list with polyhedra before the block, cut back as it was.
+    const std::vector<NodeId> rings = {0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+    const std::vector<int> sizes = {4, 3, 3, 3, 3};
+    ElementList with_faces;
+    with_faces.push_polyhedron(rings, sizes);
+    const ElementList held = with_faces;
+    const ElementListSizes at = sizes_of(with_faces);
+    with_faces.push_back(CellType::tetrahedron, tet);
+    with_faces.push_polyhedron(rings, sizes);
+    restore_sizes(with_faces, at);
+    EXPECT_EQ(with_faces, held);
+}

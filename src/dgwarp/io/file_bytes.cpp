@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <utility>
@@ -50,15 +51,27 @@ FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
     text_ = std::move(other.text_);
     mapped_ = std::exchange(other.mapped_, nullptr);
     mapped_size_ = std::exchange(other.mapped_size_, 0);
+    released_ = std::exchange(other.released_, 0);
     return *this;
 }
 
 FileBytes::~FileBytes() { release(); }
 
+void FileBytes::release_before(std::size_t end) noexcept {
+    if (!mapped_) return;
+    static const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const std::size_t upto = std::min(end, mapped_size_) / page * page;
+    if (upto <= released_) return;
+    // Advice only: a failure leaves the pages mapped, which is no error.
+    ::madvise(static_cast<char*>(mapped_) + released_, upto - released_, MADV_DONTNEED);
+    released_ = upto;
+}
+
 void FileBytes::release() noexcept {
     if (mapped_) ::munmap(mapped_, mapped_size_);
     mapped_ = nullptr;
     mapped_size_ = 0;
+    released_ = 0;
 }
 
 }  // namespace dgwarp

@@ -34,12 +34,19 @@ public:
     }
     /// Whether the bytes are a mapping of the file (false: a string).
     bool mapped() const { return mapped_ != nullptr; }
+    /// Bytes [0, end) are read: a mapping's whole pages there leave the
+    /// process's memory (madvise MADV_DONTNEED; the file's pages stay in the
+    /// page cache, and reading them again maps them again, so view() is
+    /// unchanged). A reader calls it as it goes, so that a large file and
+    /// what it becomes are not both in memory. Nothing for a string.
+    void release_before(std::size_t end) noexcept;
 
 private:
     FileBytes() = default;
     std::string text_;
     void* mapped_ = nullptr;  // the mapping's start, or nullptr
     std::size_t mapped_size_ = 0;
+    std::size_t released_ = 0;  // bytes [0, released_) given back (whole pages)
     void release() noexcept;
 };
 

@@ -71,9 +71,11 @@ bool read_elements_fast(TextReader& r, GmshContent& c, CellType t, std::int64_t 
     if (!block) return false;
     const int k = nodes_per_cell(t);
     const auto order = gmsh_index_of_vtk_node(t);
-    std::vector<ElementList> parts(block->chunks.size());
-    const bool ok = parse_record_chunks(r, *block, [&](std::size_t ci) {
-        ElementList& part = parts[ci];
+    const int dim = cell_dimension(t);
+    // Elements of dimension 0 (points) are read and checked, and kept nowhere.
+    ElementList points;
+    ElementList& out = dim > 0 ? c.by_dim[dim].elements : points;
+    const bool ok = parse_element_chunks(r, *block, out, [&](std::size_t ci, ElementList& part) {
         part.reserve(static_cast<std::size_t>(block->chunks[ci].count), k);
         return for_each_record_line(r.content(), block->chunks[ci], gmsh_skipped,
                                     [&](std::string_view line, std::int64_t, std::size_t) {
@@ -96,12 +98,8 @@ bool read_elements_fast(TextReader& r, GmshContent& c, CellType t, std::int64_t 
                                     });
     });
     if (!ok) return false;
-    const int dim = cell_dimension(t);
     c.top_dim = std::max(c.top_dim, dim);
-    if (dim > 0) {
-        append_element_parts(c.by_dim[dim].elements, parts);
-        c.by_dim[dim].groups.resize(c.by_dim[dim].groups.size() + static_cast<std::size_t>(n), group);
-    }
+    if (dim > 0) c.by_dim[dim].groups.resize(c.by_dim[dim].groups.size() + static_cast<std::size_t>(n), group);
     r.seek(block->end, block->last_line);
     return true;
 }

@@ -40,7 +40,33 @@ std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t 
     return block;
 }
 
-void append_element_parts(ElementList& out, const std::vector<ElementList>& parts) {
+ElementListSizes sizes_of(const ElementList& list) {
+    return {list.size(), list.nodes.size(), list.face_first.size(), list.face_offsets.size(), list.face_nodes.size()};
+}
+
+void restore_sizes(ElementList& list, const ElementListSizes& sizes) {
+    list.types.resize(sizes.cells);
+    list.offsets.resize(sizes.cells + 1);
+    list.nodes.resize(sizes.nodes);
+    list.face_first.resize(sizes.face_first);
+    list.face_offsets.resize(sizes.face_offsets);
+    list.face_nodes.resize(sizes.face_nodes);
+}
+
+void reserve_like(ElementList& out, std::size_t more, std::span<const ElementList> sample) {
+    std::size_t cells = 0, nodes = 0;
+    for (const ElementList& p : sample) {
+        cells += p.size();
+        nodes += p.nodes.size();
+    }
+    out.types.reserve(out.size() + more);
+    out.offsets.reserve(out.size() + more + 1);
+    if (cells > 0) out.nodes.reserve(out.nodes.size() + (more * nodes + cells - 1) / cells);
+}
+
+std::size_t element_wave_chunks() { return std::max<std::size_t>(32, 4 * static_cast<std::size_t>(num_threads())); }
+
+void append_element_parts(ElementList& out, std::span<const ElementList> parts) {
     // Where each part begins in the lists, then the copies.
     const std::size_t n = parts.size();
     std::vector<std::size_t> cell_at(n + 1, out.size()), node_at(n + 1, out.nodes.size());

@@ -232,12 +232,9 @@ bool read_elements_fast(TextReader& r, std::int64_t count, int dim, bool boundar
                         NodeIdRange& range) {
     const std::optional<RecordBlock> block = split_record_lines(r, count, su2_skipped);
     if (!block) return false;
-    const std::size_t chunks = block->chunks.size();
-    std::vector<ElementList> parts(chunks);
-    std::vector<NodeIdRange> ranges(chunks);
-    const bool ok = parse_record_chunks(r, *block, [&](std::size_t c) {
+    std::vector<NodeIdRange> ranges(block->chunks.size());
+    const bool ok = parse_element_chunks(r, *block, out, [&](std::size_t c, ElementList& part) {
         const RecordChunk& chunk = block->chunks[c];
-        ElementList& part = parts[c];
         NodeIdRange& rg = ranges[c];
         part.reserve(static_cast<std::size_t>(chunk.count), min_nodes);
         return for_each_record_line(r.content(), chunk, su2_skipped,
@@ -252,7 +249,6 @@ bool read_elements_fast(TextReader& r, std::int64_t count, int dim, bool boundar
     // The first line holding the largest id, as the line-by-line code keeps it.
     for (const NodeIdRange& rg : ranges)
         if (rg.max > range.max) range = rg;
-    append_element_parts(out, parts);
     r.seek(block->end, block->last_line);
     return true;
 }

@@ -49,6 +49,9 @@ public:
     }
     /// The whole content.
     std::string_view content() const { return bytes_.view(); }
+    /// The content before byte offset `pos` is read (FileBytes::release_before):
+    /// a mapped file's pages there leave memory; content() is unchanged.
+    void release_before(std::size_t pos) noexcept { bytes_.release_before(pos); }
     /// 1-based number of the current line (0 before the first next_line()).
     std::size_t line_number() const { return line_number_; }
     const std::string& file() const { return file_; }

@@ -53,6 +53,15 @@ void ElementList::reserve(std::size_t n, int nodes_per_element) {
     nodes.reserve(n * static_cast<std::size_t>(nodes_per_element));
 }
 
+void ElementList::clear() {
+    types.clear();
+    offsets.assign(1, 0);
+    nodes.clear();
+    face_first.clear();
+    face_offsets.assign(1, 0);
+    face_nodes.clear();
+}
+
 std::vector<NodeId> marker_nodes(const Marker& marker) {
     std::vector<NodeId> ids = marker.elements.nodes;
     std::sort(ids.begin(), ids.end());

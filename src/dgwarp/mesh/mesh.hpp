@@ -64,6 +64,8 @@ struct ElementList {
     void push_polyhedron(std::span<const NodeId> rings, std::span<const int> face_sizes);
     /// Reserves room for n elements of up to nodes_per_element nodes each.
     void reserve(std::size_t n, int nodes_per_element);
+    /// Removes every element; the arrays keep their capacity.
+    void clear();
 
     bool operator==(const ElementList&) const = default;
 };
