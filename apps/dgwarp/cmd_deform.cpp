@@ -53,14 +53,16 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
     return false;
 }
 
+/// The frames of `run` (planned by plan_run: run.planned, or the run's
+/// error when `planned` is false, and then nothing more is done).
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 /// `beside`: with --foam-processors, the processor folders written with the whole case.
-MethodRun run_method(Inputs& in, Method method, const DeformArgs& a, bool several, bool text,
+MethodRun run_method(Inputs& in, MethodRun run, bool planned, const DeformArgs& a, bool several, bool text,
                      const std::vector<std::string>& foam_times, const std::vector<OpenFoamProcessor>& beside,
                      ProgressLine& progress, WarningPrinter& warnings) {
-    MethodRun run;
+    if (!planned) return run;
+    const Method method = run.planned.method;
     const std::size_t frames = frame_count(in.spec);
-    if (!plan_run(in, method, a, several, progress, run)) return run;
     if (text && !several) print_plan(std::cout, in, run.planned, warnings);
     if (text && several)
         for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w.text);
@@ -197,6 +199,7 @@ void print_written(const std::vector<MethodRun>& runs) {
 
 void run_deform(const DeformArgs& given) {
     DeformArgs a = given;
+    set_sync_writes(a.sync);
     const bool foam = writes_openfoam(a.output);
     if (foam) {
         // "case/" names the folder "case": --method all writes case_dg-idw, ...
@@ -225,7 +228,7 @@ void run_deform(const DeformArgs& given) {
     }
     const bool text = !a.json && !a.quiet;
     ProgressLine progress(text);
-    Inputs in = read_inputs(a.setup, progress, [&](const MotionSpec& spec) {
+    Inputs in = read_motion_inputs(a.setup, progress, [&](const MotionSpec& spec) {
         // Every file this run may write (each method's, each frame's), before any work.
         std::vector<std::filesystem::path> inputs = motion_files(spec);
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
@@ -253,6 +256,10 @@ void run_deform(const DeformArgs& given) {
         throw MeshError("OpenFOAM meshes are 3D: the " + std::to_string(in.mesh.dim) + "D mesh " + a.setup.mesh +
                         " cannot be written to the OpenFOAM case " + a.output);
     const std::size_t frames = frame_count(in.spec);
+    // The first method's plan, with the original's quality measured beside it.
+    std::vector<MethodRun> runs(methods.size());
+    std::vector<char> planned(methods.size(), 0);
+    measure_beside(in, [&] { planned[0] = plan_run(in, methods[0], a, several, progress, runs[0]); });
     WarningPrinter warnings(text);
     if (text) print_inputs(std::cout, in, frames, warnings);
     // A decomposed case in its usual layout: which mesh this run reads and writes.
@@ -275,8 +282,11 @@ void run_deform(const DeformArgs& given) {
             warnings.print(layout_warnings.back());
         }
 
-    std::vector<MethodRun> runs;
-    for (Method m : methods) runs.push_back(run_method(in, m, a, several, text, foam_times, beside, progress, warnings));
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        if (i > 0) planned[i] = plan_run(in, methods[i], a, several, progress, runs[i]);
+        runs[i] = run_method(in, std::move(runs[i]), planned[i] != 0, a, several, text, foam_times, beside, progress,
+                             warnings);
+    }
     if (text && several) {
         print_table(in, runs);
         print_written(runs);
@@ -448,6 +458,10 @@ void add_deform_command(CLI::App& app) {
                   "dg-harmonic: no last resort (by default, cells its step inverts are repaired by the untangle "
                   "step, reported in the output)")
         ->excludes(untangle_flag);
+    cmd->add_flag("--sync", args->sync,
+                  "Wait for the disk before renaming each output into place (fsync), so that it survives a power "
+                  "cut right after the run too (without: a failed or interrupted write never leaves a partial file "
+                  "either way; the disk's write time is spared)");
     cmd->add_flag("--json", args->json, "Print a JSON report (schema in docs/JSON.md)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(

@@ -28,12 +28,13 @@ void run_prepare(const PrepareArgs& a) {
                                                    std::string(method_name(method)));
     require_extension("--output", a.output, {".plan"}, "a plan file");
     ProgressLine progress(!a.json && !a.quiet);
-    const Inputs in = read_inputs(a.setup, progress, [&a](const MotionSpec& spec) {
+    Inputs in = read_motion_inputs(a.setup, progress, [&a](const MotionSpec& spec) {
         std::vector<std::filesystem::path> inputs = motion_files(spec);
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
         check_output_file(a.output, inputs);
     });
-    const PlannedMethod p = plan_method(in, method, "", progress);
+    PlannedMethod p;
+    measure_beside(in, [&] { p = plan_method(in, method, "", progress); });
     Stopwatch sw;
     save_plan(a.output, p.plan);
     const double write_seconds = sw.lap();

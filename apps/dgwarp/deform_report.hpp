@@ -26,6 +26,7 @@ struct DeformArgs {
     std::string foam_time;  // OpenFOAM output: a single frame's time folder, or "constant"
     bool foam_processors = false;  // also the processor folders beside the input's constant/polyMesh
     bool quiet = false;
+    bool sync = false;  // each output synced to the disk before it is renamed into place (set_sync_writes)
 };
 
 /// A frame as the CLI reports it: the run layer's report (run/deform_frame.hpp)

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/marker_names.hpp"
@@ -325,17 +326,17 @@ void warn_already_inverted(Inputs& in) {
     in.boundary.warnings.push_back(std::move(w));
 }
 
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
-                   const std::function<void(const MotionSpec&)>& check_outputs) {
-    Inputs in = read_motion_inputs(args, progress, check_outputs);
-    Stopwatch sw;
-    progress.phase("measuring the original mesh's quality");
-    in.original = measure_original(in.mesh);
+void measure_beside(Inputs& in, const std::function<void()>& work) {
+    OriginalCells original;
+    double seconds = 0;
+    run_beside(work, [&] {
+        Stopwatch sw;
+        original = measure_original(in.mesh);
+        seconds = sw.lap();
+    });
+    in.original = std::move(original);
+    in.quality_seconds = seconds;
     warn_already_inverted(in);
-
-    in.quality_seconds = sw.lap();
-    progress.clear();
-    return in;
 }
 
 PlanSummary planned_summary(const PlannedMethod& p) {

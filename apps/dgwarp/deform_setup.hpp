@@ -123,9 +123,12 @@ std::span<const double> output_points(const Inputs& in, std::span<const double> 
 Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
                           const std::function<void(const MotionSpec&)>& check_outputs = {});
 
-/// read_motion_inputs, then the original mesh's orientation and quality.
-Inputs read_inputs(const SetupArgs& args, ProgressLine& progress,
-                   const std::function<void(const MotionSpec&)>& check_outputs);
+/// Calls work() (a method's prepare: mostly serial) with the original
+/// mesh's orientation and quality measured beside it on a thread of its own
+/// (run_beside), then keeps them in `in` (in.original, in.quality_seconds: the
+/// measure's own time, which overlaps work's) with warn_already_inverted's
+/// warning. work() must not read in.original nor in.boundary.warnings.
+void measure_beside(Inputs& in, const std::function<void()>& work);
 
 /// Adds the boundary warning about the cells already inverted or degenerate
 /// in the input (in.original.summary, its worst cell named), if any.

@@ -412,3 +412,19 @@ TEST(AtomicWrite, EveryOutputOfTheProjectGoesThroughIt) {
     }
     EXPECT_GT(files, 50);
 }
+
+TEST(AtomicWrite, WritesWithAndWithoutSyncGiveTheSameFileAndSyncIsOffByDefault) {
+    EXPECT_FALSE(sync_writes());
+    const auto dir = test::scratch_dir();
+    const Mesh mesh = large_mesh();
+    write_su2(dir / "plain.su2", mesh);
+    set_sync_writes(true);
+    EXPECT_TRUE(sync_writes());
+    write_su2(dir / "synced.su2", mesh);
+    write_file_atomically_at(dir / "synced.txt", [](const std::filesystem::path& tmp) { write_plain(tmp, "at\n"); });
+    set_sync_writes(false);
+    EXPECT_FALSE(sync_writes());
+    EXPECT_EQ(read_file(dir / "synced.su2"), read_file(dir / "plain.su2"));
+    EXPECT_EQ(read_file(dir / "synced.txt"), "at\n");
+    EXPECT_EQ(entries(dir), (std::vector<std::string>{"plain.su2", "synced.su2", "synced.txt"}));
+}

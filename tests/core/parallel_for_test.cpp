@@ -174,3 +174,48 @@ TEST(ParallelFor, RunConcurrentlyFinishesBothAndRethrowsTheFirstTasksError) {
         EXPECT_THROW(run_concurrently([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
     }
 }
+
+TEST(ParallelFor, RunBesideKeepsEveryThreadHereAndOneBesideAndRethrowsTheFirstTasksError) {
+    ThreadCount keep;
+    for (int threads : {1, 3}) {
+        set_num_threads(threads);
+        std::thread::id here = std::this_thread::get_id(), a_id, b_id;
+        int a_threads = 0, b_threads = 0;
+        std::atomic<bool> a_started{false};
+        std::vector<int> hits(static_cast<std::size_t>(parallel_grain * 4), 0);
+        run_beside(
+            [&] {
+                a_started = true;
+                a_id = std::this_thread::get_id();
+                a_threads = num_threads();
+                parallel_for(parallel_grain * 2, [&](std::int64_t i) { ++hits[i]; });
+            },
+            [&] {
+                for (int k = 0; threads > 1 && !a_started && k < 2000; ++k)
+                    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                b_id = std::this_thread::get_id();
+                b_threads = num_threads();
+                parallel_for(parallel_grain * 2, [&](std::int64_t i) { ++hits[parallel_grain * 2 + i]; });
+            });
+        for (int h : hits) ASSERT_EQ(h, 1);
+        EXPECT_EQ(a_id, here);
+        EXPECT_EQ(a_threads, threads);
+        EXPECT_EQ(b_threads, 1);
+        if (threads == 1) EXPECT_EQ(b_id, here);
+        else EXPECT_NE(b_id, here);
+        EXPECT_EQ(num_threads(), threads);  // the setting here is as it was
+        bool b_done = false;
+        try {
+            run_beside([] { throw std::runtime_error("a"); },
+                       [&] {
+                           b_done = true;
+                           throw std::logic_error("b");
+                       });
+            ADD_FAILURE() << "no exception";
+        } catch (const std::runtime_error& e) {
+            EXPECT_STREQ(e.what(), "a");
+        }
+        EXPECT_TRUE(b_done);
+        EXPECT_THROW(run_beside([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+    }
+}

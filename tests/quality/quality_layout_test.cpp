@@ -148,6 +148,43 @@ TEST(QualityLayout, EveryCellIsItsOwnCellShapeQualityToTheBit) {
     }
 }
 
+TEST(QualityLayout, TheOriginalsOnePassGivesTheOrientationsAndQualitiesOfTheSeparatePasses) {
+    for (int dim : {2, 3}) {
+        for (double amount : {0.0, 0.02, 0.3}) {
+            for (bool nan : {false, true}) {
+                // Cells of both orientations (some flipped by the shake: -1 can then be the majority
+                // of a type), collapsed and NaN cells, and hexahedra or quadrilaterals among them.
+                Mesh m = grid_mesh(dim, dim == 3 ? 12 : 90, 25, 3u + static_cast<unsigned>(dim));
+                if (amount > 0 || nan) m.points = shaken(m, amount, nan, 17);
+                if (amount == 0.3) {
+                    // Most simplices flipped: the majority against which they are judged is -1.
+                    for (std::size_t c = 0; c < m.cells.size(); c += 4) {
+                        auto* v = m.cells.nodes.data() + m.cells.offsets[c];
+                        if (m.cells.types[c] != CellType::hexahedron && m.cells.types[c] != CellType::quadrilateral)
+                            std::swap(v[0], v[1]);
+                    }
+                }
+                const std::string what = std::to_string(dim) + "D, moved by " + std::to_string(amount) +
+                                         (nan ? ", a NaN coordinate" : "");
+                const QualityLayout layout = make_quality_layout(m);
+                std::vector<std::int8_t> own, orientation;
+                const std::vector<double> quality = original_qualities(layout, m, own, orientation);
+                const std::vector<std::int8_t> expected_own = cell_orientations(m);
+                const std::vector<std::int8_t> expected_orientation = dominant_orientations(m, expected_own);
+                EXPECT_EQ(own, expected_own) << what;
+                EXPECT_EQ(orientation, expected_orientation) << what;
+                expect_same_bits(quality, cell_qualities(m, expected_orientation), what);
+                // Another mesh's layout: the separate passes, the same values.
+                const QualityLayout wrong = make_quality_layout(grid_mesh(dim, 4, 0, 1));
+                std::vector<std::int8_t> own2, orientation2;
+                expect_same_bits(original_qualities(wrong, m, own2, orientation2), quality, what + ", no layout");
+                EXPECT_EQ(own2, own);
+                EXPECT_EQ(orientation2, orientation);
+            }
+        }
+    }
+}
+
 TEST(QualityLayout, HugeCoordinatesAndAnotherMeshsLayoutTakeTheCellsOneByOne) {
     const Mesh m = grid_mesh(3, 6, 2, 3);
     const QualityLayout layout = make_quality_layout(m);

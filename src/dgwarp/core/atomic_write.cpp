@@ -60,15 +60,17 @@ void create_new_file(const std::filesystem::path& file, const std::filesystem::p
     ::close(fd);
 }
 
+std::atomic<bool> sync_before_rename{false};
+
 /// The output stream's buffer: writes go to the file descriptor (large ones
-/// straight from the caller's memory), and every `kick` bytes the disk is
-/// asked to start writing them (sync_file_range, SYNC_FILE_RANGE_WRITE: no
-/// wait), so that the fsync at the end waits for the last few megabytes
-/// rather than the whole file (0.2-0.3 s for 261 MB measured in a virtual
-/// machine, now spent while the next rows are formatted).
+/// straight from the caller's memory). When the file is to be synced, every
+/// `kick` bytes the disk is asked to start writing them (sync_file_range,
+/// SYNC_FILE_RANGE_WRITE: no wait), so that the fsync at the end waits for
+/// the last few megabytes rather than the whole file (0.2-0.3 s for 261 MB
+/// measured in a virtual machine, then spent while the next rows are formatted).
 class FileOut : public std::streambuf {
 public:
-    explicit FileOut(int fd) : fd_(fd), buffer_(std::size_t{1} << 16) {
+    FileOut(int fd, bool kick) : fd_(fd), kick_(kick), buffer_(std::size_t{1} << 16) {
         setp(buffer_.data(), buffer_.data() + buffer_.size());
     }
     /// errno of the first failed write, 0 when none failed.
@@ -93,6 +95,7 @@ protected:
 private:
     static constexpr std::uint64_t kick = std::uint64_t{32} << 20;
     int fd_;
+    bool kick_;
     std::vector<char> buffer_;
     std::uint64_t written_ = 0, kicked_ = 0;
     int error_ = 0;
@@ -115,7 +118,7 @@ private:
             n -= static_cast<std::size_t>(k);
             written_ += static_cast<std::uint64_t>(k);
         }
-        if (written_ - kicked_ >= kick) {
+        if (kick_ && written_ - kicked_ >= kick) {
 #ifdef SYNC_FILE_RANGE_WRITE
             ::sync_file_range(fd_, static_cast<off_t>(kicked_), static_cast<off_t>(written_ - kicked_),
                               SYNC_FILE_RANGE_WRITE);
@@ -178,6 +181,9 @@ std::filesystem::path write_target(const std::filesystem::path& path) {
 
 }  // namespace
 
+void set_sync_writes(bool sync) { sync_before_rename.store(sync); }
+bool sync_writes() { return sync_before_rename.load(); }
+
 void remove_unfinished_temporary_files() noexcept {
     for (UnfinishedSlot& slot : unfinished)
         if (slot.state.load() == 2) ::unlink(slot.path);
@@ -228,15 +234,23 @@ void write_file_atomically(const std::filesystem::path& path,
         }
         struct Closer {
             int fd;
-            ~Closer() { ::close(fd); }
+            ~Closer() {
+                if (fd >= 0) ::close(fd);
+            }
         } closer{fd};
-        FileOut buffer(fd);
+        FileOut buffer(fd, sync_writes());
         std::ostream out(&buffer);
         write(out);
         out.flush();
         if (buffer.error() != 0)
             throw IoError(path.string(), std::string("write failed: ") + std::strerror(buffer.error()), buffer.error());
         if (!out) throw IoError(path.string(), "write failed (disk full?)");
+        // close's own error (a network file system may report a failed write only there).
+        closer.fd = -1;
+        if (::close(fd) != 0 && errno != EINTR) {  // on EINTR Linux has closed it
+            const int err = errno;
+            throw IoError(path.string(), std::string("write failed: ") + std::strerror(err), err);
+        }
     });
 }
 
@@ -251,7 +265,7 @@ void write_file_atomically_at(const std::filesystem::path& output,
     const int slot = register_unfinished(tmp);
     try {
         write(tmp);
-        sync_file(tmp);
+        if (sync_writes()) sync_file(tmp);
         struct stat old {};
         if (::stat(path.c_str(), &old) == 0) ::chmod(tmp.c_str(), old.st_mode & 07777);  // keep its permissions
         std::error_code ec;

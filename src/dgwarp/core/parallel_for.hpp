@@ -54,6 +54,14 @@ void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body);
 /// rethrown after both have finished (a's first).
 template <class A, class B>
 void run_concurrently(A&& a, B&& b);
+/// Calls a() here, with every thread for its loops, and b() at the same
+/// time on a thread of its own whose loops run on it alone: for a stage
+/// that is mostly serial (a) and independent work (b) that fills the cores
+/// its serial parts leave idle, without taking a()'s parallel parts to one
+/// thread as run_concurrently does. With one thread, a() then b().
+/// Exceptions are rethrown after both have finished (a's first).
+template <class A, class B>
+void run_beside(A&& a, B&& b);
 
 }  // namespace dgwarp
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <exception>
 #include <mutex>
+#include <thread>
 
 namespace dgwarp {
 
@@ -90,6 +91,24 @@ void run_concurrently(A&& a, B&& b) {
             if (task == 0) error_a.run(a);
             else error_b.run(b);
         }
+    }
+    error_a.rethrow();
+    error_b.rethrow();
+}
+
+template <class A, class B>
+void run_beside(A&& a, B&& b) {
+    detail::FirstError error_a, error_b;
+    if (num_threads() < 2) {
+        error_a.run(a);
+        error_b.run(b);
+    } else {
+        std::thread beside([&] {
+            set_num_threads(1);  // this thread's loops only (OpenMP's setting is per thread)
+            error_b.run(b);
+        });
+        error_a.run(a);
+        beside.join();
     }
     error_a.rethrow();
     error_b.rethrow();

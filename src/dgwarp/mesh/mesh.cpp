@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cassert>
+#include <exception>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
 
 namespace dgwarp {
 
@@ -124,6 +126,47 @@ BoundingBox bounding_box(int dim, std::span<const double> points, std::span<cons
 
 namespace {
 
+/// Throws MeshError when element i of `list` is not as check_elements wants it.
+void check_element(const ElementList& list, std::size_t i, std::int64_t num_points, int expected_dim,
+                   const std::string& what, const std::string& marker, bool vertices) {
+    const CellType t = list.types[i];
+    const auto nodes = list.nodes_of(i);
+    const bool count_ok = t == CellType::polygon      ? nodes.size() >= 3
+                          : t == CellType::polyhedron ? nodes.size() >= 4
+                                                      : static_cast<int>(nodes.size()) == nodes_per_cell(t);
+    if (!count_ok)
+        throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) +
+                            ") has " + std::to_string(nodes.size()) + " nodes",
+                        marker, static_cast<std::int64_t>(i));
+    const auto [f0, f1] = list.faces_of(i);
+    if ((t == CellType::polyhedron) != (f1 > f0) || (t == CellType::polyhedron && f1 - f0 < 4))
+        throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) + ") has " +
+                            std::to_string(f1 - f0) + " faces" +
+                            (t == CellType::polyhedron ? " (a polyhedron has at least 4)" : ""),
+                        marker, static_cast<std::int64_t>(i));
+    for (std::int64_t f = f0; f < f1; ++f) {
+        const auto ring = list.face_nodes_of(f);
+        if (ring.size() < 3)
+            throw MeshError(what + " element " + std::to_string(i) + " (polyhedron) has a face of " +
+                                std::to_string(ring.size()) + " nodes",
+                            marker, static_cast<std::int64_t>(i));
+        for (NodeId n : ring)
+            if (std::find(nodes.begin(), nodes.end(), n) == nodes.end())
+                throw MeshError(what + " element " + std::to_string(i) + " (polyhedron): a face names node " +
+                                    std::to_string(n) + ", not one of the cell's nodes",
+                                marker, static_cast<std::int64_t>(i));
+    }
+    if (cell_dimension(t) != expected_dim && !((expected_dim == 1 || vertices) && t == CellType::vertex))
+        throw MeshError(what + " element " + std::to_string(i) + " is a " + std::string(cell_type_name(t)) +
+                            ", expected an element of dimension " + std::to_string(expected_dim),
+                        marker, static_cast<std::int64_t>(i));
+    for (NodeId n : nodes)
+        if (n < 0 || n >= num_points)
+            throw MeshError(what + " element " + std::to_string(i) + " names node " + std::to_string(n) +
+                                ", but the mesh has " + std::to_string(num_points) + " nodes",
+                            marker, static_cast<std::int64_t>(i));
+}
+
 void check_elements(const ElementList& list, std::int64_t num_points, int expected_dim,
                     const std::string& what, const std::string& marker, bool vertices = false) {
     if (list.offsets.size() != list.size() + 1 || list.offsets.back() != static_cast<std::int64_t>(list.nodes.size()))
@@ -132,46 +175,26 @@ void check_elements(const ElementList& list, std::int64_t num_points, int expect
         (list.face_first.size() != list.size() + 1 || list.face_first.back() + 1 != static_cast<std::int64_t>(list.face_offsets.size()) ||
          list.face_offsets.back() != static_cast<std::int64_t>(list.face_nodes.size())))
         throw MeshError(what + ": polyhedron face offsets do not match the face lists", marker);
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const CellType t = list.types[i];
-        const auto nodes = list.nodes_of(i);
-        const bool count_ok = t == CellType::polygon      ? nodes.size() >= 3
-                              : t == CellType::polyhedron ? nodes.size() >= 4
-                                                          : static_cast<int>(nodes.size()) == nodes_per_cell(t);
-        if (!count_ok)
-            throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) +
-                                ") has " + std::to_string(nodes.size()) + " nodes",
-                            marker, static_cast<std::int64_t>(i));
-        const auto [f0, f1] = list.faces_of(i);
-        if ((t == CellType::polyhedron) != (f1 > f0) || (t == CellType::polyhedron && f1 - f0 < 4))
-            throw MeshError(what + " element " + std::to_string(i) + " (" + std::string(cell_type_name(t)) + ") has " +
-                                std::to_string(f1 - f0) + " faces" +
-                                (t == CellType::polyhedron ? " (a polyhedron has at least 4)" : ""),
-                            marker, static_cast<std::int64_t>(i));
-        for (std::int64_t f = f0; f < f1; ++f) {
-            const auto ring = list.face_nodes_of(f);
-            if (ring.size() < 3)
-                throw MeshError(what + " element " + std::to_string(i) + " (polyhedron) has a face of " +
-                                    std::to_string(ring.size()) + " nodes",
-                                marker, static_cast<std::int64_t>(i));
-            for (NodeId n : ring)
-                if (std::find(nodes.begin(), nodes.end(), n) == nodes.end())
-                    throw MeshError(what + " element " + std::to_string(i) + " (polyhedron): a face names node " +
-                                        std::to_string(n) + ", not one of the cell's nodes",
-                                    marker, static_cast<std::int64_t>(i));
-        }
-        if (cell_dimension(t) != expected_dim && !((expected_dim == 1 || vertices) && t == CellType::vertex))
-            throw MeshError(what + " element " + std::to_string(i) + " is a " + std::string(cell_type_name(t)) +
-                                ", expected an element of dimension " + std::to_string(expected_dim),
-                            marker, static_cast<std::int64_t>(i));
-        for (NodeId n : nodes)
-            if (n < 0 || n >= num_points)
-                throw MeshError(what + " element " + std::to_string(i) + " names node " + std::to_string(n) +
-                                    ", but the mesh has " + std::to_string(num_points) + " nodes",
-                                marker, static_cast<std::int64_t>(i));
-    }
+    // The elements on the threads, in blocks; the error of the first element
+    // that has one, as a loop in order would throw it.
+    constexpr std::int64_t block = 1 << 14;
+    const auto n = static_cast<std::int64_t>(list.size());
+    const std::int64_t blocks = (n + block - 1) / block;
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(blocks));
+    parallel_for(
+        blocks,
+        [&](std::int64_t b) {
+            try {
+                for (std::int64_t i = b * block; i < std::min(n, (b + 1) * block); ++i)
+                    check_element(list, static_cast<std::size_t>(i), num_points, expected_dim, what, marker, vertices);
+            } catch (...) {
+                errors[static_cast<std::size_t>(b)] = std::current_exception();
+            }
+        },
+        2);
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
 }
-
 
 void validate_as(const Mesh& mesh, bool point_cloud) {
     if (mesh.dim != 2 && mesh.dim != 3)

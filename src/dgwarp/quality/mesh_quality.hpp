@@ -42,6 +42,14 @@ struct QualityLayout;  // quality_layout.hpp
 std::vector<double> cell_qualities(const QualityLayout& layout, const Mesh& mesh, std::span<const double> points,
                                    std::span<const std::int8_t> orientations);
 std::vector<std::int8_t> cell_orientations(const QualityLayout& layout, const Mesh& mesh);
+/// What a run measures of the original mesh, over a layout: its cells' own
+/// orientations (cell_orientations) in `own`, the majority per cell type
+/// (dominant_orientations) in `orientation`, and the quality of every cell
+/// judged by that (cell_qualities) returned; the same values to the bit, in
+/// one pass over the simplices instead of two (their quality against +1,
+/// then signed: simplex_kernel.hpp).
+std::vector<double> original_qualities(const QualityLayout& layout, const Mesh& mesh, std::vector<std::int8_t>& own,
+                                       std::vector<std::int8_t>& orientation);
 
 struct QualityHistogram {
     std::vector<double> edges;          // bin edges, size counts.size() + 1; first bin is (-inf, 0]

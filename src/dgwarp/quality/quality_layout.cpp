@@ -93,15 +93,16 @@ std::unique_ptr<double[]> local_points(const QualityLayout& g, std::span<const d
 /// The pass over cells [first, end): the simplices (type `simplex`) a
 /// block at a time, their edge vectors laid out column by column from the
 /// local points `p` (sign from `orientations`, +1 without), through
-/// kernel(block, count, results), then done(cell, value) per simplex; any
-/// other cell by other(cell), in turn.
+/// kernel(block, count, values, alphas), then done(cell, value, alpha) per
+/// simplex (alpha: what the kernel wrote there, if anything); any other
+/// cell by other(cell), in turn.
 template <int Dim, class Kernel, class Done, class Other>
 void pass_cells(const QualityLayout& g, const ElementList& cells, const double* p,
                 std::span<const std::int8_t> orientations, std::int64_t first, std::int64_t end, Kernel&& kernel,
                 Done&& done, Other&& other) {
     constexpr CellType simplex = Dim == 3 ? CellType::tetrahedron : CellType::triangle;
     quality_detail::SimplexBlock block;
-    double value[simplex_block];
+    double value[simplex_block], alpha[simplex_block];
     std::size_t cell_of[simplex_block];
     NodeId local[simplex_block][Dim + 1];
     auto c = static_cast<std::size_t>(first);
@@ -128,8 +129,8 @@ void pass_cells(const QualityLayout& g, const ElementList& cells, const double* 
             block.sign[i] = orientations.empty() || orientations[cell_of[i]] >= 0 ? 1.0 : -1.0;
         }
         if (count == 0) continue;
-        kernel(block, count, value);
-        for (std::size_t i = 0; i < count; ++i) done(cell_of[i], value[i]);
+        kernel(block, count, value, alpha);
+        for (std::size_t i = 0; i < count; ++i) done(cell_of[i], value[i], alpha[i]);
     }
 }
 
@@ -159,8 +160,14 @@ std::vector<double> cell_qualities(const QualityLayout& layout, const Mesh& mesh
     if (!local) return cell_qualities(mesh, points, orientations);
     std::vector<double> quality(mesh.cells.size());
     layout_pass(
-        layout, mesh, local.get(), orientations, quality_detail::tetrahedron_qualities,
-        quality_detail::triangle_qualities, [&](std::size_t c, double q) { quality[c] = q; },
+        layout, mesh, local.get(), orientations,
+        [](const quality_detail::SimplexBlock& b, std::size_t n, double* q, double*) {
+            quality_detail::tetrahedron_qualities(b, n, q);
+        },
+        [](const quality_detail::SimplexBlock& b, std::size_t n, double* q, double*) {
+            quality_detail::triangle_qualities(b, n, q);
+        },
+        [&](std::size_t c, double q, double) { quality[c] = q; },
         [&](std::size_t c) {
             quality[c] = element_shape_quality(mesh.cells, c, mesh.dim, points, orientations[c]);
         });
@@ -172,12 +179,60 @@ std::vector<std::int8_t> cell_orientations(const QualityLayout& layout, const Me
     if (!local) return cell_orientations(mesh);
     std::vector<std::int8_t> orientation(mesh.cells.size());
     layout_pass(
-        layout, mesh, local.get(), {}, quality_detail::tetrahedron_alphas, quality_detail::triangle_alphas,
-        [&](std::size_t c, double alpha) { orientation[c] = static_cast<std::int8_t>(alpha < 0 ? -1 : 1); },
+        layout, mesh, local.get(), {},
+        [](const quality_detail::SimplexBlock& b, std::size_t n, double* alpha, double*) {
+            quality_detail::tetrahedron_alphas(b, n, alpha);
+        },
+        [](const quality_detail::SimplexBlock& b, std::size_t n, double* alpha, double*) {
+            quality_detail::triangle_alphas(b, n, alpha);
+        },
+        [&](std::size_t c, double alpha, double) { orientation[c] = static_cast<std::int8_t>(alpha < 0 ? -1 : 1); },
         [&](std::size_t c) {
             orientation[c] = static_cast<std::int8_t>(element_orientation(mesh.cells, c, mesh.dim, mesh.points));
         });
     return orientation;
+}
+
+std::vector<double> original_qualities(const QualityLayout& layout, const Mesh& mesh, std::vector<std::int8_t>& own,
+                                       std::vector<std::int8_t>& orientation) {
+    const std::unique_ptr<double[]> local = layout.fits(mesh) ? local_points(layout, mesh.points) : nullptr;
+    if (!local) {
+        own = cell_orientations(mesh);
+        orientation = dominant_orientations(mesh, own);
+        return cell_qualities(mesh, mesh.points, orientation);
+    }
+    // One pass: each simplex's own orientation and its quality against +1;
+    // the other cells' own orientations.
+    const std::size_t n = mesh.cells.size();
+    own.resize(n);
+    std::vector<double> quality(n);
+    layout_pass(
+        layout, mesh, local.get(), {}, quality_detail::tetrahedron_qualities_and_alphas,
+        quality_detail::triangle_qualities_and_alphas,
+        [&](std::size_t c, double q, double alpha) {
+            quality[c] = q;
+            own[c] = static_cast<std::int8_t>(alpha < 0 ? -1 : 1);
+        },
+        [&](std::size_t c) {
+            own[c] = static_cast<std::int8_t>(element_orientation(mesh.cells, c, mesh.dim, mesh.points));
+        });
+    orientation = dominant_orientations(mesh, own);
+    // Then against the orientation judged by: a simplex's quality against -1
+    // is minus its quality against +1 (0 stays +0); other cells measured again.
+    const CellType simplex = mesh.dim == 3 ? CellType::tetrahedron : CellType::triangle;
+    const auto cells = static_cast<std::int64_t>(n);
+    parallel_for(
+        (cells + pass_block - 1) / pass_block,
+        [&](std::int64_t b) {
+            for (auto c = static_cast<std::size_t>(b * pass_block); c < std::min(n, static_cast<std::size_t>((b + 1) * pass_block)); ++c) {
+                if (mesh.cells.types[c] != simplex)
+                    quality[c] = element_shape_quality(mesh.cells, c, mesh.dim, mesh.points, orientation[c]);
+                else if (orientation[c] < 0 && quality[c] != 0)
+                    quality[c] = -quality[c];
+            }
+        },
+        1);
+    return quality;
 }
 
 }  // namespace dgwarp

@@ -78,14 +78,27 @@ void cube_roots(const double* x, std::size_t count, double* root) {
 
 // No && in the loops (it keeps GCC from vectorising them): & on the comparisons.
 
-DGWARP_SIMD_CLONES
-void tetrahedron_qualities(const SimplexBlock& in, std::size_t count, double* __restrict quality) {
+namespace {
+
+// Inlined into each clone below, so that each compiles the loops for its
+// instruction set. GCC 12 then takes a[], filled for i < count, as maybe
+// uninitialised where cube_roots reads it (for i < count too): a false alarm.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+/// tetrahedron_qualities, and with Alpha each α in `alpha`.
+template <bool Alpha>
+[[gnu::always_inline]] inline void tetrahedron_pass(const SimplexBlock& in, std::size_t count, double* __restrict quality,
+                             double* __restrict alpha_out) {
     const double root2 = std::sqrt(2.0);
     double v[simplex_block], den[simplex_block], a[simplex_block], c[simplex_block];
     for (std::size_t i = 0; i < count; ++i) {
         // tetrahedron_quality: √2 × orientation × α.
         double alpha;
         tetrahedron_alpha_and_denominator(in, i, alpha, den[i]);
+        if constexpr (Alpha) alpha_out[i] = alpha;
         v[i] = root2 * in.sign[i] * alpha;
         a[i] = std::fabs(v[i]);
     }
@@ -98,17 +111,48 @@ void tetrahedron_qualities(const SimplexBlock& in, std::size_t count, double* __
     }
 }
 
-DGWARP_SIMD_CLONES
-void triangle_qualities(const SimplexBlock& in, std::size_t count, double* __restrict quality) {
+/// triangle_qualities, and with Alpha each α in `alpha`.
+template <bool Alpha>
+[[gnu::always_inline]] inline void triangle_pass(const SimplexBlock& in, std::size_t count, double* __restrict quality,
+                          double* __restrict alpha_out) {
     const double root3 = std::sqrt(3.0);
     for (std::size_t i = 0; i < count; ++i) {
         // triangle_quality on a plane: α = orientation × (a1 × a2)_z (the z terms
         // of its 3D dots add +0, which changes no value here).
         double alpha, den;
         triangle_alpha_and_denominator(in, i, alpha, den);
+        if constexpr (Alpha) alpha_out[i] = alpha;
         const double q = root3 * (in.sign[i] * alpha) / den;
         quality[i] = (den > 0) & (q != 0) ? q : 0.0;
     }
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+}  // namespace
+
+DGWARP_SIMD_CLONES
+void tetrahedron_qualities(const SimplexBlock& in, std::size_t count, double* __restrict quality) {
+    tetrahedron_pass<false>(in, count, quality, nullptr);
+}
+
+DGWARP_SIMD_CLONES
+void tetrahedron_qualities_and_alphas(const SimplexBlock& in, std::size_t count, double* __restrict quality,
+                                      double* __restrict alpha) {
+    tetrahedron_pass<true>(in, count, quality, alpha);
+}
+
+DGWARP_SIMD_CLONES
+void triangle_qualities(const SimplexBlock& in, std::size_t count, double* __restrict quality) {
+    triangle_pass<false>(in, count, quality, nullptr);
+}
+
+DGWARP_SIMD_CLONES
+void triangle_qualities_and_alphas(const SimplexBlock& in, std::size_t count, double* __restrict quality,
+                                   double* __restrict alpha) {
+    triangle_pass<true>(in, count, quality, alpha);
 }
 
 DGWARP_SIMD_CLONES

@@ -64,6 +64,15 @@ double glibc_cbrt_of_normal(double x);
 void tetrahedron_qualities(const SimplexBlock& in, std::size_t count, double* quality);
 void triangle_qualities(const SimplexBlock& in, std::size_t count, double* quality);
 
+/// The same with alpha[i] = α as below too, in the same pass. Against
+/// sign -1 a simplex's quality is minus its quality against +1, to the bit
+/// (each operation is odd in the sign: the product, |v|, the cube root of
+/// |v|, t and 3t / den; 0 stays +0), which lets one pass against +1 give
+/// both the orientation and, once the orientation judged by is known, the
+/// quality (tests/quality/quality_layout_test.cpp).
+void tetrahedron_qualities_and_alphas(const SimplexBlock& in, std::size_t count, double* quality, double* alpha);
+void triangle_qualities_and_alphas(const SimplexBlock& in, std::size_t count, double* quality, double* alpha);
+
 /// For i < count: alpha[i] = α (six times the signed volume, twice the signed
 /// area), `sign` not applied: cell_orientation is -1 where it is negative.
 void tetrahedron_alphas(const SimplexBlock& in, std::size_t count, double* alpha);

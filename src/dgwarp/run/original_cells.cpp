@@ -20,9 +20,7 @@ double lowest_valid(const std::vector<double>& quality) {
 OriginalCells measure_original(const Mesh& mesh) {
     OriginalCells o;
     o.layout = std::make_shared<const QualityLayout>(make_quality_layout(mesh));
-    o.own_orientation = cell_orientations(*o.layout, mesh);
-    o.orientation = dominant_orientations(mesh, o.own_orientation);
-    o.quality = cell_qualities(*o.layout, mesh, mesh.points, o.orientation);
+    o.quality = original_qualities(*o.layout, mesh, o.own_orientation, o.orientation);
     o.summary = summarize_quality(o.quality);
     o.valid_min = lowest_valid(o.quality);
     return o;

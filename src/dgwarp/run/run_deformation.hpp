@@ -35,6 +35,8 @@ struct Deformation {
     OriginalCells original;
     Plan plan;
     std::optional<SlidePass> slide;  // with sliding markers: their first pass (slide_pass.hpp)
+    /// original_seconds: the original's measure, done beside the prepare on
+    /// a thread of its own (run_beside), so the two overlap.
     double resolve_seconds = 0, original_seconds = 0, prepare_seconds = 0;
 };
 
