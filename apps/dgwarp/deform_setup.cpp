@@ -289,19 +289,18 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
 
 const Mesh& output_mesh(const Inputs& in) { return in.planar ? in.file_mesh : in.mesh; }
 
-void write_output_mesh(Inputs& in, const std::filesystem::path& path, std::span<const double> points,
+void write_output_mesh(Inputs& in, const std::filesystem::path& path, std::vector<double>& points,
                        const MeshFields& fields, const WriteOptions& options) {
     Mesh& mesh = in.planar ? in.file_mesh : in.mesh;
     if (points.size() != mesh.points.size())
         throw MeshError(std::to_string(points.size()) + " coordinates for an output mesh of " +
                         std::to_string(mesh.points.size()));
-    std::vector<double> swapped(points.begin(), points.end());
     struct SwapBack {
         std::vector<double>& a;
         std::vector<double>& b;
         ~SwapBack() { a.swap(b); }
-    } back{mesh.points, swapped};
-    mesh.points.swap(swapped);
+    } back{mesh.points, points};
+    mesh.points.swap(points);
     write_mesh(path, mesh, fields, options);
 }
 
@@ -309,6 +308,12 @@ std::span<const double> output_points(const Inputs& in, std::span<const double> 
     if (!in.planar) return points;
     buffer.resize(in.file_mesh.points.size());
     lift_points(*in.planar, in.file_mesh.points, points, buffer);
+    return buffer;
+}
+
+std::vector<double>& output_points(const Inputs& in, std::vector<double>& points, std::vector<double>& buffer) {
+    if (!in.planar) return points;
+    output_points(in, std::span<const double>(points), buffer);
     return buffer;
 }
 

@@ -105,15 +105,17 @@ struct Inputs {
 const Mesh& output_mesh(const Inputs& in);
 
 /// Writes output_mesh(in) with `points` (of output_mesh(in)) for its
-/// coordinates: they are swapped into the mesh for the write and back, so
-/// that a frame's output costs no copy of the cells (most of a large mesh's
-/// memory). `in` is as it was on return, also when the write throws.
-void write_output_mesh(Inputs& in, const std::filesystem::path& path, std::span<const double> points,
+/// coordinates: the array is swapped into the mesh for the write and back,
+/// so that a frame's output costs no copy of the cells nor of the points.
+/// `in` and `points` are as they were on return, also when the write throws.
+void write_output_mesh(Inputs& in, const std::filesystem::path& path, std::vector<double>& points,
                        const MeshFields& fields, const WriteOptions& options);
 
 /// `points` (of in.mesh) as points of output_mesh(in): themselves, or the 2D
 /// case's 3D points (lift_points) in `buffer`.
 std::span<const double> output_points(const Inputs& in, std::span<const double> points, std::vector<double>& buffer);
+/// The same for an array: `points` itself, or `buffer`.
+std::vector<double>& output_points(const Inputs& in, std::vector<double>& points, std::vector<double>& buffer);
 
 /// Reads the motion file, calls `check_outputs` with it when given (so that
 /// outputs are checked before the long work: their names may depend on its

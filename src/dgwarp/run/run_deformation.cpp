@@ -89,7 +89,8 @@ RunReport run_frames(const RunContext& ctx, const RunOptions& options, const Run
         run.frames.push_back(report);
         const bool go_on =
             !callbacks.frame_done ||
-            callbacks.frame_done(FrameView{k, frame_time(ctx.spec, k), motion, points, run.frames.back(), cells});
+            callbacks.frame_done(
+                FrameView{k, frame_time(ctx.spec, k), motion, points, run.frames.back(), cells, points});
         if (!go_on || (!valid && options.stop_at_invalid)) break;
     }
     return run;

@@ -87,6 +87,10 @@ struct FrameView {
     std::span<const double> points;    // its coordinates, num_points × dim
     const FrameReport& report;
     const FrameCells& cells;
+    /// The array `points` views, lent to the call: it may swap it out and
+    /// back (e.g. into a Mesh, to write the frame without a copy of its
+    /// coordinates) as long as it holds the same values when it returns.
+    std::vector<double>& points_array;
 };
 
 struct RunCallbacks {
