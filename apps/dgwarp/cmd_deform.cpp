@@ -1,6 +1,4 @@
 // dgwarp deform MESH --motion M.json -o OUT: move the mesh with its boundary.
-#include <malloc.h>
-
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -262,12 +260,6 @@ void run_deform(const DeformArgs& given) {
     std::vector<MethodRun> runs(methods.size());
     std::vector<char> planned(methods.size(), 0);
     measure_beside(in, [&] { planned[0] = plan_run(in, methods[0], a, several, progress, runs[0]); });
-#ifdef __GLIBC__
-    // The prepare's temporaries (the triangulation, the k-d trees: many
-    // small blocks) are free but stay in malloc's heap: given back, 10 MB
-    // less at the peak that comes with the frame's arrays.
-    malloc_trim(0);
-#endif
     WarningPrinter warnings(text);
     if (text) print_inputs(std::cout, in, frames, warnings);
     // A decomposed case in its usual layout: which mesh this run reads and writes.

@@ -69,6 +69,9 @@ TEST(LargeBlocks, ALargeArrayIsAlignedAdvisedAndHoldsItsValues) {
     v.resize(5'000'000);  // a larger block, the values copied over
     EXPECT_EQ(v[2'999'999], 2'999'999.5);
     EXPECT_EQ(address(v.data()) % huge_page, 0u);
+    // From 2 MiB on: an array of one id per node of a large mesh.
+    std::vector<std::int32_t> ids(std::size_t{1} << 19);
+    EXPECT_EQ(address(ids.data()) % huge_page, 0u);
 }
 
 TEST(LargeBlocks, SmallBlocksComeFromMallocAndEveryDeleteFitsItsNew) {
