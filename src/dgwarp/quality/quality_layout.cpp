@@ -102,7 +102,7 @@ void pass_cells(const QualityLayout& g, const ElementList& cells, const double* 
                 Done&& done, Other&& other) {
     constexpr CellType simplex = Dim == 3 ? CellType::tetrahedron : CellType::triangle;
     quality_detail::SimplexBlock block;
-    double value[simplex_block], alpha[simplex_block];
+    double value[simplex_block], alpha[simplex_block] = {};  // alpha: only some kernels write it
     std::size_t cell_of[simplex_block];
     NodeId local[simplex_block][Dim + 1];
     auto c = static_cast<std::size_t>(first);
