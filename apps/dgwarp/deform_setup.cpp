@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/marker_names.hpp"
@@ -332,15 +331,7 @@ void warn_already_inverted(Inputs& in) {
 }
 
 void measure_beside(Inputs& in, const std::function<void()>& work) {
-    OriginalCells original;
-    double seconds = 0;
-    run_beside(work, [&] {
-        Stopwatch sw;
-        original = measure_original(in.mesh);
-        seconds = sw.lap();
-    });
-    in.original = std::move(original);
-    in.quality_seconds = seconds;
+    in.original = measure_original_beside(in.mesh, work, &in.quality_seconds);
     warn_already_inverted(in);
 }
 

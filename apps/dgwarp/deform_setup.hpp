@@ -127,7 +127,7 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
 
 /// Calls work() (a method's prepare: mostly serial) with the original
 /// mesh's orientation and quality measured beside it on a thread of its own
-/// (run_beside), then keeps them in `in` (in.original, in.quality_seconds: the
+/// (measure_original_beside), then keeps them in `in` (in.original, in.quality_seconds: the
 /// measure's own time, which overlaps work's) with warn_already_inverted's
 /// warning. work() must not read in.original nor in.boundary.warnings.
 void measure_beside(Inputs& in, const std::function<void()>& work);

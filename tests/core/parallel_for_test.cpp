@@ -155,23 +155,35 @@ TEST(ParallelFor, RunConcurrentlyUsesTwoThreadsAndOneWhenThatIsAll) {
     }
 }
 
+namespace {
+
+/// `run(a, b)` (run_concurrently, run_beside) finishes b when a throws,
+/// rethrows a's error first, and b's when only b throws.
+template <class Run>
+void expect_both_run_and_the_first_error_is_rethrown(Run&& run, int threads) {
+    bool b_done = false;
+    try {
+        run([] { throw std::runtime_error("a"); },
+            [&] {
+                b_done = true;
+                throw std::logic_error("b");
+            });
+        ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "a");
+    }
+    EXPECT_TRUE(b_done) << threads << " thread(s)";
+    EXPECT_THROW(run([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+}
+
+}  // namespace
+
 TEST(ParallelFor, RunConcurrentlyFinishesBothAndRethrowsTheFirstTasksError) {
     ThreadCount keep;
     for (int threads : {1, 2}) {
         set_num_threads(threads);
-        bool b_done = false;
-        try {
-            run_concurrently([] { throw std::runtime_error("a"); },
-                             [&] {
-                                 b_done = true;
-                                 throw std::logic_error("b");
-                             });
-            ADD_FAILURE() << "no exception";
-        } catch (const std::runtime_error& e) {
-            EXPECT_STREQ(e.what(), "a");
-        }
-        EXPECT_TRUE(b_done) << threads << " thread(s)";
-        EXPECT_THROW(run_concurrently([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+        expect_both_run_and_the_first_error_is_rethrown(
+            [](auto&& a, auto&& b) { run_concurrently(a, b); }, threads);
     }
 }
 
@@ -204,18 +216,6 @@ TEST(ParallelFor, RunBesideKeepsEveryThreadHereAndOneBesideAndRethrowsTheFirstTa
         if (threads == 1) EXPECT_EQ(b_id, here);
         else EXPECT_NE(b_id, here);
         EXPECT_EQ(num_threads(), threads);  // the setting here is as it was
-        bool b_done = false;
-        try {
-            run_beside([] { throw std::runtime_error("a"); },
-                       [&] {
-                           b_done = true;
-                           throw std::logic_error("b");
-                       });
-            ADD_FAILURE() << "no exception";
-        } catch (const std::runtime_error& e) {
-            EXPECT_STREQ(e.what(), "a");
-        }
-        EXPECT_TRUE(b_done);
-        EXPECT_THROW(run_beside([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+        expect_both_run_and_the_first_error_is_rethrown([](auto&& a, auto&& b) { run_beside(a, b); }, threads);
     }
 }

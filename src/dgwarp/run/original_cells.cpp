@@ -4,6 +4,8 @@
 #include <utility>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/parallel_for.hpp"
+#include "dgwarp/core/stopwatch.hpp"
 
 namespace dgwarp {
 
@@ -23,6 +25,16 @@ OriginalCells measure_original(const Mesh& mesh) {
     o.quality = original_qualities(*o.layout, mesh, o.own_orientation, o.orientation);
     o.summary = summarize_quality(o.quality);
     o.valid_min = lowest_valid(o.quality);
+    return o;
+}
+
+OriginalCells measure_original_beside(const Mesh& mesh, const std::function<void()>& work, double* seconds) {
+    OriginalCells o;
+    run_beside(work, [&] {
+        Stopwatch sw;
+        o = measure_original(mesh);
+        if (seconds) *seconds = sw.lap();
+    });
     return o;
 }
 

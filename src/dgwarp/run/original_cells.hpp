@@ -3,6 +3,7 @@
 // measured once. A cell flipped in the input counts as inverted before and
 // after (reported as already inverted, never as the motion's doing).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -28,6 +29,13 @@ struct OriginalCells {
 
 /// The original cells of `mesh`, judged by the majority orientation of each cell type. Threaded.
 OriginalCells measure_original(const Mesh& mesh);
+
+/// work() on this thread with every thread for its loops, and
+/// measure_original(mesh) beside it on a thread of its own (run_beside,
+/// core/parallel_for.hpp): for a prepare, mostly serial, whose idle core the
+/// measure fills. `seconds`, when given, receives the measure's own time
+/// (which overlaps work's). work() must not change `mesh`.
+OriginalCells measure_original_beside(const Mesh& mesh, const std::function<void()>& work, double* seconds = nullptr);
 
 /// The same from the cells' own orientations (cell_orientations(mesh)),
 /// judged by `orientation` (e.g. the majority over every process's part of a

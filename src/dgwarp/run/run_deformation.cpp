@@ -2,7 +2,6 @@
 
 #include <utility>
 
-#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
 
@@ -36,17 +35,14 @@ Deformation prepare_deformation(const Mesh& mesh, const MotionSpec& spec, Method
     d.resolve_seconds = sw.lap();
     // The original's measure beside the prepare (mostly serial: a
     // triangulation, a factorisation), on a thread of its own.
-    run_beside(
+    d.original = measure_original_beside(
+        mesh,
         [&] {
             d.plan = prepare_for_frames(method, mesh, d.boundary.boundary, options, progress);
             if (!d.boundary.slides.empty()) d.slide = prepare_slide_pass(mesh, d.boundary, options);
             d.prepare_seconds = sw.lap();
         },
-        [&] {
-            Stopwatch measure;
-            d.original = measure_original(mesh);
-            d.original_seconds = measure.lap();
-        });
+        &d.original_seconds);
     return d;
 }
 
