@@ -78,6 +78,61 @@ TEST(RecordLines, ChunksCoverTheRecordsWithTheirLineNumbers) {
     EXPECT_FALSE(split_record_lines(short_reader, 12, SkippedLines{'%'}, 4));
 }
 
+TEST(RecordLines, ALargeBlockSplitOnThreadsCoversItsRecordsWithTheirLineNumbers) {
+    // 150,000 records (about 2 MB: split in byte ranges on the threads), then
+    // TAIL; with and without a last line end, and with too few records.
+    const int n = 150000;
+    std::string text = records_text(n);
+    std::vector<std::size_t> line_of(n);
+    {
+        TextReader walk("t.txt", text);
+        walk.next_line();
+        for (int i = 0; i < n;) {
+            ASSERT_TRUE(walk.next_line());
+            if (!skipped_line(walk.line(), SkippedLines{'%'})) line_of[static_cast<std::size_t>(i++)] = walk.line_number();
+        }
+    }
+    const int before = num_threads();
+    for (int threads : {1, 2, 3, 7}) {
+        set_num_threads(threads);
+        for (const std::string& t : {text, text.substr(0, text.size() - 6)}) {  // TAIL\n, or the last record without '\n'
+            TextReader r("t.txt", t);
+            ASSERT_TRUE(r.next_line());
+            const auto block = split_record_lines(r, n, SkippedLines{'%'}, 1000);
+            ASSERT_TRUE(block) << threads;
+            if (threads > 1) {
+                EXPECT_GT(block->chunks.size(), 20u);  // not one chunk per thread
+            }
+            std::int64_t seen = 0;
+            for (const RecordChunk& c : block->chunks) {
+                ASSERT_EQ(c.first, seen);
+                EXPECT_GT(c.count, 0);
+                EXPECT_TRUE(for_each_record_line(
+                    r.content(), c, SkippedLines{'%'}, [&](std::string_view line, std::int64_t record, std::size_t number) {
+                        EXPECT_EQ(record, seen);
+                        EXPECT_EQ(line, std::to_string(record) + " " + std::to_string(2 * record));
+                        EXPECT_EQ(number, line_of[static_cast<std::size_t>(record)]);
+                        ++seen;
+                        return true;
+                    }));
+            }
+            ASSERT_EQ(seen, n) << threads;
+            EXPECT_EQ(block->last_line, line_of.back());
+            r.seek(block->end, block->last_line);
+            EXPECT_EQ(r.line(), std::to_string(n - 1) + " " + std::to_string(2 * (n - 1)));
+            EXPECT_EQ(r.next_nonblank_line(), t.size() == text.size()) << threads;
+        }
+        // One record more than the content holds.
+        TextReader short_reader("t.txt", text);
+        short_reader.next_line();
+        EXPECT_FALSE(split_record_lines(short_reader, n + 2, SkippedLines{'%'}, 1000)) << threads;  // TAIL is one
+        TextReader exact("t.txt", text);
+        exact.next_line();
+        EXPECT_TRUE(split_record_lines(exact, n + 1, SkippedLines{'%'}, 1000)) << threads;
+    }
+    set_num_threads(before);
+}
+
 namespace {
 
 // A 2D SU2 strip of 2 × n quadrilaterals (3 × (n + 1) points), with blank and

@@ -1,43 +1,125 @@
-// record_lines.hpp: the serial pass that finds a block's record lines.
+// record_lines.hpp: the pass that finds a block's record lines, and the joins of parsed parts.
 #include "dgwarp/io/record_lines.hpp"
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 #include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp {
 
-std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t count, SkippedLines skip,
-                                              std::int64_t per_chunk) {
-    const std::string_view content = r.content();
-    RecordBlock block;
-    std::size_t pos = r.position();
-    std::size_t line_number = r.line_number();
-    std::int64_t records = 0;
-    RecordChunk chunk{pos, pos, 0, 0, line_number + 1};
-    while (records < count) {
-        if (pos >= content.size()) return std::nullopt;
-        const void* found = std::memchr(content.data() + pos, '\n', content.size() - pos);
-        const std::size_t nl = found ? static_cast<std::size_t>(static_cast<const char*>(found) - content.data())
-                                     : content.size();
-        ++line_number;
+namespace {
+
+/// What a scan of whole lines found.
+struct LineScan {
+    std::size_t lines = 0;         // lines passed (records and skipped ones)
+    std::int64_t records = 0;      // record lines among them
+    std::size_t after_record = 0;  // byte offset just past the last record line (and its '\n')
+    std::size_t record_line = 0;   // lines passed up to and including the last record line
+};
+
+/// Scans the lines from `begin` (a line start) to `end` (a line start, or
+/// the content's end), stopping after `max_records` record lines.
+LineScan scan_lines(std::string_view content, std::size_t begin, std::size_t end, SkippedLines skip,
+                    std::int64_t max_records) {
+    LineScan s;
+    s.after_record = begin;
+    std::size_t pos = begin;
+    while (pos < end && s.records < max_records) {
+        const void* found = std::memchr(content.data() + pos, '\n', end - pos);
+        const std::size_t nl = found ? static_cast<std::size_t>(static_cast<const char*>(found) - content.data()) : end;
+        ++s.lines;
         std::string_view line = content.substr(pos, nl - pos);
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         pos = nl + 1;
         if (skipped_line(line, skip)) continue;
-        ++records;
-        ++chunk.count;
+        ++s.records;
+        s.after_record = std::min(pos, content.size());
+        s.record_line = s.lines;
+    }
+    return s;
+}
+
+/// One chunk of `per_chunk` records after another, on this thread.
+std::optional<RecordBlock> split_serially(std::string_view content, std::size_t pos, std::size_t line_number,
+                                          std::int64_t count, SkippedLines skip, std::int64_t per_chunk) {
+    RecordBlock block;
+    block.end = pos;
+    block.last_line = line_number;
+    for (std::int64_t records = 0; records < count;) {
+        const std::int64_t wanted = std::min(per_chunk, count - records);
+        const LineScan s = scan_lines(content, pos, content.size(), skip, wanted);
+        if (s.records < wanted) return std::nullopt;
+        block.chunks.push_back({pos, s.after_record, records, s.records, line_number + 1});
+        records += s.records;
+        line_number += s.record_line;
+        pos = s.after_record;
+        block.end = pos;
         block.last_line = line_number;
-        if (chunk.count == per_chunk || records == count) {
-            chunk.end = std::min(pos, content.size());
-            block.chunks.push_back(chunk);
-            chunk = RecordChunk{chunk.end, chunk.end, records, 0, line_number + 1};
+    }
+    return block;
+}
+
+}  // namespace
+
+// Large blocks are cut in byte ranges of whole lines, scanned on the threads
+// a wave at a time (their lines and records counted), and the counts summed
+// in order: a chunk per range, of about per_chunk records (the 5.3M cells of
+// the 865k-node sphere: 0.19 s on one thread). The wave that holds the
+// block's last record is scanned past it by at most a wave of ranges.
+std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t count, SkippedLines skip,
+                                              std::int64_t per_chunk) {
+    const std::string_view content = r.content();
+    const std::size_t start = r.position();
+    std::size_t lines = r.line_number();
+    per_chunk = std::max<std::int64_t>(per_chunk, 1);
+    // Bytes per record, from the first lines.
+    const LineScan sample = scan_lines(content, start, content.size(), skip, std::min<std::int64_t>(count, 64));
+    const double record_bytes =
+        sample.records > 0 ? static_cast<double>(sample.after_record - start) / static_cast<double>(sample.records) : 0;
+    const int threads = num_threads();
+    if (threads == 1 || count <= 2 * per_chunk || record_bytes * static_cast<double>(count) < (1 << 20))
+        return split_serially(content, start, lines, count, skip, per_chunk);
+    const auto range = std::max<std::size_t>(4096, static_cast<std::size_t>(record_bytes * static_cast<double>(per_chunk)));
+    const std::size_t wave = 8 * static_cast<std::size_t>(threads);
+    std::vector<std::size_t> starts(wave + 1);
+    std::vector<LineScan> scans(wave);
+    RecordBlock block;
+    std::int64_t records = 0;
+    for (std::size_t at = start; at < content.size(); at = starts[wave]) {
+        // Range k: the lines that start in [at + k * range, at + (k + 1) * range).
+        starts[0] = at;
+        for (std::size_t k = 1; k <= wave; ++k) {
+            const std::size_t nominal = at + k * range;
+            std::size_t s = content.size();
+            if (nominal < content.size()) {
+                const void* found = std::memchr(content.data() + nominal - 1, '\n', content.size() - (nominal - 1));
+                if (found) s = static_cast<std::size_t>(static_cast<const char*>(found) - content.data()) + 1;
+            }
+            starts[k] = std::max(s, starts[k - 1]);
+        }
+        parallel_for(
+            static_cast<std::int64_t>(wave),
+            [&](std::int64_t k) {
+                scans[k] = scan_lines(content, starts[k], starts[k + 1], skip, std::numeric_limits<std::int64_t>::max());
+            },
+            1);
+        for (std::size_t k = 0; k < wave; ++k) {
+            LineScan s = scans[k];
+            const bool last = records + s.records >= count;
+            if (last) s = scan_lines(content, starts[k], starts[k + 1], skip, count - records);
+            if (s.records > 0) block.chunks.push_back({starts[k], s.after_record, records, s.records, lines + 1});
+            if (last) {
+                block.end = s.after_record;
+                block.last_line = lines + s.record_line;
+                return block;
+            }
+            records += s.records;
+            lines += s.lines;
         }
     }
-    block.end = std::min(pos, content.size());
-    if (count == 0) block.last_line = r.line_number();
-    return block;
+    return std::nullopt;
 }
 
 ElementListSizes sizes_of(const ElementList& list) {

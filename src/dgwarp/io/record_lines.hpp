@@ -1,11 +1,12 @@
 #pragma once
 // Blocks of records, one per line, parsed on several threads (issue #33): a
-// serial pass finds the lines of the block (cheap: a search for '\n' per
-// line) and cuts them into chunks; the chunks are then parsed in parallel
-// by the format's reader. The fast path only ever accepts valid records: a
-// reader that meets anything else in a chunk goes back (TextReader::seek)
-// and reads the block with its line-by-line code, whose errors name the
-// line, so error messages do not depend on this path.
+// pass finds the lines of the block (a search for '\n' per line; a large
+// block's byte ranges on the threads) and cuts them into chunks; the chunks
+// are then parsed in parallel by the format's reader. The fast path only
+// ever accepts valid records: a reader that meets anything else in a chunk
+// goes back (TextReader::seek) and reads the block with its line-by-line
+// code, whose errors name the line, so error messages do not depend on this
+// path.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -40,8 +41,10 @@ struct SkippedLines {
 };
 
 /// The `count` record lines that follow the reader's current line, in
-/// chunks of about `per_chunk` records; nullopt when the content ends first
-/// (the line-by-line code then says which record is missing).
+/// chunks of `per_chunk` records (a block of a MB or more on several
+/// threads: chunks of whole byte ranges, about `per_chunk` records each);
+/// nullopt when the content ends first (the line-by-line code then says
+/// which record is missing).
 std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t count, SkippedLines skip,
                                               std::int64_t per_chunk = 1 << 12);
 
