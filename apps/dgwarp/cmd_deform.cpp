@@ -1,4 +1,6 @@
 // dgwarp deform MESH --motion M.json -o OUT: move the mesh with its boundary.
+#include <malloc.h>
+
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -260,6 +262,13 @@ void run_deform(const DeformArgs& given) {
     std::vector<MethodRun> runs(methods.size());
     std::vector<char> planned(methods.size(), 0);
     measure_beside(in, [&] { planned[0] = plan_run(in, methods[0], a, several, progress, runs[0]); });
+#ifdef __GLIBC__
+    // The prepare's freed temporaries (the triangulation, the k-d trees,
+    // the factorisation's work arrays: blocks under 2 MiB, and Eigen's from
+    // malloc) stay in malloc's heaps, scattered among live blocks: given
+    // back, deform's peak at 865k nodes (with the frame's arrays) 421 -> 393 MB.
+    malloc_trim(0);
+#endif
     WarningPrinter warnings(text);
     if (text) print_inputs(std::cout, in, frames, warnings);
     // A decomposed case in its usual layout: which mesh this run reads and writes.

@@ -282,6 +282,41 @@ TEST(GraphLocate, MortonAndGivenOrderAgreeAndThreadCountDoesNotMatter) {
     }
 }
 
+TEST(GraphLocate, WorkBesideTheLocationSeesTheWholeGraphOnceAndItsErrorIsRethrown) {
+    for (int dim : {2, 3}) {
+        const PointSet s = make_set(dim, concat(box_corners(dim), random_points(dim, 300, 5)),
+                                    random_points(dim, 20000, 6));
+        const int threads = num_threads();
+        for (int t : {1, 2, 3}) {
+            set_num_threads(t);
+            const LocatedGraph plain = build_located_graph(dim, s.points, s.boundary, s.volume);
+            GraphOptions options;
+            int calls = 0;
+            DelaunayGraph seen;
+            options.beside_locate = [&](const DelaunayGraph& g) {
+                ++calls;
+                seen = g;
+            };
+            const LocatedGraph with = build_located_graph(dim, s.points, s.boundary, s.volume, options);
+            EXPECT_EQ(calls, 1);
+            EXPECT_EQ(seen.dim, dim);
+            EXPECT_EQ(seen.simplices, plain.graph.simplices);
+            EXPECT_EQ(seen.vertex_offsets, plain.graph.vertex_offsets);
+            EXPECT_EQ(seen.vertex_nodes, plain.graph.vertex_nodes);
+            EXPECT_EQ(with.graph.simplices, plain.graph.simplices);  // handed back after the call
+            EXPECT_EQ(with.location.simplex, plain.location.simplex);
+            options.beside_locate = [](const DelaunayGraph&) { throw MeshError("beside"); };
+            try {
+                build_located_graph(dim, s.points, s.boundary, s.volume, options);
+                ADD_FAILURE() << "no error";
+            } catch (const MeshError& e) {
+                EXPECT_STREQ(e.what(), "beside");
+            }
+        }
+        set_num_threads(threads);
+    }
+}
+
 TEST(GraphLocate, NodesOnFacesAndOutsideTheHullGetTheSameSimplexWhateverTheOtherQueries) {
     // A grid boundary (degenerate Delaunay: many choices of simplices) with
     // queries on its vertices, grid lines and cell centres, and queries

@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/graph/nearest_node.hpp"
 #include "dgwarp/methods/coarse_points.hpp"
 #include "dgwarp/methods/nearest_boundary_cells.hpp"
@@ -152,4 +153,23 @@ TEST(CoarseWants, ANodesWantIsTheSameInAnySubsetOfTheVolumeNodes) {
             }
         EXPECT_EQ(coarse_wants(3, m.points, m.boundary.nodes, mine, spacing).want, expected) << part;
     }
+}
+
+TEST(CoarseWants, WantsAndCoarsePointsDoNotDependOnTheThreadCount) {
+    // 27.6k volume nodes: runs of at least 4096 nodes on up to 6 threads, each
+    // with cells of its own, and their winners merged.
+    const test::BoxInBox m = test::jittered(test::box_in_box(3, 32), 0.2 / 32, 5);
+    ASSERT_GT(m.volume.size(), 6u * parallel_grain);
+    const CoarseSpacing spacing{2.0, 0.5};
+    const int before = num_threads();
+    set_num_threads(1);
+    const CoarseWants one = coarse_wants(3, m.points, m.boundary.nodes, m.volume, spacing);
+    const std::vector<NodeId> coarse_one = select_coarse_points(3, m.points, m.boundary.nodes, m.volume, spacing);
+    ASSERT_GT(coarse_one.size(), 50u);
+    for (int threads : {2, 3, 7}) {
+        set_num_threads(threads);
+        EXPECT_EQ(coarse_wants(3, m.points, m.boundary.nodes, m.volume, spacing).want, one.want) << threads;
+        EXPECT_EQ(select_coarse_points(3, m.points, m.boundary.nodes, m.volume, spacing), coarse_one) << threads;
+    }
+    set_num_threads(before);
 }

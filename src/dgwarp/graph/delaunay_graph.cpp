@@ -95,9 +95,23 @@ LocatedGraph build_located_graph(int dim, std::span<const double> points,
     };
     if (progress) progress(0.0);
     const ProgressFn locate_progress = progress_part(progress, graph_progress_share, 1.0);
+    detail::BesideLocateFn beside_locate;
+    if (options.beside_locate)
+        beside_locate = [&](std::vector<std::int32_t>& simplices) {
+            out.graph.simplices.swap(simplices);  // the graph whole for the call, the simplices back after it
+            try {
+                options.beside_locate(out.graph);
+            } catch (...) {
+                out.graph.simplices.swap(simplices);
+                throw;
+            }
+            out.graph.simplices.swap(simplices);
+        };
     detail::TriangulationResult tri =
-        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, visit_order, locate_progress)
-                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, visit_order, locate_progress);
+        dim == 2 ? detail::triangulate_and_locate_2d(points, vertex_node, query_nodes, visit_order, locate_progress,
+                                                     beside_locate)
+                 : detail::triangulate_and_locate_3d(points, vertex_node, query_nodes, visit_order, locate_progress,
+                                                     beside_locate);
     out.graph.simplices = std::move(tri.simplices);
     out.location = std::move(tri.location);
     out.timings = tri.timings;

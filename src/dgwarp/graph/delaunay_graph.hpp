@@ -93,6 +93,12 @@ struct GraphOptions {
     /// order; its time counts in GraphTimings::locate_seconds when it
     /// outlasts the build. Must not call progress.
     std::function<void()> beside_build = {};
+    /// Work of the caller's that needs the graph but not the location
+    /// (DG-harmonic's coarse factorisation): called with the whole graph on
+    /// the calling thread, with every thread for its loops, while the
+    /// location runs beside it on a thread of its own (run_beside: with one
+    /// thread, this work first). Must not call progress.
+    std::function<void(const DelaunayGraph&)> beside_locate = {};
 };
 
 /// Whether visiting `nodes` (ids into `points`, num_points × dim) in the

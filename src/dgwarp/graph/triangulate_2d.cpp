@@ -61,8 +61,9 @@ struct Plane {
 TriangulationResult triangulate_and_locate_2d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              const VisitOrderFn& visit_order, const ProgressFn& locate_progress) {
-    return triangulate_and_locate<Plane>(points, vertex_node, query_nodes, visit_order, locate_progress);
+                                              const VisitOrderFn& visit_order, const ProgressFn& locate_progress,
+                                              const BesideLocateFn& beside_locate) {
+    return triangulate_and_locate<Plane>(points, vertex_node, query_nodes, visit_order, locate_progress, beside_locate);
 }
 
 }  // namespace dgwarp::detail

@@ -69,8 +69,9 @@ struct Space {
 TriangulationResult triangulate_and_locate_3d(std::span<const double> points,
                                               std::span<const NodeId> vertex_node,
                                               std::span<const NodeId> query_nodes,
-                                              const VisitOrderFn& visit_order, const ProgressFn& locate_progress) {
-    return triangulate_and_locate<Space>(points, vertex_node, query_nodes, visit_order, locate_progress);
+                                              const VisitOrderFn& visit_order, const ProgressFn& locate_progress,
+                                              const BesideLocateFn& beside_locate) {
+    return triangulate_and_locate<Space>(points, vertex_node, query_nodes, visit_order, locate_progress, beside_locate);
 }
 
 }  // namespace dgwarp::detail

@@ -233,7 +233,7 @@ template <class Dim>
 TriangulationResult triangulate_and_locate(std::span<const double> points, std::span<const NodeId> vertex_node,
                                            std::span<const NodeId> query_nodes,
                                            const VisitOrderFn& visit_order,
-                                           const ProgressFn& locate_progress) {
+                                           const ProgressFn& locate_progress, const BesideLocateFn& beside_locate) {
     using Delaunay = typename Dim::Delaunay;
     using Point = typename Dim::Point;
     using Handle = typename Dim::Handle;
@@ -283,7 +283,7 @@ TriangulationResult triangulate_and_locate(std::span<const double> points, std::
     const std::int64_t blocks = (n + locate_block_size - 1) / locate_block_size;
     std::vector<std::int64_t> outside(static_cast<std::size_t>(blocks), 0);
     ProgressCounter located(locate_progress, n);
-    parallel_for(blocks, [&](std::int64_t b) {
+    const auto locate = [&] { parallel_for(blocks, [&](std::int64_t b) {
         Handle hint;
         std::vector<Handle> scratch, seen;
         const std::int64_t end = std::min(n, (b + 1) * locate_block_size);
@@ -297,10 +297,21 @@ TriangulationResult triangulate_and_locate(std::span<const double> points, std::
             hint = s;
         }
         located.add(end - b * locate_block_size);
-    }, 1);  // each index is a block of thousands of walks: always worth a thread
+    }, 1); };  // each index is a block of thousands of walks: always worth a thread
+    double locate_seconds = 0;  // the location's own: not the wait for beside_locate
+    const auto timed_locate = [&] {
+        locate();
+        locate_seconds = seconds_since(t1);
+    };
+    // The caller's work (DG-harmonic's factorisation: serial) on this thread,
+    // the location beside it on a thread of its own: on two cores, one each.
+    if (beside_locate)
+        run_beside([&] { beside_locate(result.simplices); }, timed_locate);
+    else
+        timed_locate();
     located.finish();
     result.location.outside_count = std::accumulate(outside.begin(), outside.end(), std::int64_t{0});
-    result.timings.locate_seconds = beside_seconds + seconds_since(t1);
+    result.timings.locate_seconds = beside_seconds + locate_seconds;
     return result;
 }
 

@@ -107,7 +107,7 @@ double rigid_factor(const DgHarmonicOptions& o, double dm, double ds, double mov
 // for the rotation, the rigid-zone factor at its centroid; negative sums
 // (possible on 3D slivers) are set to 0, so that the matrix keeps the
 // discrete maximum principle.
-void edge_weights(const DgHarmonicPlan& plan, const UnknownEdges& edges,
+void edge_weights(const DgHarmonicPlan& plan, std::span<const std::int32_t> simplices, const UnknownEdges& edges,
                   std::span<const double> vertex_xyz, const WallDistances& wall, double moving_diagonal,
                   std::vector<double>& translation, std::vector<double>& rotation) {
     const int dim = plan.dim, corners = dim + 1;
@@ -115,8 +115,8 @@ void edge_weights(const DgHarmonicPlan& plan, const UnknownEdges& edges,
     const std::int32_t nb = plan.num_boundary_vertices;
     translation.assign(edges.list.size(), 0.0);
     rotation.assign(edges.list.size(), 0.0);
-    for (std::size_t s = 0; s < plan.simplices.size(); s += corners) {
-        const std::int32_t* c = plan.simplices.data() + s;
+    for (std::size_t s = 0; s < simplices.size(); s += corners) {
+        const std::int32_t* c = simplices.data() + s;
         bool has_unknown = false;
         for (int k = 0; k < corners; ++k) has_unknown |= c[k] >= nb;
         if (!has_unknown) continue;
@@ -278,63 +278,69 @@ DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> po
     // index, so the boundary vertices come first.
     std::vector<NodeId> graph_nodes(boundary.nodes);
     graph_nodes.insert(graph_nodes.end(), coarse.begin(), coarse.end());
-    LocatedGraph lg = build_located_graph(dim, points, graph_nodes, volume, {LocateOrder::automatic, volume_morton},
-                                          progress_part(progress, 0.1, 0.8));
+    // What needs the graph but not the location (the vertices' motion, the
+    // coarse Laplacian's weights and factors), beside the location.
+    std::vector<NodeId> vertex_node;
+    const auto on_graph = [&](const DelaunayGraph& g) {
+        const auto t = Clock::now();
+        std::vector<std::uint8_t> moving(boundary.moving);
+        moving.resize(graph_nodes.size(), 0);
+        GraphVertexMotion vm = graph_vertex_motion(g, moving);
+        const auto nb_index = static_cast<std::int32_t>(boundary.nodes.size());
+        plan.num_boundary_vertices = 0;
+        while (static_cast<std::size_t>(plan.num_boundary_vertices) < g.num_vertices() &&
+               g.vertex_nodes[g.vertex_offsets[plan.num_boundary_vertices]] < nb_index)
+            ++plan.num_boundary_vertices;
+        plan.vertex_motion = std::move(vm.vertex_motion);
+        // Shared groups of boundary points only: two coarse volume nodes at the
+        // same coordinates are one interior vertex and have no motion to share.
+        for (std::size_t grp = 0; grp + 1 < vm.shared_offsets.size(); ++grp) {
+            const std::int32_t first = vm.shared_members[vm.shared_offsets[grp]];
+            if (first >= nb_index) continue;
+            for (std::int32_t k = vm.shared_offsets[grp]; k < vm.shared_offsets[grp + 1]; ++k)
+                if (vm.shared_members[k] < nb_index) plan.shared_members.push_back(vm.shared_members[k]);
+            plan.shared_offsets.push_back(static_cast<std::int32_t>(plan.shared_members.size()));
+        }
+        plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
+        plan.stats.graph_vertices = static_cast<std::int64_t>(g.num_vertices());
+        plan.stats.coarse_interior = plan.num_vertices() - plan.num_boundary_vertices;
+        vertex_node.resize(g.num_vertices());
+        for (std::size_t v = 0; v < vertex_node.size(); ++v)
+            vertex_node[v] = graph_nodes[g.vertex_nodes[g.vertex_offsets[v]]];
+        const std::vector<double> vertex_xyz = gather_points(dim, points, vertex_node);
+        if (plan.num_vertices() > plan.num_boundary_vertices) {
+            const UnknownEdges edges =
+                unknown_edges(dim, g.simplices, plan.num_boundary_vertices, static_cast<std::size_t>(plan.num_vertices()));
+            // Without a rigid zone (the 3D default) the distances would weigh
+            // nothing: skip their queries (exact nearest-node queries far from a
+            // sphere's nodes are slow: 0.2 s of prepare at 202k nodes).
+            const WallDistances wall = plan.options.rigid_zone > 0 ? wall_distances(dim, points, boundary, vertex_node)
+                                                                   : WallDistances{};
+            std::vector<double> wt, wr;
+            edge_weights(plan, g.simplices, edges, vertex_xyz, wall, boundary_diagonal(dim, points, boundary, true), wt,
+                         wr);
+            const auto n = static_cast<std::int32_t>(plan.num_vertices() - plan.num_boundary_vertices);
+            plan.solve = factorise_coarse_laplacian(edges.list, wt, wr, plan.num_boundary_vertices, n,
+                                                    &plan.stats.floored_weights);
+            plan.stats.factor_nonzeros = static_cast<std::int64_t>(plan.solve.l_row.size());
+        }
+        plan.stats.factor_seconds = seconds_since(t);
+    };
+    GraphOptions graph_options{LocateOrder::automatic, volume_morton};
+    graph_options.beside_locate = on_graph;
+    LocatedGraph lg = build_located_graph(dim, points, graph_nodes, volume, graph_options, progress_part(progress, 0.1, 0.8));
     plan.stats.graph_seconds = lg.timings.triangulate_seconds;
     plan.stats.locate_seconds = lg.timings.locate_seconds;
     plan.stats.outside_count = lg.location.outside_count;
 
     t0 = Clock::now();
     const DelaunayGraph& g = lg.graph;
-    std::vector<std::uint8_t> moving(boundary.moving);
-    moving.resize(graph_nodes.size(), 0);
-    GraphVertexMotion vm = graph_vertex_motion(g, moving);
-    const auto nb_index = static_cast<std::int32_t>(boundary.nodes.size());
-    plan.num_boundary_vertices = 0;
-    while (static_cast<std::size_t>(plan.num_boundary_vertices) < g.num_vertices() &&
-           g.vertex_nodes[g.vertex_offsets[plan.num_boundary_vertices]] < nb_index)
-        ++plan.num_boundary_vertices;
-    plan.vertex_motion = std::move(vm.vertex_motion);
-    // Shared groups of boundary points only: two coarse volume nodes at the
-    // same coordinates are one interior vertex and have no motion to share.
-    for (std::size_t grp = 0; grp + 1 < vm.shared_offsets.size(); ++grp) {
-        const std::int32_t first = vm.shared_members[vm.shared_offsets[grp]];
-        if (first >= nb_index) continue;
-        for (std::int32_t k = vm.shared_offsets[grp]; k < vm.shared_offsets[grp + 1]; ++k)
-            if (vm.shared_members[k] < nb_index) plan.shared_members.push_back(vm.shared_members[k]);
-        plan.shared_offsets.push_back(static_cast<std::int32_t>(plan.shared_members.size()));
-    }
-    plan.stats.shared_vertex_count = static_cast<std::int64_t>(plan.shared_offsets.size()) - 1;
-    plan.stats.graph_vertices = static_cast<std::int64_t>(g.num_vertices());
-    plan.stats.coarse_interior = plan.num_vertices() - plan.num_boundary_vertices;
-
-    std::vector<NodeId> vertex_node(g.num_vertices());
-    for (std::size_t v = 0; v < vertex_node.size(); ++v) vertex_node[v] = graph_nodes[g.vertex_nodes[g.vertex_offsets[v]]];
     plan.node_barycentric =
         detail::barycentric_coordinates(dim, points, vertex_node, g.simplices, volume, lg.location.simplex);
     clamp_barycentric(dim, plan.node_barycentric);
     for (std::size_t i = 0; i < volume.size(); ++i) plan.node_simplex[volume[i]] = lg.location.simplex[i];
     plan.simplices = std::move(lg.graph.simplices);
     plan.stats.locate_seconds += seconds_since(t0);
-    if (progress) progress(0.85);
-
-    t0 = Clock::now();
-    const std::vector<double> vertex_xyz = gather_points(dim, points, vertex_node);
-    if (plan.num_vertices() > plan.num_boundary_vertices) {
-        const UnknownEdges edges = unknown_edges(dim, plan.simplices, plan.num_boundary_vertices, static_cast<std::size_t>(plan.num_vertices()));
-        // Without a rigid zone (the 3D default) the distances would weigh
-        // nothing: skip their queries (exact nearest-node queries far from a
-        // sphere's nodes are slow: 0.2 s of prepare at 202k nodes).
-        const WallDistances wall = plan.options.rigid_zone > 0 ? wall_distances(dim, points, boundary, vertex_node)
-                                                               : WallDistances{};
-        std::vector<double> wt, wr;
-        edge_weights(plan, edges, vertex_xyz, wall, boundary_diagonal(dim, points, boundary, true), wt, wr);
-        const auto n = static_cast<std::int32_t>(plan.num_vertices() - plan.num_boundary_vertices);
-        plan.solve = factorise_coarse_laplacian(edges.list, wt, wr, plan.num_boundary_vertices, n,
-                                                &plan.stats.floored_weights);
-        plan.stats.factor_nonzeros = static_cast<std::int64_t>(plan.solve.l_row.size());
-    }
-    plan.stats.factor_seconds = seconds_since(t0);
     if (progress) progress(1.0);
     return plan;
 }
