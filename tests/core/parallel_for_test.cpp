@@ -219,3 +219,68 @@ TEST(ParallelFor, RunBesideKeepsEveryThreadHereAndOneBesideAndRethrowsTheFirstTa
         expect_both_run_and_the_first_error_is_rethrown([](auto&& a, auto&& b) { run_beside(a, b); }, threads);
     }
 }
+
+TEST(ParallelForOrdered, InOrderCallsComeInIndexOrderOnTheThreadThatRanTheBody) {
+    ThreadCount keep;
+    struct State {
+        std::thread::id owner = std::this_thread::get_id();
+        std::int64_t made = -1;  // the index body last filled this state for
+    };
+    for (int threads : {1, 2, 3, 7}) {
+        set_num_threads(threads);
+        const std::int64_t n = 500;
+        std::vector<std::int64_t> order;
+        std::vector<std::thread::id> ran_on;
+        std::atomic<int> bodies{0};
+        parallel_for_ordered<State>(
+            n,
+            [&](std::int64_t i, State& s) {
+                EXPECT_EQ(s.owner, std::this_thread::get_id());  // each thread's own state
+                s.made = i;
+                ++bodies;
+            },
+            [&](std::int64_t i, const State& s) {
+                EXPECT_EQ(s.made, i) << threads;  // the state body filled for this index
+                EXPECT_EQ(s.owner, std::this_thread::get_id());
+                order.push_back(i);  // no lock: in_order calls never overlap
+                ran_on.push_back(std::this_thread::get_id());
+            });
+        EXPECT_EQ(bodies.load(), n);
+        std::vector<std::int64_t> expected(static_cast<std::size_t>(n));
+        for (std::int64_t i = 0; i < n; ++i) expected[static_cast<std::size_t>(i)] = i;
+        EXPECT_EQ(order, expected) << threads;
+        std::sort(ran_on.begin(), ran_on.end());
+        const auto used = std::unique(ran_on.begin(), ran_on.end()) - ran_on.begin();
+        EXPECT_EQ(used, threads) << "every thread takes part";  // round-robin, 500 indices
+    }
+}
+
+TEST(ParallelForOrdered, TheFirstErrorIsRethrownAndNothingIsConsumedAfterIt) {
+    ThreadCount keep;
+    for (int threads : {1, 2, 3}) {
+        set_num_threads(threads);
+        for (bool in_body : {true, false}) {
+            std::vector<std::int64_t> consumed;
+            try {
+                parallel_for_ordered<int>(
+                    200,
+                    [&](std::int64_t i, int&) {
+                        if (in_body && i == 57) throw std::runtime_error("body 57");
+                    },
+                    [&](std::int64_t i, int&) {
+                        if (!in_body && i == 57) throw std::runtime_error("in order 57");
+                        consumed.push_back(i);
+                    });
+                ADD_FAILURE() << "no error";
+            } catch (const std::runtime_error& e) {
+                EXPECT_STREQ(e.what(), in_body ? "body 57" : "in order 57");
+            }
+            // Every index before the failing one, none after it.
+            ASSERT_LE(consumed.size(), 57u) << threads;
+            for (std::size_t k = 0; k < consumed.size(); ++k) EXPECT_EQ(consumed[k], static_cast<std::int64_t>(k));
+            if (!in_body) {
+                EXPECT_EQ(consumed.size(), 57u);
+            }
+        }
+    }
+}

@@ -47,6 +47,17 @@ void parallel_for_chunks(std::int64_t n, Body&& body);
 /// not depend on the thread count. One thread, or one block: a single call.
 template <class Body>
 void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body);
+/// Calls body(i, state) for every i in [0, n) on the threads, each followed,
+/// on the same thread, by in_order(i, state) in the order of i (in_order(i)
+/// starts once in_order(i - 1) has returned): for results made in parallel
+/// and consumed in sequence, such as text formatted in blocks and written
+/// out in turn, each block by the thread that formatted it (the bytes never
+/// move to another core's cache). Each thread has a `State` of its own
+/// (default-constructed; kept from index to index), which body fills and
+/// in_order reads. Indices are handed out round-robin, one at a time. The
+/// first exception is rethrown; after one, the calls still due are skipped.
+template <class State, class Body, class InOrder>
+void parallel_for_ordered(std::int64_t n, Body&& body, InOrder&& in_order);
 /// Calls a() and b() at the same time, on two threads, when parallel_for may
 /// use two or more; one after the other (a first) otherwise. For a serial
 /// stage (a) and independent work that can be done beside it (b); a

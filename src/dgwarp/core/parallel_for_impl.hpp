@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -77,6 +78,40 @@ void parallel_for_blocks(std::int64_t n, std::int64_t block, Body&& body) {
     const std::int64_t blocks = (n + block - 1) / block;
     if (blocks == 1 || num_threads() == 1) return body(std::int64_t{0}, n);
     detail::parallel_region_for_dynamic(blocks, [&](std::int64_t b) { body(b * block, std::min(n, (b + 1) * block)); });
+}
+
+template <class State, class Body, class InOrder>
+void parallel_for_ordered(std::int64_t n, Body&& body, InOrder&& in_order) {
+    if (n < 2 || num_threads() == 1) {
+        State state;
+        for (std::int64_t i = 0; i < n; ++i) {
+            body(i, state);
+            in_order(i, state);
+        }
+        return;
+    }
+    detail::FirstError error;
+    std::atomic<bool> failed{false};
+    const auto guarded = [&](auto&& f) {
+        if (failed.load(std::memory_order_relaxed)) return;
+        bool ok = false;
+        error.run([&] {
+            f();
+            ok = true;
+        });
+        if (!ok) failed.store(true, std::memory_order_relaxed);
+    };
+#pragma omp parallel
+    {
+        State state;
+#pragma omp for ordered schedule(static, 1)
+        for (std::int64_t i = 0; i < n; ++i) {
+            guarded([&] { body(i, state); });
+#pragma omp ordered
+            guarded([&] { in_order(i, state); });
+        }
+    }
+    error.rethrow();
 }
 
 template <class A, class B>
