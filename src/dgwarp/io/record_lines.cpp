@@ -2,8 +2,12 @@
 #include "dgwarp/io/record_lines.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
-#include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "dgwarp/io/text_reader.hpp"
 
@@ -38,6 +42,48 @@ LineScan scan_lines(std::string_view content, std::size_t begin, std::size_t end
         s.after_record = std::min(pos, content.size());
         s.record_line = s.lines;
     }
+    return s;
+}
+
+/// Whether the line [begin, end) (without its '\n') is a record line: one
+/// that starts with a digit at once (nearly all), else as skipped_line says.
+bool record_line(std::string_view content, std::size_t begin, std::size_t end, SkippedLines skip) {
+    if (begin < end && static_cast<unsigned char>(content[begin] - '0') <= 9 && content[begin] != skip.comment)
+        return true;
+    std::string_view line = content.substr(begin, end - begin);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    return !skipped_line(line, skip);
+}
+
+/// scan_lines with no limit on the records, for a range scanned whole: the
+/// line ends found 16 bytes at a time (SSE2) rather than by a search per
+/// line (the 5.3M cells of the 865k-node sphere: 0.10 -> 0.0x s on 2 threads).
+LineScan scan_whole_lines(std::string_view content, std::size_t begin, std::size_t end, SkippedLines skip) {
+    LineScan s;
+    s.after_record = begin;
+    std::size_t line_start = begin;
+    const auto line_ends_at = [&](std::size_t nl) {
+        ++s.lines;
+        if (record_line(content, line_start, nl, skip)) {
+            ++s.records;
+            s.after_record = std::min(nl + 1, content.size());
+            s.record_line = s.lines;
+        }
+        line_start = nl + 1;
+    };
+    const char* data = content.data();
+    std::size_t p = begin;
+#if defined(__SSE2__)
+    const __m128i newline = _mm_set1_epi8('\n');
+    for (; p + 16 <= end; p += 16) {
+        auto mask = static_cast<unsigned>(
+            _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(data + p)), newline)));
+        for (; mask != 0; mask &= mask - 1) line_ends_at(p + static_cast<std::size_t>(std::countr_zero(mask)));
+    }
+#endif
+    for (; p < end; ++p)
+        if (data[p] == '\n') line_ends_at(p);
+    if (line_start < end) line_ends_at(end);  // the content's last line, without a '\n'
     return s;
 }
 
@@ -102,7 +148,7 @@ std::optional<RecordBlock> split_record_lines(const TextReader& r, std::int64_t 
         parallel_for(
             static_cast<std::int64_t>(wave),
             [&](std::int64_t k) {
-                scans[k] = scan_lines(content, starts[k], starts[k + 1], skip, std::numeric_limits<std::int64_t>::max());
+                scans[k] = scan_whole_lines(content, starts[k], starts[k + 1], skip);
             },
             1);
         for (std::size_t k = 0; k < wave; ++k) {
