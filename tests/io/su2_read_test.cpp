@@ -264,6 +264,24 @@ TEST(Su2ReadText, Hand2DWithTabsCommentsCrlfTrailingColumnsAndFfd) {
     EXPECT_EQ(m, expected);
 }
 
+TEST(Su2ReadText, ElementTokensBeyondPlainDigitsReadAsPlainOnes) {
+    // Each cell line in another form (signs, leading zeros, 19 digits, CR
+    // and form feeds as blanks, a last token without a line end): the same
+    // mesh as the plain lines, from the records' fast path and its token path alike.
+    const std::string points = "NPOIN= 6\n0 0\n1 0\n2 0\n0 1\n1 1\n2 1\n";
+    const std::string marker = "NMARK= 1\nMARKER_TAG= lower\nMARKER_ELEMS= 1\n3 0 1";
+    const Mesh plain = read_su2_text("plain.su2", "NDIME= 2\nNELEM= 4\n5 0 1 4\n5 0 4 3 1\n5 1 2 5\n5 1 5 4\n" +
+                                                      points + marker + "\n");
+    const Mesh forms =
+        read_su2_text("forms.su2", "NDIME= 2\nNELEM= 4\n+5 00 +1 0004\n5\f0\v4\t3 +1\r\n"
+                                   "5 0000000000000000001 2 00000000000000000005\n005 1 5 +4 99999999999999999999\n" +
+                                       points + marker);
+    EXPECT_EQ(forms, plain);
+    // A token of digits run into other characters is refused, as before.
+    EXPECT_THROW(read_su2_text("bad.su2", "NDIME= 2\nNELEM= 1\n5 0 1x 4\n" + points + marker), ParseError);
+    EXPECT_THROW(read_su2_text("bad.su2", "NDIME= 2\nNELEM= 1\n5 0 1 4.0\n" + points + marker), ParseError);
+}
+
 TEST(Su2ReadText, Hand3DWithAllVolumeCellTypes) {
     const std::string text =
         "NDIME= 3\n"

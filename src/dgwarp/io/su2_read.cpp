@@ -205,7 +205,46 @@ constexpr SkippedLines su2_skipped{'%'};
 
 /// An SU2 element record: its type (allowed in the block) and node ids
 /// (each in [0, max_node_count)); further columns are ignored.
+/// parse_element_line for the usual record: tokens of 1-18 plain digits,
+/// each read as its characters are scanned (not found, then parsed); false,
+/// with nothing pushed, at anything else (the token path then reads the line).
+bool parse_plain_element_line(std::string_view line, int dim, bool boundary, ElementList& out,
+                              std::int64_t& max_id) {
+    const char* p = line.data();
+    const char* const end = p + line.size();
+    const auto next = [&](std::int64_t& value) {
+        while (p < end && LineTokens::blank(*p)) ++p;
+        const char* const start = p;
+        std::int64_t v = 0;
+        for (; p < end; ++p) {
+            const auto d = static_cast<unsigned char>(*p - '0');
+            if (d > 9) break;
+            v = v * 10 + d;
+        }
+        if (p == start || p - start > 18 || (p < end && !LineTokens::blank(*p))) return false;
+        value = v;
+        return true;
+    };
+    std::int64_t id = 0;
+    if (!next(id) || id > 255) return false;
+    const std::optional<CellType> type = cell_type_from_vtk_id(static_cast<int>(id));
+    if (!type || !(boundary ? allowed_boundary : allowed_cell)(*type, dim)) return false;
+    const int n = nodes_per_cell(*type);
+    NodeId nodes[8];
+    std::int64_t largest = max_id;
+    for (int k = 0; k < n; ++k) {
+        std::int64_t v = 0;
+        if (!next(v) || v >= max_node_count) return false;
+        largest = std::max(largest, v);
+        nodes[k] = static_cast<NodeId>(v);
+    }
+    out.push_back(*type, {nodes, static_cast<std::size_t>(n)});
+    max_id = largest;
+    return true;
+}
+
 bool parse_element_line(std::string_view line, int dim, bool boundary, ElementList& out, std::int64_t& max_id) {
+    if (parse_plain_element_line(line, dim, boundary, out, max_id)) return true;
     LineTokens tokens(line);
     const auto int_token = [](std::string_view token, std::int64_t& v) {
         return parse_plain_digits(token, v) || parse_int(token, v);
