@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
+#include "dgwarp/core/ordered_sum.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/quality/cell_quality.hpp"
 
@@ -277,4 +280,57 @@ TEST(MeshQuality, NewlyInvertedCellsAreTheValidOnesThatInverted) {
     EXPECT_EQ(newly_inverted_cells(deformed, original), (std::vector<std::int64_t>{1, 4, 5}));
     EXPECT_TRUE(newly_inverted_cells(original, original).empty());  // the input's own bad cells are not new
     EXPECT_TRUE(newly_inverted_cells({}, {}).empty());
+}
+
+TEST(QualityDriver, SummaryOfManyCellsIsTheOneWalkInCellOrderAtAnyThreadCount) {
+    // 200k values (the sum and the counts then run side by side): random
+    // qualities, every bin edge and its neighbours, NaN (first and later),
+    // -0, +-inf, values above 1; against one walk in cell order.
+    std::mt19937_64 rng(33);
+    std::uniform_real_distribution<double> u(-0.2, 1.1);
+    std::vector<double> q(200000);
+    for (double& v : q) v = u(rng);
+    std::size_t at = 17;
+    for (int k = 0; k <= 10; ++k)
+        for (double v : {k / 10.0, std::nextafter(k / 10.0, 2.0), std::nextafter(k / 10.0, -1.0)}) q[at += 97] = v;
+    for (double v : {-0.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                     -std::numeric_limits<double>::infinity(), 1e300, 5e-324})
+        q[at += 89] = v;
+    const auto walk = [](const std::vector<double>& values) {
+        QualitySummary s;
+        s.histogram.counts.assign(11, 0);
+        OrderedSum sum;
+        s.min = values[0];
+        s.worst_cell = 0;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const double v = values[i];
+            sum.add(v);
+            if (v < s.min) s.min = v, s.worst_cell = static_cast<std::int64_t>(i);
+            int bin = 0;
+            if (v > 0) {
+                bin = 1;
+                while (bin < 10 && v > bin / 10.0) ++bin;
+            } else {
+                ++s.inverted;
+            }
+            ++s.histogram.counts[static_cast<std::size_t>(bin)];
+        }
+        s.mean = sum.value() / static_cast<double>(values.size());
+        return s;
+    };
+    const int threads = num_threads();
+    for (bool nan_first : {false, true}) {
+        if (nan_first) q[0] = std::numeric_limits<double>::quiet_NaN();
+        const QualitySummary expected = walk(q);
+        for (int t : {1, 2, 3}) {
+            set_num_threads(t);
+            const QualitySummary s = summarize_quality(q);
+            EXPECT_EQ(s.histogram.counts, expected.histogram.counts) << t;
+            EXPECT_EQ(s.inverted, expected.inverted) << t;
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(s.mean), std::bit_cast<std::uint64_t>(expected.mean)) << t;
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(s.min), std::bit_cast<std::uint64_t>(expected.min)) << t;
+            EXPECT_EQ(s.worst_cell, expected.worst_cell) << t;
+        }
+    }
+    set_num_threads(threads);
 }

@@ -1,6 +1,7 @@
 // The quality driver: per-cell shape quality over a mesh and its summaries.
 #include "dgwarp/quality/mesh_quality.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -104,6 +105,22 @@ std::vector<double> cell_qualities(const Mesh& mesh, std::span<const double> poi
     return quality;
 }
 
+namespace {
+/// The histogram bin of q: 0 for q <= 0 (or NaN), else the b in
+/// [1, histogram_bins - 1] with edges[b] < q <= edges[b + 1] (the last bin
+/// open above): guessed from 10 q, then settled by the comparisons a walk up
+/// the edges makes, so the same bin as that walk.
+int histogram_bin(double q, const std::vector<double>& edges) {
+    if (!(q > 0)) return 0;
+    constexpr int last = histogram_bins - 1;
+    if (q > edges[last]) return last;
+    int bin = std::clamp(static_cast<int>(q * 10.0), 1, last);  // q in (0, 0.9] here
+    while (bin > 1 && !(q > edges[static_cast<std::size_t>(bin)])) --bin;
+    while (bin < last && q > edges[static_cast<std::size_t>(bin) + 1]) ++bin;
+    return bin;
+}
+}  // namespace
+
 QualitySummary summarize_quality(std::span<const double> qualities) {
     QualitySummary s;
     s.histogram.edges.resize(histogram_bins + 1);
@@ -113,27 +130,33 @@ QualitySummary summarize_quality(std::span<const double> qualities) {
     s.cells = static_cast<std::int64_t>(qualities.size());
     if (qualities.empty()) return s;
 
-    const auto& edges = s.histogram.edges;
-    OrderedSum sum;  // in cell order, so the mean does not depend on the thread count
-    s.min = qualities[0];
-    s.worst_cell = 0;
-    for (std::size_t i = 0; i < qualities.size(); ++i) {
-        const double q = qualities[i];
-        sum.add(q);
-        if (q < s.min) {
-            s.min = q;
-            s.worst_cell = static_cast<std::int64_t>(i);
+    // The sum in cell order (so that the mean does not depend on the thread
+    // count) on one thread, the minimum and the histogram beside it (5.3M
+    // cells: 47 ms on one thread).
+    const auto add_up = [&] {
+        OrderedSum sum;
+        for (const double q : qualities) sum.add(q);
+        s.mean = sum.value() / static_cast<double>(qualities.size());
+    };
+    const auto count = [&] {
+        s.min = qualities[0];
+        s.worst_cell = 0;
+        for (std::size_t i = 0; i < qualities.size(); ++i) {
+            const double q = qualities[i];
+            if (q < s.min) {
+                s.min = q;
+                s.worst_cell = static_cast<std::int64_t>(i);
+            }
+            ++s.histogram.counts[static_cast<std::size_t>(histogram_bin(q, s.histogram.edges))];
         }
-        int bin = 0;
-        if (q > 0) {  // a NaN falls in the first bin and counts as inverted
-            bin = 1;  // (edges[bin], edges[bin+1]]; values above 1 (round-off) stay in the last bin
-            while (bin < histogram_bins - 1 && q > edges[static_cast<std::size_t>(bin) + 1]) ++bin;
-        } else {
-            ++s.inverted;
-        }
-        ++s.histogram.counts[static_cast<std::size_t>(bin)];
+        s.inverted = s.histogram.counts[0];  // q <= 0 or NaN
+    };
+    if (qualities.size() >= 16 * static_cast<std::size_t>(parallel_grain)) {
+        run_concurrently(add_up, count);
+    } else {
+        add_up();
+        count();
     }
-    s.mean = sum.value() / static_cast<double>(qualities.size());
     return s;
 }
 
