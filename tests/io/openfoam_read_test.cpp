@@ -414,3 +414,15 @@ TEST(OpenFoamRead, FacesThatDoNotCloseACellOrAreTooManyAreNotACell) {
     f.size[0] = 5;
     EXPECT_EQ(foam::order_cell(f).shape, foam::CellShape::polyhedron);
 }
+
+TEST(OpenFoamRead, LabelsInEveryFormReadAsTheirValues) {
+    // The usual label (plain digits before a delimiter) and the others: a
+    // sign, leading zeros, a comment or a parenthesis right after the digits.
+    const std::string header = "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class labelList;\n    object owner;\n}\n";
+    const std::vector<std::int32_t> labels = foam::read_label_list_file(
+        "owner", header + "7\n(\n0007\n12// a comment\n13/* another */\n+4\n000000000000000005\t6\n0000000000000000000000000009)\n");
+    EXPECT_EQ(labels, (std::vector<std::int32_t>{7, 12, 13, 4, 5, 6, 9}));
+    // Digits run into a letter, or more digits than a label holds: refused.
+    EXPECT_THROW(foam::read_label_list_file("owner", header + "2\n(\n1\n2x\n)\n"), ParseError);
+    EXPECT_THROW(foam::read_label_list_file("owner", header + "2\n(\n1\n" + std::string(40, '9') + "\n)\n"), ParseError);
+}

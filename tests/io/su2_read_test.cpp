@@ -280,6 +280,9 @@ TEST(Su2ReadText, ElementTokensBeyondPlainDigitsReadAsPlainOnes) {
     // A token of digits run into other characters is refused, as before.
     EXPECT_THROW(read_su2_text("bad.su2", "NDIME= 2\nNELEM= 1\n5 0 1x 4\n" + points + marker), ParseError);
     EXPECT_THROW(read_su2_text("bad.su2", "NDIME= 2\nNELEM= 1\n5 0 1 4.0\n" + points + marker), ParseError);
+    // A run of digits longer than any id (read without overflow: the fuzzer's find).
+    EXPECT_THROW(read_su2_text("bad.su2", "NDIME= 2\nNELEM= 1\n5 0 1 " + std::string(40, '7') + "\n" + points + marker),
+                 ParseError);
 }
 
 TEST(Su2ReadText, Hand3DWithAllVolumeCellTypes) {

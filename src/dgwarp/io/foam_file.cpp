@@ -132,6 +132,20 @@ std::size_t Scanner::word_end() const {
 bool Scanner::try_integer(std::int64_t& v) {
     skip_blanks();
     if (pos_ >= s_.size() || s_[pos_] == '"') return false;
+    // The usual label, 1 to 18 plain digits ended by a delimiter, read as its
+    // digits are scanned (word_end and parse_int would read them twice).
+    std::size_t digits_end = pos_;
+    std::int64_t value = 0;
+    for (; digits_end < s_.size() && digits_end - pos_ < 18; ++digits_end) {
+        const auto d = static_cast<unsigned char>(s_[digits_end] - '0');
+        if (d > 9) break;
+        value = value * 10 + d;
+    }
+    if (digits_end > pos_ && (digits_end == s_.size() || is_delimiter(s_[digits_end]))) {
+        v = value;
+        pos_ = digits_end;
+        return true;
+    }
     const std::size_t end = word_end();
     if (end == pos_ || !parse_int(s_.substr(pos_, end - pos_), v)) return false;
     pos_ = end;
