@@ -7,7 +7,6 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
-#include "dgwarp/core/prefetch.hpp"
 #include "dgwarp/io/record_lines.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
 
@@ -273,19 +272,6 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
         return s + (ids.size() > 8 ? ", ..." : "");
     };
 
-    const auto prefetch_face_offsets = [&](std::int64_t c) {
-        for (std::int64_t k = start[c]; k < start[c + 1]; ++k)
-            prefetch_bytes(&mesh.face_offsets[static_cast<std::size_t>(face_of(faces[k]))], 2 * sizeof(std::int64_t));
-    };
-    const auto prefetch_face_nodes = [&](std::int64_t c) {
-        for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
-            const auto f = static_cast<std::size_t>(face_of(faces[k]));
-            const std::int64_t at = mesh.face_offsets[f];
-            prefetch_bytes(&mesh.face_nodes[static_cast<std::size_t>(at)],
-                           static_cast<std::size_t>(mesh.face_offsets[f + 1] - at) * sizeof(NodeId));
-        }
-    };
-
     // The cells in chunks on the threads, each into a list of its own, a wave
     // of chunks at a time; each wave's lists are then joined to the cells in
     // order (so that only a wave's lists exist beside the cells). A chunk
@@ -316,10 +302,6 @@ ElementList cells_from_faces(const PolyMesh& mesh, std::int64_t num_cells, const
                     std::vector<int> sizes;
                     std::vector<std::pair<NodeId, NodeId>> edges, reversed;
                     for (std::int64_t c = first; c < last; ++c) {
-                        // A cell's faces lie anywhere in the face lists: their
-                        // offsets asked for 16 cells ahead, their nodes 8 ahead.
-                        if (c + 16 < last) prefetch_face_offsets(c + 16);
-                        if (c + 8 < last) prefetch_face_nodes(c + 8);
                         const std::int64_t count = start[c + 1] - start[c];
                         if (count == 0)
                             throw ParseError(where.owner_file, 0,
