@@ -203,8 +203,6 @@ void read_element(TextReader& r, const Block& b, std::int64_t i, int dim, bool b
 // sends the block back to the line-by-line code, which names the error.
 constexpr SkippedLines su2_skipped{'%'};
 
-/// An SU2 element record: its type (allowed in the block) and node ids
-/// (each in [0, max_node_count)); further columns are ignored.
 /// parse_element_line for the usual record: tokens of 1-18 plain digits,
 /// each read as its characters are scanned (not found, then parsed); false,
 /// with nothing pushed, at anything else (the token path then reads the line).
@@ -243,6 +241,8 @@ bool parse_plain_element_line(std::string_view line, int dim, bool boundary, Ele
     return true;
 }
 
+/// An SU2 element record: its type (allowed in the block) and node ids
+/// (each in [0, max_node_count)); further columns are ignored.
 bool parse_element_line(std::string_view line, int dim, bool boundary, ElementList& out, std::int64_t& max_id) {
     if (parse_plain_element_line(line, dim, boundary, out, max_id)) return true;
     LineTokens tokens(line);
