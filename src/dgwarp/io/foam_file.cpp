@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/record_lines.hpp"
 #include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp::foam {
@@ -134,13 +135,9 @@ bool Scanner::try_integer(std::int64_t& v) {
     if (pos_ >= s_.size() || s_[pos_] == '"') return false;
     // The usual label, 1 to 18 plain digits ended by a delimiter, read as its
     // digits are scanned (word_end and parse_int would read them twice).
-    std::size_t digits_end = pos_;
     std::int64_t value = 0;
-    for (; digits_end < s_.size() && digits_end - pos_ < 18; ++digits_end) {
-        const auto d = static_cast<unsigned char>(s_[digits_end] - '0');
-        if (d > 9) break;
-        value = value * 10 + d;
-    }
+    const auto digits_end = static_cast<std::size_t>(
+        scan_plain_digits(s_.data() + pos_, s_.data() + s_.size(), value) - s_.data());
     if (digits_end > pos_ && (digits_end == s_.size() || is_delimiter(s_[digits_end]))) {
         v = value;
         pos_ = digits_end;

@@ -113,17 +113,28 @@ private:
     std::size_t at_ = 0;
 };
 
+/// The decimal digits from `p` on (at most 18 of them, so no overflow), read
+/// as they are scanned into `value`; returns where they end (`p` when there
+/// are none, a digit when there are more than 18).
+inline const char* scan_plain_digits(const char* p, const char* end, std::int64_t& value) {
+    const char* const start = p;
+    std::int64_t v = 0;
+    for (; p < end && p - start < 18; ++p) {
+        const auto d = static_cast<unsigned char>(*p - '0');
+        if (d > 9) break;
+        v = v * 10 + d;
+    }
+    value = v;
+    return p;
+}
+
 /// A token of 1 to 18 decimal digits (the usual node id or type id), parsed
 /// inline; false for anything else, which parse_int (text_reader.hpp) then
 /// reads or refuses.
 inline bool parse_plain_digits(std::string_view token, std::int64_t& value) {
-    if (token.empty() || token.size() > 18) return false;
+    const char* const end = token.data() + token.size();
     std::int64_t v = 0;
-    for (char c : token) {
-        const auto d = static_cast<unsigned char>(c - '0');
-        if (d > 9) return false;
-        v = v * 10 + d;
-    }
+    if (token.empty() || scan_plain_digits(token.data(), end, v) != end) return false;
     value = v;
     return true;
 }

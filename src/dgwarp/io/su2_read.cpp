@@ -213,15 +213,8 @@ bool parse_plain_element_line(std::string_view line, int dim, bool boundary, Ele
     const auto next = [&](std::int64_t& value) {
         while (p < end && LineTokens::blank(*p)) ++p;
         const char* const start = p;
-        std::int64_t v = 0;
-        for (; p < end && p - start < 18; ++p) {  // at most 18 digits: no overflow
-            const auto d = static_cast<unsigned char>(*p - '0');
-            if (d > 9) break;
-            v = v * 10 + d;
-        }
-        if (p == start || (p < end && !LineTokens::blank(*p))) return false;  // a 19th digit is no blank
-        value = v;
-        return true;
+        p = scan_plain_digits(p, end, value);
+        return p != start && (p == end || LineTokens::blank(*p));  // a 19th digit is no blank
     };
     std::int64_t id = 0;
     if (!next(id) || id > 255) return false;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <tuple>
 #include <unordered_map>
 
@@ -37,12 +38,6 @@ struct Candidate {
     double centre_dist2;
     NodeId node;
 };
-
-// Runs of consecutive nodes to visit on the threads: one per thread, one for
-// fewer nodes than a parallel loop is worth.
-std::int64_t thread_runs(std::int64_t nodes) {
-    return std::max<std::int64_t>(1, std::min<std::int64_t>(num_threads(), nodes / parallel_grain));
-}
 
 }  // namespace
 
@@ -95,24 +90,18 @@ CoarseWants coarse_wants(int dim, std::span<const double> points, std::span<cons
     // A run of the visit order per thread, each with cells of its own (an
     // answer depends on the node's coordinates only, not on which cells
     // were made before it).
-    const auto nodes = static_cast<std::int64_t>(volume_nodes.size());
-    const std::int64_t runs = thread_runs(nodes);
-    std::vector<std::vector<std::int64_t>> asks(static_cast<std::size_t>(runs));
-    parallel_for(
-        runs,
-        [&](std::int64_t run) {
-            NearestBoundaryCells cells(dim, points, boundary_nodes, tree, h, spacing);
-            std::vector<std::int64_t>& ask = asks[static_cast<std::size_t>(run)];  // positions in the visit order
-            for (std::int64_t k = nodes * run / runs; k < nodes * (run + 1) / runs; ++k) {
-                const std::size_t i = node_at(static_cast<std::size_t>(k));
-                const NearestBoundaryCells::Answer a = cells.find(point_at(static_cast<std::size_t>(k)));
-                if (a.index >= 0) want[i] = want_of(a.distance, a.index);
-                if (a.index < 0 || a.lower_bound < 0.5 * spacing.wall_spacing * h[a.index]) ask.push_back(k);
-            }
-        },
-        1);
-    std::vector<std::int64_t> ask;
-    for (const std::vector<std::int64_t>& part : asks) ask.insert(ask.end(), part.begin(), part.end());
+    std::vector<std::uint8_t> asked(volume_nodes.size(), 0);  // by position in the visit order
+    parallel_for_chunks(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t first, std::int64_t last) {
+        NearestBoundaryCells cells(dim, points, boundary_nodes, tree, h, spacing);
+        for (auto k = static_cast<std::size_t>(first); k < static_cast<std::size_t>(last); ++k) {
+            const NearestBoundaryCells::Answer a = cells.find(point_at(k));
+            if (a.index >= 0) want[node_at(k)] = want_of(a.distance, a.index);
+            asked[k] = a.index < 0 || a.lower_bound < 0.5 * spacing.wall_spacing * h[a.index];
+        }
+    });
+    std::vector<std::int64_t> ask;  // positions in the visit order
+    for (std::size_t k = 0; k < asked.size(); ++k)
+        if (asked[k]) ask.push_back(static_cast<std::int64_t>(k));
     parallel_for(static_cast<std::int64_t>(ask.size()), [&](std::int64_t a) {
         const auto k = static_cast<std::size_t>(ask[a]);
         // A spacing needs no exact distance: within 50% it is as good.
@@ -179,22 +168,17 @@ std::vector<NodeId> select_coarse_points(int dim, std::span<const double> points
                                          std::span<const std::uint32_t> morton) {
     const CoarseWants w = coarse_wants(dim, points, boundary_nodes, volume_nodes, spacing, morton);
     // The winners of a run of nodes per thread, merged as the parts of a
-    // distributed mesh are (the same nodes as one run over them all).
-    const auto nodes = static_cast<std::int64_t>(volume_nodes.size());
-    const std::int64_t runs = thread_runs(nodes);
-    std::vector<std::vector<CoarseWinner>> parts(static_cast<std::size_t>(runs));
-    parallel_for(
-        runs,
-        [&](std::int64_t run) {
-            const auto first = static_cast<std::size_t>(nodes * run / runs);
-            const auto last = static_cast<std::size_t>(nodes * (run + 1) / runs);
-            parts[static_cast<std::size_t>(run)] =
-                coarse_cell_winners(dim, points, volume_nodes.subspan(first, last - first),
-                                    std::span<const double>(w.want).subspan(first, last - first), w.s_min, w.lo);
-        },
-        1);
+    // distributed mesh are (the same nodes as one run over them all, in
+    // whatever order the runs' winners come).
     std::vector<CoarseWinner> winners;
-    for (const std::vector<CoarseWinner>& part : parts) winners.insert(winners.end(), part.begin(), part.end());
+    std::mutex joining;
+    parallel_for_chunks(static_cast<std::int64_t>(volume_nodes.size()), [&](std::int64_t first, std::int64_t last) {
+        const auto at = static_cast<std::size_t>(first), count = static_cast<std::size_t>(last - first);
+        const std::vector<CoarseWinner> mine = coarse_cell_winners(
+            dim, points, volume_nodes.subspan(at, count), std::span<const double>(w.want).subspan(at, count), w.s_min, w.lo);
+        const std::lock_guard lock(joining);
+        winners.insert(winners.end(), mine.begin(), mine.end());
+    });
     return merge_coarse_winners(winners);
 }
 
