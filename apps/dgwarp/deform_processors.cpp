@@ -21,7 +21,6 @@
 #include "foam_output.hpp"
 #include "frame_output.hpp"
 #include "output_files.hpp"
-#include "part_reductions.hpp"
 #include "processor_part.hpp"
 #include "report.hpp"
 
@@ -376,6 +375,8 @@ int run_everywhere(const std::string& payload) {
         deform_per_processor(a, given_output);
         return exit_ok;
     } catch (const CLI::ParseError&) {
+        return exit_usage;
+    } catch (const UsageError&) {
         return exit_usage;
     } catch (const InvalidResultError&) {
         return exit_invalid_result;

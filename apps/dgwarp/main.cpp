@@ -108,6 +108,9 @@ int run_command(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         return exit_usage;
+    } catch (const dgwarp::UsageError& e) {
+        std::cerr << "dgwarp: " << e.what() << "\nRun with --help for more information.\n";
+        return exit_usage;
     } catch (const dgwarp::InvalidResultError& e) {
         std::cerr << "dgwarp: invalid result: " << e.what() << "\n";
         return exit_invalid_result;

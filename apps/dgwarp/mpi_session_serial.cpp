@@ -41,12 +41,27 @@ double mpi_min(double value) { return value; }
 double mpi_max(double value) { return value; }
 std::int64_t mpi_min(std::int64_t value) { return value; }
 std::int64_t mpi_max(std::int64_t value) { return value; }
-std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values, std::vector<int>* counts) {
-    if (counts) *counts = {static_cast<int>(values.size())};
+std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values, std::vector<std::int64_t>* counts) {
+    if (counts) *counts = {static_cast<std::int64_t>(values.size())};
     return values;
 }
 std::vector<std::string> mpi_gather_text(const std::string& text) { return {text}; }
 std::string mpi_broadcast_text(const std::string& text) { return text; }
+
+// Each process's own part: only under mpirun with several processes.
+QualitySummary case_quality(std::span<const double>, const std::vector<std::int64_t>&) {
+    throw Error("case_quality: dgwarp was built without MPI");
+}
+RatioSummary case_ratios(std::span<const double>, const std::vector<std::int64_t>&) {
+    throw Error("case_ratios: dgwarp was built without MPI");
+}
+std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<std::int64_t>&, const std::vector<double>&,
+                                                               const std::vector<std::int64_t>&, std::size_t) {
+    throw Error("case_worst: dgwarp was built without MPI");
+}
+std::vector<Warning> case_warnings(const std::vector<Warning>&, std::int64_t, SharedNodeRule) {
+    throw Error("case_warnings: dgwarp was built without MPI");
+}
 
 std::shared_ptr<DistributedRun> mpi_prepare_own(Method, int, const MethodOptions&, std::span<const double>,
                                                 std::span<const std::int64_t>, const BoundarySet&, Plan&,

@@ -25,12 +25,12 @@ void share_interface_markers(Mesh& mesh, const std::vector<NodeId>& interface, P
         ids.push_back(part.point_ids[static_cast<std::size_t>(n)]);
     }
     // Owners: the lowest rank holding each interface point.
-    std::vector<int> counts;
+    std::vector<std::int64_t> counts;
     const std::vector<std::int64_t> all_ids = mpi_all_gather(ids, &counts);
     part.owned.assign(mesh.num_points(), 1);
     std::size_t at = 0;
     for (int r = 0; r < static_cast<int>(counts.size()); ++r)
-        for (int k = 0; k < counts[static_cast<std::size_t>(r)]; ++k, ++at)
+        for (std::int64_t k = 0; k < counts[static_cast<std::size_t>(r)]; ++k, ++at)
             if (r < rank)
                 if (const auto it = local_of.find(all_ids[at]); it != local_of.end())
                     part.owned[static_cast<std::size_t>(it->second)] = 0;

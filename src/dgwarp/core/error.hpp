@@ -73,6 +73,14 @@ public:
     using Error::Error;
 };
 
+/// The caller's arguments are wrong: an option out of its range, or a
+/// combination the call does not support (exit code 1 in the CLI, as its own
+/// command-line errors).
+class UsageError : public Error {
+public:
+    using Error::Error;
+};
+
 /// A computed result is invalid (inverted cells after a deformation, an invalid
 /// moved Delaunay graph). `count` is how many items are bad.
 class InvalidResultError : public Error {

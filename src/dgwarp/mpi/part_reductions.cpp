@@ -1,5 +1,5 @@
-// part_reductions.hpp: the report's figures over every process's part.
-#include "part_reductions.hpp"
+// part_reductions.hpp: a run's report figures over every process's part.
+#include "dgwarp/mpi/part_reductions.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "dgwarp/core/ordered_sum.hpp"
-#include "mpi_session.hpp"
+#include "dgwarp/mpi/reductions.hpp"
 
-namespace dgwarp::cli {
+namespace dgwarp::mpi {
 
 namespace {
 
@@ -25,68 +25,71 @@ double part_sum(std::span<const double> values) {
 
 /// The smallest of `values` over every process and the lowest case id of a
 /// cell holding it (worst_cell: the first in the case's order).
-std::pair<double, std::int64_t> case_minimum(std::span<const double> values, const std::vector<std::int64_t>& cell_ids) {
+std::pair<double, std::int64_t> minimum_over_parts(MPI_Comm comm, std::span<const double> values,
+                                                   const std::vector<std::int64_t>& cell_ids) {
     double local = std::numeric_limits<double>::infinity();
     for (double v : values) local = std::min(local, v);
-    const double min = mpi_min(local);
+    const double lowest = mpi::min(comm, local);
     std::int64_t first = std::numeric_limits<std::int64_t>::max();
     for (std::size_t i = 0; i < values.size(); ++i)
-        if (values[i] == min) first = std::min(first, cell_ids[i]);
-    first = mpi_min(first);
-    return {min, first == std::numeric_limits<std::int64_t>::max() ? -1 : first};
+        if (values[i] == lowest) first = std::min(first, cell_ids[i]);
+    first = mpi::min(comm, first);
+    return {lowest, first == std::numeric_limits<std::int64_t>::max() ? -1 : first};
 }
 
 }  // namespace
 
-QualitySummary case_quality(std::span<const double> q, const std::vector<std::int64_t>& cell_ids) {
+QualitySummary quality_over_parts(MPI_Comm comm, std::span<const double> q, const std::vector<std::int64_t>& cell_ids) {
     QualitySummary s = summarize_quality(q);
-    s.cells = mpi_sum(s.cells);
-    s.inverted = mpi_sum(s.inverted);
-    s.histogram.counts = mpi_sum(s.histogram.counts);
-    const auto [min, worst] = case_minimum(q, cell_ids);
+    s.cells = sum(comm, s.cells);
+    s.inverted = sum(comm, s.inverted);
+    s.histogram.counts = sum(comm, s.histogram.counts);
+    const auto [min, worst] = minimum_over_parts(comm, q, cell_ids);
     s.min = s.cells > 0 ? min : 0;
     s.worst_cell = worst;
-    s.mean = s.cells > 0 ? mpi_sum(std::vector<double>{part_sum(q)})[0] / static_cast<double>(s.cells) : 0;
+    s.mean = s.cells > 0 ? sum(comm, std::vector<double>{part_sum(q)})[0] / static_cast<double>(s.cells) : 0;
     return s;
 }
 
-RatioSummary case_ratios(std::span<const double> r, const std::vector<std::int64_t>& cell_ids) {
+RatioSummary ratios_over_parts(MPI_Comm comm, std::span<const double> r, const std::vector<std::int64_t>& cell_ids) {
     RatioSummary s;
-    const std::int64_t cells = mpi_sum(static_cast<std::int64_t>(r.size()));
-    const auto [min, worst] = case_minimum(r, cell_ids);
+    const std::int64_t cells = sum(comm, static_cast<std::int64_t>(r.size()));
+    const auto [min, worst] = minimum_over_parts(comm, r, cell_ids);
     s.min = cells > 0 ? min : 0;
     s.worst_cell = worst;
-    s.mean = cells > 0 ? mpi_sum(std::vector<double>{part_sum(r)})[0] / static_cast<double>(cells) : 0;
+    s.mean = cells > 0 ? sum(comm, std::vector<double>{part_sum(r)})[0] / static_cast<double>(cells) : 0;
     return s;
 }
 
-std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<std::int64_t>& cells,
-                                                               const std::vector<double>& quality,
-                                                               const std::vector<std::int64_t>& cell_ids,
-                                                               std::size_t count) {
+std::pair<std::vector<std::int64_t>, std::int64_t> worst_over_parts(MPI_Comm comm,
+                                                                     const std::vector<std::int64_t>& cells,
+                                                                     const std::vector<double>& quality,
+                                                                     const std::vector<std::int64_t>& cell_ids,
+                                                                     std::size_t count) {
     std::vector<std::pair<double, std::int64_t>> mine;
     for (std::int64_t c : cells) mine.emplace_back(quality[static_cast<std::size_t>(c)], cell_ids[static_cast<std::size_t>(c)]);
     std::sort(mine.begin(), mine.end());
     if (mine.size() > count) mine.resize(count);
     std::vector<std::int64_t> flat;
     for (const auto& [q, id] : mine) flat.insert(flat.end(), {std::bit_cast<std::int64_t>(q), id});
-    const std::vector<std::int64_t> all = mpi_all_gather(flat);
+    const std::vector<std::int64_t> all = all_gather(comm, flat);
     std::vector<std::pair<double, std::int64_t>> every;
     for (std::size_t k = 0; k + 1 < all.size(); k += 2) every.emplace_back(std::bit_cast<double>(all[k]), all[k + 1]);
     std::sort(every.begin(), every.end());
     if (every.size() > count) every.resize(count);
     std::vector<std::int64_t> ids;
     for (const auto& e : every) ids.push_back(e.second);
-    return {ids, mpi_sum(static_cast<std::int64_t>(cells.size()))};
+    return {ids, sum(comm, static_cast<std::int64_t>(cells.size()))};
 }
 
-std::vector<Warning> case_warnings(const std::vector<Warning>& mine, std::int64_t shared_nodes, SharedNodeRule rule) {
+std::vector<Warning> warnings_over_parts(MPI_Comm comm, const std::vector<Warning>& mine, std::int64_t shared_nodes,
+                                         SharedNodeRule rule) {
     // Each process's warnings as JSON (code, text and data), gathered on rank 0.
     nlohmann::json sent = nlohmann::json::array();
     for (const Warning& w : mine)
         sent.push_back({static_cast<int>(w.code), w.text, w.marker, w.count, w.node, w.element,
                         std::isnan(w.value) ? nlohmann::json(nullptr) : nlohmann::json(w.value)});
-    const std::vector<std::string> all = mpi_gather_text(sent.dump());
+    const std::vector<std::string> all = gather_text(comm, sent.dump());
     const auto text_of = [](const Warning& w) { return std::to_string(static_cast<int>(w.code)) + ':' + w.text; };
     std::vector<std::vector<Warning>> by_rank(all.size());
     std::unordered_map<std::string, std::size_t> given_by;
@@ -121,4 +124,4 @@ std::vector<Warning> case_warnings(const std::vector<Warning>& mine, std::int64_
     return out;
 }
 
-}  // namespace dgwarp::cli
+}  // namespace dgwarp::mpi
