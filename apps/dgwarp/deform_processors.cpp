@@ -2,6 +2,8 @@
 // own processor folder of a decomposed OpenFOAM case; rank 0 reports.
 #include "deform_processors.hpp"
 
+#include <mpi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +19,10 @@
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/mpi/agreement.hpp"
+#include "dgwarp/mpi/part_reductions.hpp"
+#include "dgwarp/mpi/part_setup.hpp"
+#include "dgwarp/mpi/reductions.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
 #include "frame_output.hpp"
@@ -29,6 +35,22 @@ namespace dgwarp::cli {
 namespace fs = std::filesystem;
 
 namespace {
+
+const MPI_Comm world = MPI_COMM_WORLD;
+
+/// Runs `phase` on this process, then agrees with the others (mpi::agree):
+/// every process goes on, or every process throws the first failure (a
+/// command-line error as a UsageError).
+template <class F>
+void collectively(F&& phase) {
+    mpi::collectively(world, [&] {
+        try {
+            phase();
+        } catch (const CLI::ParseError& e) {
+            throw UsageError(e.what());
+        }
+    });
+}
 
 // The arguments every process needs, sent by rank 0 (mpi_run_everywhere).
 nlohmann::json processor_args_json(const DeformArgs& a, const std::string& given_output) {
@@ -121,7 +143,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     Stopwatch sw;
 
     // Each process reads the motion and its own processor folder.
-    mpi_collectively([&] {
+    collectively([&] {
         if (rank == 0) refuse_other_methods_options(a.setup, method);
         in.spec = read_motion_file(a.setup.motion);
         foam_times = foam_time_names(in.spec, frame_count(in.spec), a.foam_time);
@@ -150,8 +172,8 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     // The same patches, in the same order, on every process.
     std::string names;
     for (const Marker& m : in.mesh.markers) names += m.name + "\n";
-    const std::string names0 = mpi_broadcast_text(names);
-    mpi_collectively([&] {
+    const std::string names0 = mpi::broadcast_text(world, names);
+    collectively([&] {
         if (names != names0)
             throw ParseError((part.poly_mesh / "boundary").string(), 0,
                              "the patches of processor 0, in the same order (decomposePar writes every patch to every "
@@ -161,23 +183,10 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
 
     // The boundary: each process's nodes on the markers every process has them on.
     progress.phase("classifying the boundary");
-    share_interface_markers(in.mesh, interface, part);
-    if (in.spec.shared_tolerance <= 0) {
-        // The tolerance one process takes: 1e-9 × the whole case's bounding-box diagonal.
-        double sum = 0;
-        for (int d = 0; d < 3; ++d) {
-            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-            for (std::size_t p = static_cast<std::size_t>(d); p < in.mesh.points.size(); p += 3) {
-                lo = std::min(lo, in.mesh.points[p]);
-                hi = std::max(hi, in.mesh.points[p]);
-            }
-            lo = mpi_min(lo);
-            hi = mpi_max(hi);
-            sum += (hi - lo) * (hi - lo);
-        }
-        in.spec.shared_tolerance = 1e-9 * std::sqrt(sum);
-    }
-    mpi_collectively([&] {
+    part.owned = mpi::share_interface_markers(world, in.mesh, interface, part.point_ids);
+    // The tolerance one process takes: 1e-9 × the whole case's bounding-box diagonal.
+    if (in.spec.shared_tolerance <= 0) in.spec.shared_tolerance = 1e-9 * mpi::bounding_box_diagonal_over_parts(world, in.mesh);
+    collectively([&] {
         in.boundary = resolve_boundary(in.mesh, in.spec);
         // Each process holds its processor's part only; the sliding nodes'
         // first pass needs every boundary node (run/slide_pass.hpp).
@@ -193,24 +202,19 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
             ++boundary_nodes;
             moving_nodes += in.boundary.boundary.moving[b];
         }
-    boundary_nodes = mpi_sum(boundary_nodes);
-    moving_nodes = mpi_sum(moving_nodes);
+    boundary_nodes = mpi::sum(world, boundary_nodes);
+    moving_nodes = mpi::sum(world, moving_nodes);
     in.resolve_seconds = sw.lap();
 
     // The original quality, judged by the whole case's majority orientation per cell type.
     progress.phase("measuring the original mesh's quality");
     std::vector<std::int8_t> own = cell_orientations(in.mesh);
-    std::vector<std::int64_t> balance(std::size(all_cell_types), 0);
-    for (std::size_t c = 0; c < own.size(); ++c) balance[static_cast<std::size_t>(in.mesh.cells.types[c])] += own[c];
-    balance = mpi_sum(balance);
-    std::vector<std::int8_t> orientation(own.size());
-    for (std::size_t c = 0; c < orientation.size(); ++c)
-        orientation[c] = balance[static_cast<std::size_t>(in.mesh.cells.types[c])] < 0 ? -1 : 1;
+    std::vector<std::int8_t> orientation = mpi::dominant_orientations_over_parts(world, in.mesh, own);
     in.original = measure_original(in.mesh, std::move(own), std::move(orientation));
-    in.original.summary = case_quality(in.original.quality, part.cell_ids);
+    in.original.summary = mpi::quality_over_parts(world, in.original.quality, part.cell_ids);
     warn_already_inverted(in);
     in.boundary.warnings =
-        case_warnings(in.boundary.warnings, mpi_sum(owned_moving_and_static(in.mesh, in.boundary, part.owned)),
+        mpi::warnings_over_parts(world, in.boundary.warnings, mpi::sum(world, owned_moving_and_static(in.mesh, in.boundary, part.owned)),
                       in.spec.shared_nodes);
     in.quality_seconds = sw.lap();
     progress.clear();
@@ -231,7 +235,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     run.planned.options = method_options(a.setup);
     progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(processes) + " processes");
     std::int64_t outside_hull = 0;
-    mpi_collectively([&] {
+    collectively([&] {
         run.planned.distributed =
             mpi_prepare_own(method, 3, run.planned.options, in.mesh.points, part.point_ids, in.boundary.boundary,
                             run.planned.plan, run.planned.process_prepare_seconds, outside_hull);
@@ -252,8 +256,8 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
                                          std::to_string(frames) + ")"
                                    : ""));
         ResolvedFrame motion;
-        mpi_collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
-        f.warnings = case_warnings(motion.warnings);
+        collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
+        f.warnings = mpi::warnings_over_parts(world, motion.warnings);
         Stopwatch step_sw;
         f.step = mpi_deform_own(*run.planned.distributed, in.mesh.points, motion.motion, deformed, f.process_seconds);
         f.step_seconds = step_sw.lap();
@@ -261,11 +265,11 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
 
         // The frame's quality, reduced over the processes.
         const FrameCells cells = measure_frame(in.mesh, deformed, in.original, in.boundary.boundary.nodes);
-        f.quality = case_quality(cells.quality, part.cell_ids);
-        f.ratio = case_ratios(quality_ratios(cells.quality, in.original.quality), part.cell_ids);
-        std::tie(f.worst_inverted, f.inverted_by_motion) = case_worst(cells.inverted, cells.quality, part.cell_ids, 10);
+        f.quality = mpi::quality_over_parts(world, cells.quality, part.cell_ids);
+        f.ratio = mpi::ratios_over_parts(world, quality_ratios(cells.quality, in.original.quality), part.cell_ids);
+        std::tie(f.worst_inverted, f.inverted_by_motion) = mpi::worst_over_parts(world, cells.inverted, cells.quality, part.cell_ids, 10);
         std::tie(f.worst_on_boundary, f.inverted_on_boundary) =
-            case_worst(cells.inverted_on_boundary, cells.quality, part.cell_ids, 10);
+            mpi::worst_over_parts(world, cells.inverted_on_boundary, cells.quality, part.cell_ids, 10);
         f.quality_seconds = step_sw.lap();
         if (method == Method::dg_harmonic && !a.no_untangle && f.inverted_by_motion > 0 && f.inverted_on_boundary == 0)
             // One process would repair them (the last resort); it moves nodes

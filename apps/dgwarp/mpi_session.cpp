@@ -1,18 +1,13 @@
-// mpi_session.hpp with MPI: the library's root-driven session, part plans,
-// agreement and reductions (dgwarp/mpi) over MPI_COMM_WORLD.
+// mpi_session.hpp with MPI: the library's root-driven session and part plans
+// (dgwarp/mpi/root_session.hpp) over MPI_COMM_WORLD.
 #include <mpi.h>
 
 #include <cstdlib>
 #include <optional>
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
-#include "dgwarp/mpi/agreement.hpp"
-#include "dgwarp/mpi/part_reductions.hpp"
-#include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/mpi/root_session.hpp"
 #include "mpi_session.hpp"
 
@@ -58,48 +53,6 @@ void mpi_stop(int exit_code) {
 int mpi_serve() { return mpi::serve_root(world, run_everywhere); }
 
 void mpi_run_everywhere(const std::string& payload) { mpi::root_run_everywhere(world, payload); }
-
-void mpi_agree(const std::exception_ptr& error) {
-    // The command line's own errors agree as the library's usage errors.
-    if (error) {
-        try {
-            std::rethrow_exception(error);
-        } catch (const CLI::ParseError& e) {
-            mpi::agree(world, std::make_exception_ptr(UsageError(e.what())));
-        } catch (...) {
-        }
-    }
-    mpi::agree(world, error);
-}
-
-std::int64_t mpi_sum(std::int64_t value) { return mpi::sum(world, value); }
-std::vector<std::int64_t> mpi_sum(std::vector<std::int64_t> values) { return mpi::sum(world, std::move(values)); }
-std::vector<double> mpi_sum(std::vector<double> values) { return mpi::sum(world, std::move(values)); }
-double mpi_min(double value) { return mpi::min(world, value); }
-double mpi_max(double value) { return mpi::max(world, value); }
-std::int64_t mpi_min(std::int64_t value) { return mpi::min(world, value); }
-std::int64_t mpi_max(std::int64_t value) { return mpi::max(world, value); }
-std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values, std::vector<std::int64_t>* counts) {
-    return mpi::all_gather(world, values, counts);
-}
-std::vector<std::string> mpi_gather_text(const std::string& text) { return mpi::gather_text(world, text); }
-std::string mpi_broadcast_text(const std::string& text) { return mpi::broadcast_text(world, text); }
-
-QualitySummary case_quality(std::span<const double> q, const std::vector<std::int64_t>& cell_ids) {
-    return mpi::quality_over_parts(world, q, cell_ids);
-}
-RatioSummary case_ratios(std::span<const double> r, const std::vector<std::int64_t>& cell_ids) {
-    return mpi::ratios_over_parts(world, r, cell_ids);
-}
-std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<std::int64_t>& cells,
-                                                               const std::vector<double>& quality,
-                                                               const std::vector<std::int64_t>& cell_ids,
-                                                               std::size_t count) {
-    return mpi::worst_over_parts(world, cells, quality, cell_ids, count);
-}
-std::vector<Warning> case_warnings(const std::vector<Warning>& mine, std::int64_t shared_nodes, SharedNodeRule rule) {
-    return mpi::warnings_over_parts(world, mine, shared_nodes, rule);
-}
 
 std::shared_ptr<DistributedRun> mpi_prepare_own(Method method, int dim, const MethodOptions& options,
                                                 std::span<const double> points, std::span<const std::int64_t> global_ids,

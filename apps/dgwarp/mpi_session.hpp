@@ -7,22 +7,18 @@
 // folders, rank 0 instead has every process run the command on its own
 // folder (mpi_run_everywhere, deform_processors.hpp).
 //
-// Built with MPI: mpi_session.cpp, which forwards to dgwarp/mpi; without:
+// Built with MPI: mpi_session.cpp, which forwards to dgwarp/mpi, and the
+// per-processor run (deform_processors.cpp, processor_part.cpp); without:
 // mpi_session_serial.cpp (one process; started by mpirun with several, it
 // refuses to run, rather than have P copies write the same files).
 #include <cstdint>
-#include <exception>
 #include <memory>
 #include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "dgwarp/core/warning.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
-#include "dgwarp/motion/resolve_motion.hpp"
-#include "dgwarp/quality/mesh_quality.hpp"
 
 namespace dgwarp::cli {
 
@@ -50,53 +46,6 @@ int mpi_serve();
 void mpi_run_everywhere(const std::string& payload);
 /// Ranks > 0, from mpi_serve: the run rank 0 started; returns its exit code.
 int run_everywhere(const std::string& payload);
-
-// Collectives over every process of the mpirun, for the runs where each
-// process holds its own part (the identity on one process).
-
-/// Every process calls it after a phase, with the phase's error on this
-/// process (or none): when some process failed, every process throws the
-/// error of the lowest failing rank (mpi::agree; a command-line error as a
-/// UsageError).
-void mpi_agree(const std::exception_ptr& error);
-/// Runs `phase` on this process, then agrees with the others (mpi_agree):
-/// every process goes on, or every process throws the first failure.
-template <class F>
-void mpi_collectively(F&& phase) {
-    std::exception_ptr error;
-    try {
-        phase();
-    } catch (...) {
-        error = std::current_exception();
-    }
-    mpi_agree(error);
-}
-
-std::int64_t mpi_sum(std::int64_t value);
-std::vector<std::int64_t> mpi_sum(std::vector<std::int64_t> values);  // element by element
-std::vector<double> mpi_sum(std::vector<double> values);              // element by element
-double mpi_min(double value);
-double mpi_max(double value);
-std::int64_t mpi_min(std::int64_t value);
-std::int64_t mpi_max(std::int64_t value);
-/// Every process's `values`, concatenated by rank, on every process;
-/// `counts` (when given) gets each process's size.
-std::vector<std::int64_t> mpi_all_gather(const std::vector<std::int64_t>& values,
-                                         std::vector<std::int64_t>* counts = nullptr);
-/// Every process's `text` on rank 0 (by rank); empty elsewhere.
-std::vector<std::string> mpi_gather_text(const std::string& text);
-/// Rank 0's `text` on every process.
-std::string mpi_broadcast_text(const std::string& text);
-
-// The report's figures over every process's part (dgwarp/mpi/part_reductions.hpp).
-QualitySummary case_quality(std::span<const double> q, const std::vector<std::int64_t>& cell_ids);
-RatioSummary case_ratios(std::span<const double> r, const std::vector<std::int64_t>& cell_ids);
-std::pair<std::vector<std::int64_t>, std::int64_t> case_worst(const std::vector<std::int64_t>& cells,
-                                                               const std::vector<double>& quality,
-                                                               const std::vector<std::int64_t>& cell_ids,
-                                                               std::size_t count);
-std::vector<Warning> case_warnings(const std::vector<Warning>& mine, std::int64_t shared_nodes = -1,
-                                   SharedNodeRule rule = SharedNodeRule::moving_wins);
 
 /// Every process: prepares `method` over this process's own nodes (points,
 /// global ids, boundary), collectively; `my_plan`: this process's plan (over

@@ -19,19 +19,9 @@ struct ProcessorPart {
     std::vector<std::int64_t> point_ids;  // pointProcAddressing
     std::vector<std::int64_t> cell_ids;   // cellProcAddressing
     foam::Format points_format = foam::Format::ascii;
-    std::vector<std::uint8_t> owned;      // per point: this process is the lowest rank holding it
+    std::vector<std::uint8_t> owned;      // per point: this process is the lowest rank holding it (mpi::share_interface_markers)
     std::vector<std::int64_t> marker_elements;  // per marker: its faces here (before shared nodes were added)
 };
-
-/// Every process's interface points (on processor patches) are held by
-/// several processes, possibly on different markers: a point on the edge of a
-/// patch whose faces are all on one side. Gives each process every marker
-/// any process has each of its points on (as vertex elements added to the
-/// marker, which resolve_boundary reads as the marker's nodes), so that every
-/// process classifies and moves a shared point as the whole case does; and
-/// sets part.owned (the lowest rank holding a point owns it). `interface`:
-/// the local points on processor patches, sorted.
-void share_interface_markers(Mesh& mesh, const std::vector<NodeId>& interface, ProcessorPart& part);
 
 /// The whole case's counts (describe_mesh, mesh_json), from every process's part.
 MeshCounts case_counts(const Mesh& mesh, const ProcessorPart& part);

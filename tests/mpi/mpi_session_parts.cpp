@@ -23,6 +23,7 @@
 #include "dgwarp/mpi/mesh_parts.hpp"
 #include "dgwarp/mpi/morton_partition.hpp"
 #include "dgwarp/mpi/part_reductions.hpp"
+#include "dgwarp/mpi/part_setup.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/mpi/root_session.hpp"
 
@@ -325,6 +326,57 @@ TEST(PartReductions, AsOneProcessOverTheWholeMesh) {
     } else {
         EXPECT_TRUE(agreed_warnings.empty());
     }
+}
+
+TEST(PartSetup, DiagonalAndOrientationsAsTheWholeMesh) {
+    const int rank = rank_of(), size = size_of();
+    const Mesh whole = make_rect_box();
+    const std::vector<mpi::NodePart> split = mpi::split_mesh(whole, rect_box_boundary(whole), size);
+    Mesh part;
+    part.dim = 2;
+    part.points = split[static_cast<std::size_t>(rank)].points;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::size_t i = 0; i < whole.points.size(); ++i) {
+        lo[i % 2] = std::min(lo[i % 2], whole.points[i]);
+        hi[i % 2] = std::max(hi[i % 2], whole.points[i]);
+    }
+    EXPECT_EQ(mpi::bounding_box_diagonal_over_parts(MPI_COMM_WORLD, part),
+              std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1])));
+    // Two triangles and a quadrilateral per process; rank 0's triangles both
+    // -1, the others' one of each: the triangles' majority is -1 only over
+    // the whole mesh (each other process alone is balanced, +1).
+    Mesh cells;
+    cells.dim = 2;
+    cells.points.assign(8, 0.0);
+    const NodeId tri[3] = {0, 1, 2}, quad[4] = {0, 1, 2, 3};
+    cells.cells.push_back(CellType::triangle, tri);
+    cells.cells.push_back(CellType::triangle, tri);
+    cells.cells.push_back(CellType::quadrilateral, quad);
+    const std::vector<std::int8_t> own = rank == 0 ? std::vector<std::int8_t>{-1, -1, 1} : std::vector<std::int8_t>{1, -1, 1};
+    EXPECT_EQ(mpi::dominant_orientations_over_parts(MPI_COMM_WORLD, cells, own), (std::vector<std::int8_t>{-1, -1, 1}));
+    EXPECT_THROW(mpi::dominant_orientations_over_parts(MPI_COMM_WORLD, cells, std::vector<std::int8_t>{1}), MeshError);
+}
+
+TEST(PartSetup, InterfaceNodesOnEveryMarkerAnyProcessHasThemOn) {
+    const int rank = rank_of(), size = size_of();
+    // Every process: its own node (global 100 + rank), then the shared nodes 7 and 8.
+    Mesh part;
+    part.dim = 2;
+    part.points = {double(rank), 0, 7, 0, 8, 0};
+    const std::vector<std::int64_t> ids = {100 + rank, 7, 8};
+    part.markers = {{"a", {}}, {"b", {}}};
+    const NodeId own_node = 0, seven = 1, eight = 2;
+    if (rank == size - 1) part.markers[0].elements.push_back(CellType::vertex, {&seven, 1});
+    if (rank == 0) {
+        part.markers[1].elements.push_back(CellType::vertex, {&own_node, 1});
+        part.markers[1].elements.push_back(CellType::vertex, {&eight, 1});
+    }
+    const std::vector<NodeId> interface = {seven, eight};
+    const std::vector<std::uint8_t> owned = mpi::share_interface_markers(MPI_COMM_WORLD, part, interface, ids);
+    EXPECT_EQ(owned, rank == 0 ? (std::vector<std::uint8_t>{1, 1, 1}) : (std::vector<std::uint8_t>{1, 0, 0}));
+    EXPECT_EQ(marker_nodes(part.markers[0]), (std::vector<NodeId>{seven}));
+    EXPECT_EQ(marker_nodes(part.markers[1]),
+              rank == 0 ? (std::vector<NodeId>{own_node, eight}) : (std::vector<NodeId>{eight}));
 }
 
 }  // namespace
