@@ -394,7 +394,7 @@ std::string invalid_result_advice(Method method, const DeformArgs& a) {
             add(a.untangle, untangle);
             break;
         case Method::dgm:
-            add(a.setup.dgm_substep, "--dgm-substep");
+            add(given("--dgm-substep"), "--dgm-substep");
             tries.push_back("--method dg-harmonic");
             break;
         case Method::idw:
@@ -414,7 +414,7 @@ std::string invalid_result_advice(Method method, const DeformArgs& a) {
         case Method::dg_harmonic:
             add(!a.no_untangle, "without --no-untangle (its last resort repairs the cells its step folds)");
             tries.push_back(given("--harmonic-wall-spacing")
-                                ? "a smaller --harmonic-wall-spacing than " + number_text(a.setup.harmonic_wall_spacing) +
+                                ? "a smaller --harmonic-wall-spacing than " + a.setup.option("harmonic-wall-spacing") +
                                       " (a finer coarse level)"
                                 : "a finer coarse level (--harmonic-wall-spacing 3)");
             break;

@@ -62,21 +62,7 @@ nlohmann::json processor_args_json(const DeformArgs& a, const std::string& given
             {"given", std::vector<std::string>(s.given.begin(), s.given.end())},
             {"zone", s.zone},
             {"threads", s.threads},
-            {"a_translation", s.a_translation},
-            {"a_rotation", s.a_rotation},
-            {"length_scale", s.length_scale},
-            {"weights", s.weights},
-            {"dgm_substep", s.dgm_substep},
-            {"idw_exponent_moving", s.idw_exponent_moving},
-            {"idw_exponent_static", s.idw_exponent_static},
-            {"rbf_radius", s.rbf_radius},
-            {"rbf_greedy", s.rbf_greedy},
-            {"harmonic_wall_spacing", s.harmonic_wall_spacing},
-            {"harmonic_growth", s.harmonic_growth},
-            {"harmonic_redo_below", s.harmonic_redo_below},
-            {"laplacian_increments", s.laplacian_increments},
-            {"laplacian_exponent", s.laplacian_exponent},
-            {"laplacian_model", s.laplacian_model},
+            {"options", s.options},
             {"output", a.output},
             {"given_output", given_output},
             {"json", a.json},
@@ -96,21 +82,7 @@ DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_
     for (const auto& g : j.at("given")) s.given.insert(g.get<std::string>());
     s.zone = j.at("zone");
     s.threads = j.at("threads");
-    s.a_translation = j.at("a_translation");
-    s.a_rotation = j.at("a_rotation");
-    s.length_scale = j.at("length_scale");
-    s.weights = j.at("weights");
-    s.dgm_substep = j.at("dgm_substep");
-    s.idw_exponent_moving = j.at("idw_exponent_moving");
-    s.idw_exponent_static = j.at("idw_exponent_static");
-    s.rbf_radius = j.at("rbf_radius");
-    s.rbf_greedy = j.at("rbf_greedy");
-    s.harmonic_wall_spacing = j.at("harmonic_wall_spacing");
-    s.harmonic_growth = j.at("harmonic_growth");
-    s.harmonic_redo_below = j.at("harmonic_redo_below");
-    s.laplacian_increments = j.at("laplacian_increments");
-    s.laplacian_exponent = j.at("laplacian_exponent");
-    s.laplacian_model = j.at("laplacian_model");
+    s.options = j.at("options").get<std::map<std::string, std::string, std::less<>>>();
     a.output = j.at("output");
     given_output = j.at("given_output");
     a.json = j.at("json");

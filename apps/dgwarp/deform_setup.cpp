@@ -15,7 +15,7 @@
 #include "dgwarp/motion/planar_motion.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/plan/plan_file.hpp"
-#include "dgwarp/methods/option_names.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
 #include "report.hpp"
@@ -23,14 +23,6 @@
 namespace dgwarp::cli {
 
 namespace {
-
-/// --length-scale: a positive number, or 0 for "auto"; -1 when it is neither.
-double parse_length_scale(const std::string& text) {
-    if (text == "auto") return 0.0;
-    double value = 0;
-    if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0)) return -1;
-    return value;
-}
 
 std::string joined(const std::vector<std::string>& names) {
     std::string s;
@@ -43,8 +35,6 @@ std::string method_list() {
     for (Method m : all_methods) s += (s.empty() ? "" : ", ") + std::string(method_name(m));
     return s;
 }
-
-std::string length_scale_text(double l) { return l == 0 ? "auto" : number_text(l); }
 
 // A loaded plan fixes its method's options: one given on the command line
 // that differs from the plan's is a mistake, not silently dropped.
@@ -106,91 +96,40 @@ void add_setup_options(CLI::App* cmd, SetupArgs& a) {
         ->capture_default_str()
         ->each([&a](const std::string&) { a.method_given = true; });
     add_threads_option(cmd, a.threads, "all cores");
-    // The defaults are the library's (the paper's values for DG-IDW).
-    const DgIdwOptions dg_idw;
-    cmd->add_option("--a-translation", a.a_translation,
-                    "DG-IDW weight a of the translation (paper: " + number_text(dg_idw.a_translation) + "; " +
-                        number_text(dg_idw_a_min) + " to " + number_text(dg_idw_a_max) + ")")
-        ->capture_default_str()
-        ->check(number_between(dg_idw_a_min, dg_idw_a_max))
-        ->each(given("--a-translation"));
-    cmd->add_option("--a-rotation", a.a_rotation,
-                    "DG-IDW weight a of the rotation (paper: " + number_text(dg_idw.a_rotation) + "; " +
-                        number_text(dg_idw_a_min) + " to " + number_text(dg_idw_a_max) + ")")
-        ->capture_default_str()
-        ->check(number_between(dg_idw_a_min, dg_idw_a_max))
-        ->each(given("--a-rotation"));
-    cmd->add_option("--length-scale", a.length_scale,
-                    "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or "
-                    "'auto' (the moving boundary's diagonal, reduced so that max(a) L fits in the gap between the "
-                    "moving and the static boundary; docs/dg-idw-length-scale.md)")
-        ->capture_default_str()
-        ->check(CLI::Validator(
-            [](std::string& text) -> std::string {
-                return parse_length_scale(text) < 0 ? "expected a positive number or 'auto', got " + text : "";
-            },
-            "", ""))
-        ->each(given("--length-scale"));
-    cmd->add_option("--dg-idw-weights", a.weights,
-                    "DG-IDW corner weights: 'paper' (default; the paper's formula) or 'continuous' (each weight "
-                    "times the node's barycentric coordinate: no jump across graph faces; docs/dg-idw.md)")
-        ->check(CLI::IsMember({"paper", "continuous"}))
-        ->each(given("--dg-idw-weights"));
-    cmd->add_flag("--dgm-substep", a.dgm_substep,
-                  "DGM: when the moved graph is invalid, split the motion into increments (default: fail)")
-        ->each(given("--dgm-substep"));
-    cmd->add_option("--idw-moving-exponent", a.idw_exponent_moving, "IDW: exponent c_d of the moving nodes' distances")
-        ->capture_default_str()
-        ->check(positive_number_up_to(16))
-        ->each(given("--idw-moving-exponent"));
-    cmd->add_option("--idw-static-exponent", a.idw_exponent_static, "IDW: exponent c_s of the static nodes' distances")
-        ->capture_default_str()
-        ->check(positive_number_up_to(16))
-        ->each(given("--idw-static-exponent"));
-    cmd->add_option("--rbf-radius", a.rbf_radius, "RBF: Wendland C2 support radius (0 = global: dense solve)")
-        ->capture_default_str()
-        ->check(non_negative_number())
-        ->each(given("--rbf-radius"));
-    cmd->add_option("--rbf-greedy", a.rbf_greedy,
-                    "RBF: greedy data reduction to this boundary error (mesh units; 0 = all centres)")
-        ->capture_default_str()
-        ->check(non_negative_number())
-        ->each(given("--rbf-greedy"));
-    cmd->add_option("--harmonic-wall-spacing", a.harmonic_wall_spacing,
-                    "DG-harmonic: coarse-level spacing next to a wall, in boundary-node spacings (smaller: a finer "
-                    "coarse level, slower steps; docs/dg-harmonic.md)")
-        ->capture_default_str()
-        ->check(positive_number())
-        ->each(given("--harmonic-wall-spacing"));
-    cmd->add_option("--harmonic-growth", a.harmonic_growth,
-                    "DG-harmonic: coarse-level spacing away from the walls, as a fraction of the wall distance")
-        ->capture_default_str()
-        ->check(positive_number())
-        ->each(given("--harmonic-growth"));
-    cmd->add_option("--harmonic-redo-below", a.harmonic_redo_below,
-                    "DG-harmonic's guard: a step whose minimum quality falls below this fraction of the original "
-                    "mesh's, or that inverts a cell, is solved again by laplacian and the better result kept (0: only "
-                    "when a cell inverts; -1: never; docs/dg-harmonic.md)")
-        ->capture_default_str()
-        ->check(number_between(-1, 0.99))
-        ->each(given("--harmonic-redo-below"));
-    cmd->add_option("--laplacian-increments", a.laplacian_increments,
-                    "laplacian: increments per step, each assembled on the mesh the earlier ones moved "
-                    "(docs/laplacian.md)")
-        ->capture_default_str()
-        ->check(whole_number_between(1, 64))
-        ->each(given("--laplacian-increments"));
-    cmd->add_option("--laplacian-exponent", a.laplacian_exponent,
-                    "laplacian: stiffness exponent e, stiffness (mean volume / cell volume)^e (0 to 4)")
-        ->capture_default_str()
-        ->check(number_between(0, 4))
-        ->each(given("--laplacian-exponent"));
-    cmd->add_option("--laplacian-model", a.laplacian_model,
-                    "laplacian: 'elasticity' (linear elasticity, the components coupled) or 'laplacian' (the "
-                    "displacement Laplacian per component)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"elasticity", "laplacian"}))
-        ->each(given("--laplacian-model"));
+    // One flag per method option of the library's table, its default the library's.
+    const MethodOptions defaults;
+    for (const MethodOption& row : method_option_table) {
+        if (row.tuning) continue;  // the methods' internal constants: not flags
+        const std::string flag = "--" + std::string(row.name);
+        const std::string name(row.name);
+        if (row.kind == OptionKind::on_off) {
+            cmd->add_flag_function(
+                   flag, [&a, name](std::int64_t) { a.options[name] = "true"; }, std::string(row.help))
+                ->each(given(flag));
+            continue;
+        }
+        std::string help(row.help);
+        if (row.kind != OptionKind::word || row.name != "dg-idw-weights")
+            help += " (default " + option_text(row, defaults) + "; " + expected_values(row) + ")";
+        else
+            help += " (default paper, or a loaded plan's)";
+        cmd->add_option(flag, a.options[name], help)
+            ->type_name(row.kind == OptionKind::whole_number     ? "INT"
+                        : row.kind == OptionKind::number_or_auto ? "NUMBER|auto"
+                        : row.kind == OptionKind::word           ? "WORD"
+                                                                  : "NUMBER")
+            ->check(CLI::Validator(
+                [&row](std::string& text) -> std::string {
+                    try {
+                        parse_option_value(row, text);
+                    } catch (const Error&) {
+                        return "expected " + expected_values(row) + ", got " + text;
+                    }
+                    return {};
+                },
+                "", ""))
+            ->each(given(flag));
+    }
 }
 
 std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
@@ -200,23 +139,17 @@ std::vector<Method> chosen_methods(const SetupArgs& args, bool allow_all) {
                                                (allow_all ? ", or all" : ""));
 }
 
+std::map<std::string, std::string, std::less<>> default_option_texts() {
+    std::map<std::string, std::string, std::less<>> texts;
+    const MethodOptions defaults;
+    for (const MethodOption& row : method_option_table)
+        if (!row.tuning) texts[std::string(row.name)] = option_text(row, defaults);
+    return texts;
+}
+
 MethodOptions method_options(const SetupArgs& args) {
     MethodOptions o;
-    o.dg_idw.a_translation = args.a_translation;
-    o.dg_idw.a_rotation = args.a_rotation;
-    o.dg_idw.length_scale = parse_length_scale(args.length_scale);
-    o.dg_idw.weighting = args.weights == "continuous" ? DgIdwWeighting::continuous : DgIdwWeighting::paper;
-    o.dgm.on_invalid = args.dgm_substep ? DgmOptions::OnInvalidGraph::substep : DgmOptions::OnInvalidGraph::fail;
-    o.idw.exponent_moving = args.idw_exponent_moving;
-    o.idw.exponent_static = args.idw_exponent_static;
-    o.rbf.support_radius = args.rbf_radius;
-    o.rbf.greedy_tolerance = args.rbf_greedy;
-    o.dg_harmonic.wall_spacing = args.harmonic_wall_spacing;
-    o.dg_harmonic.growth = args.harmonic_growth;
-    o.dg_harmonic.redo_below = args.harmonic_redo_below;
-    o.laplacian.increments = args.laplacian_increments;
-    o.laplacian.stiffness_exponent = args.laplacian_exponent;
-    o.laplacian.model = args.laplacian_model == "laplacian" ? LaplacianModel::laplacian : LaplacianModel::elasticity;
+    for (const std::string& flag : args.given) set_method_option(o, flag, args.option(std::string_view(flag).substr(2)));
     return o;
 }
 
@@ -382,28 +315,18 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
         p.method = planned;
         // The plan's options are the ones used; one given here that differs is a mistake.
         const MethodOptions& asked = p.options;
-        if (const auto* d = std::get_if<DgIdwPlan>(&loaded)) {
-            const DgIdwOptions& o = d->options;
-            refuse_conflict(in.args, plan_file, "--a-translation", asked.dg_idw.a_translation != o.a_translation,
-                            number_text(o.a_translation));
-            refuse_conflict(in.args, plan_file, "--a-rotation", asked.dg_idw.a_rotation != o.a_rotation,
-                            number_text(o.a_rotation));
-            refuse_conflict(in.args, plan_file, "--length-scale", asked.dg_idw.length_scale != o.length_scale,
-                            length_scale_text(o.length_scale));
-            refuse_conflict(in.args, plan_file, "--dg-idw-weights", asked.dg_idw.weighting != o.weighting,
-                            weighting_name(o.weighting));
-            p.options.dg_idw = o;
-        }
+        MethodOptions in_plan = asked;
+        if (const auto* d = std::get_if<DgIdwPlan>(&loaded)) in_plan.dg_idw = d->options;
         if (const auto* h = std::get_if<DgHarmonicPlan>(&loaded)) {
-            const DgHarmonicOptions& o = h->options;
-            refuse_conflict(in.args, plan_file, "--harmonic-wall-spacing",
-                            asked.dg_harmonic.wall_spacing != o.wall_spacing, number_text(o.wall_spacing));
-            refuse_conflict(in.args, plan_file, "--harmonic-growth", asked.dg_harmonic.growth != o.growth,
-                            number_text(o.growth));
-            p.options.dg_harmonic = o;
+            in_plan.dg_harmonic = h->options;
             // The guard acts at step time: the run's value, and the mesh's cells it measures.
-            p.options.dg_harmonic.redo_below = asked.dg_harmonic.redo_below;
+            in_plan.dg_harmonic.redo_below = asked.dg_harmonic.redo_below;
         }
+        for (const MethodOption& row : method_option_table)
+            if (row.method == planned && row.kept_by_plan)
+                refuse_conflict(in.args, plan_file, "--" + std::string(row.name),
+                                option_text(row, asked) != option_text(row, in_plan), option_text(row, in_plan));
+        p.options = in_plan;
         // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
         attach_frame_guard(loaded, in.mesh, in.boundary.boundary, p.options);
         refuse_other_methods_options(in.args, p.method);
@@ -476,21 +399,22 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, War
 }
 
 nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
-    return {{"a_translation", o.dg_idw.a_translation},
-            {"a_rotation", o.dg_idw.a_rotation},
-            {"length_scale", o.dg_idw.length_scale == 0 ? nlohmann::json("auto") : nlohmann::json(o.dg_idw.length_scale)},
-            {"dg_idw_weights", weights_known ? nlohmann::json(weighting_name(o.dg_idw.weighting)) : nlohmann::json(nullptr)},
-            {"dgm_substep", o.dgm.on_invalid == DgmOptions::OnInvalidGraph::substep},
-            {"idw_exponent_moving", o.idw.exponent_moving},
-            {"idw_exponent_static", o.idw.exponent_static},
-            {"rbf_radius", o.rbf.support_radius},
-            {"rbf_greedy_tolerance", o.rbf.greedy_tolerance},
-            {"harmonic_wall_spacing", o.dg_harmonic.wall_spacing},
-            {"harmonic_growth", o.dg_harmonic.growth},
-            {"harmonic_redo_below", o.dg_harmonic.redo_below},
-            {"laplacian_increments", o.laplacian.increments},
-            {"laplacian_exponent", o.laplacian.stiffness_exponent},
-            {"laplacian_model", o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity"}};
+    nlohmann::json j = nlohmann::json::object();
+    for (const MethodOption& row : method_option_table) {
+        if (row.tuning) continue;
+        const std::string key(row.report_key);
+        const OptionValue v = row.get(o);
+        switch (row.kind) {
+            case OptionKind::number: j[key] = v.number; break;
+            case OptionKind::whole_number: j[key] = static_cast<std::int64_t>(v.number); break;
+            case OptionKind::number_or_auto: j[key] = v.number == 0 ? nlohmann::json("auto") : nlohmann::json(v.number); break;
+            case OptionKind::word: j[key] = std::string(v.word); break;
+            case OptionKind::on_off: j[key] = v.number != 0; break;
+        }
+    }
+    // A plan file's weighting is known only once it is loaded.
+    if (!weights_known) j["dg_idw_weights"] = nullptr;
+    return j;
 }
 
 nlohmann::json cyclic_pairs_json(const std::vector<std::pair<std::string, std::string>>& pairs) {
@@ -525,7 +449,7 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
             {"motion", in.args.motion},
             {"mesh", mesh_json(output_mesh(in))},
             {"boundary", boundary_json(in)},
-            {"options", options_json(method_options(in.args), !in.args.weights.empty())},
+            {"options", options_json(method_options(in.args), in.args.given.count("--dg-idw-weights") > 0)},
             {"seconds", {{"read", in.read_seconds}, {"resolve", in.resolve_seconds}, {"original_quality", in.quality_seconds}}},
             {"original_quality", quality_json(in.original.summary)},
             {"warnings", warning_texts_json(in.boundary.warnings)},

@@ -3,12 +3,14 @@
 // motion, classifying the boundary, and building (or loading) a method's plan.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dgwarp/io/mesh_io.hpp"
@@ -17,6 +19,7 @@
 #include "dgwarp/mesh/planar_case.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
@@ -25,6 +28,9 @@
 #include "warning_printer.hpp"
 
 namespace dgwarp::cli {
+
+/// Every method option's default as text (option_text of MethodOptions{}).
+std::map<std::string, std::string, std::less<>> default_option_texts();
 
 struct SetupArgs {
     std::string mesh;
@@ -40,22 +46,12 @@ struct SetupArgs {
     /// mesh and the motion alike, with a warning; "" for none.
     std::string writable_for;
     int threads = 0;
-    // The method options, with the library's defaults.
-    double a_translation = DgIdwOptions{}.a_translation;
-    double a_rotation = DgIdwOptions{}.a_rotation;
-    std::string length_scale = number_text(DgIdwOptions{}.length_scale);  // a number, or "auto"
-    std::string weights;  // DG-IDW weighting: "paper" or "continuous"; empty = paper, or a loaded plan's
-    bool dgm_substep = DgmOptions{}.on_invalid == DgmOptions::OnInvalidGraph::substep;
-    double idw_exponent_moving = IdwOptions{}.exponent_moving;
-    double idw_exponent_static = IdwOptions{}.exponent_static;
-    double rbf_radius = RbfOptions{}.support_radius;    // 0 = global support
-    double rbf_greedy = RbfOptions{}.greedy_tolerance;  // 0 = all boundary nodes are centres
-    double harmonic_wall_spacing = DgHarmonicOptions{}.wall_spacing;
-    double harmonic_growth = DgHarmonicOptions{}.growth;
-    double harmonic_redo_below = DgHarmonicOptions{}.redo_below;
-    int laplacian_increments = LaplacianOptions{}.increments;
-    double laplacian_exponent = LaplacianOptions{}.stiffness_exponent;
-    std::string laplacian_model = "elasticity";
+    /// The method options (methods/option_table.hpp) by name without "--",
+    /// as text: the library's defaults, or what the command line gave (`given`).
+    std::map<std::string, std::string, std::less<>> options = default_option_texts();
+
+    /// The text of method option `name` (a row of the table).
+    const std::string& option(std::string_view name) const { return options.find(name)->second; }
 };
 
 /// Adds the mesh, --motion and --zone to `cmd` (what read_motion_inputs reads).

@@ -13,7 +13,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/openfoam_poly_mesh.hpp"
 #include "dgwarp/methods/method.hpp"
-#include "dgwarp/methods/option_names.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/run/deform_frame.hpp"
 #include "dgwarp/run/original_cells.hpp"
 #include "dgwarp/run/run_deformation.hpp"

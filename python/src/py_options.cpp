@@ -1,10 +1,12 @@
 #include "py_options.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <string_view>
 
-#include "dgwarp/methods/option_names.hpp"
+#include "dgwarp/core/error.hpp"
+#include "dgwarp/methods/option_table.hpp"
 
 namespace py = pybind11;
 
@@ -26,7 +28,8 @@ std::string keyword(std::string_view option) {
 
 std::string option_keywords() {
     std::string s;
-    for (const MethodOptionName& o : method_option_names) s += (s.empty() ? "" : ", ") + keyword(o.name);
+    for (const MethodOption& o : method_option_table)
+        if (!o.tuning) s += (s.empty() ? "" : ", ") + keyword(o.name);
     return s;
 }
 
@@ -76,94 +79,75 @@ const char* shared_nodes_name(SharedNodeRule rule) {
 
 /// The method options given as keyword arguments (as the CLI's flags, with
 /// '_' for '-'); an option of another method than `method` is refused, as the
-/// CLI refuses it (deform_setup.cpp). Ranges are checked by the library.
+/// CLI refuses it (deform_setup.cpp). Each value goes through the option
+/// table's text (methods/option_table.hpp), which checks its range.
 MethodOptions method_options(Method method, const py::kwargs& kwargs, const char* function) {
     MethodOptions o;
     for (auto item : kwargs) {
         const std::string name = py::str(item.first);
         const py::handle value = item.second;
-        const std::optional<Method> owner = option_method(name);
-        if (!owner || name.find('-') != std::string::npos)
+        const MethodOption* row = find_method_option(name);
+        if (!row || row->tuning || name.find('-') != std::string::npos)
             throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name +
                                  "'; the method options are " + option_keywords());
-        if (*owner != method)
-            throw py::value_error(name + " is an option of " + std::string(method_name(*owner)) +
+        if (row->method != method)
+            throw py::value_error(name + " is an option of " + std::string(method_name(row->method)) +
                                   "; it does nothing with " + std::string(method_name(method)));
-        if (name == "a_translation") o.dg_idw.a_translation = number_option(value, name);
-        else if (name == "a_rotation") o.dg_idw.a_rotation = number_option(value, name);
-        else if (name == "length_scale") {
-            if (py::isinstance<py::str>(value)) {
-                if (value.cast<std::string>() != "auto")
-                    throw py::value_error("length_scale must be a positive number or 'auto', got '" +
-                                          value.cast<std::string>() + "'");
-                o.dg_idw.length_scale = 0;  // auto
-            } else {
-                o.dg_idw.length_scale = number_option(value, name);
-                if (!(o.dg_idw.length_scale > 0))
-                    throw py::value_error("length_scale must be a positive number or 'auto', got " +
-                                          py::repr(value).cast<std::string>());
-            }
-        } else if (name == "dg_idw_weights") {
-            const std::string w = py::str(value);
-            if (w != "paper" && w != "continuous")
-                throw py::value_error("dg_idw_weights must be 'paper' or 'continuous', got '" + w + "'");
-            o.dg_idw.weighting = w == "continuous" ? DgIdwWeighting::continuous : DgIdwWeighting::paper;
-        } else if (name == "dgm_substep") {
-            if (!py::isinstance<py::bool_>(value)) throw py::type_error("dgm_substep must be True or False");
-            o.dgm.on_invalid = value.cast<bool>() ? DgmOptions::OnInvalidGraph::substep : DgmOptions::OnInvalidGraph::fail;
-        } else if (name == "idw_moving_exponent") o.idw.exponent_moving = number_option(value, name);
-        else if (name == "idw_static_exponent") o.idw.exponent_static = number_option(value, name);
-        else if (name == "rbf_radius") o.rbf.support_radius = number_option(value, name);
-        else if (name == "rbf_greedy") o.rbf.greedy_tolerance = number_option(value, name);
-        else if (name == "harmonic_wall_spacing") o.dg_harmonic.wall_spacing = number_option(value, name);
-        else if (name == "harmonic_growth") o.dg_harmonic.growth = number_option(value, name);
-        else if (name == "harmonic_redo_below") o.dg_harmonic.redo_below = number_option(value, name);
-        else if (name == "laplacian_increments") {
-            const double n = number_option(value, name);
-            if (!(n >= 1 && n <= 64 && n == std::floor(n)))
-                throw py::value_error("laplacian_increments must be a whole number from 1 to 64, got " +
-                                      py::repr(value).cast<std::string>());
-            o.laplacian.increments = static_cast<int>(n);
-        } else if (name == "laplacian_exponent") o.laplacian.stiffness_exponent = number_option(value, name);
-        else if (name == "laplacian_model") {
-            const std::string m = py::str(value);
-            if (m != "elasticity" && m != "laplacian")
-                throw py::value_error("laplacian_model must be 'elasticity' or 'laplacian', got '" + m + "'");
-            o.laplacian.model = m == "laplacian" ? LaplacianModel::laplacian : LaplacianModel::elasticity;
+        std::string text;
+        switch (row->kind) {
+            case OptionKind::on_off:
+                if (!py::isinstance<py::bool_>(value)) throw py::type_error(name + " must be True or False");
+                text = value.cast<bool>() ? "true" : "false";
+                break;
+            case OptionKind::word:
+                if (!py::isinstance<py::str>(value))
+                    throw py::type_error(name + " must be " + expected_values(*row) + ", got " +
+                                         py::repr(value).cast<std::string>());
+                text = value.cast<std::string>();
+                break;
+            default:
+                if (row->kind == OptionKind::number_or_auto && py::isinstance<py::str>(value)) {
+                    text = value.cast<std::string>();
+                    if (text != "auto")
+                        throw py::value_error(name + " must be " + expected_values(*row) + ", got '" + text + "'");
+                    break;
+                }
+                {
+                    // Exact: the shortest text that reads back to the same double.
+                    const double v = number_option(value, name);
+                    char buf[32];
+                    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+                    text.assign(buf, end);
+                }
         }
-        else throw std::logic_error("method option " + name + " is not bound");
+        try {
+            row->set(o, parse_option_value(*row, text));
+        } catch (const UsageError& e) {
+            // "method option a-translation: ..." in Python's spelling of the name.
+            std::string message = e.what();
+            if (const std::size_t at = message.find(row->name); at != std::string::npos)
+                message.replace(at, row->name.size(), name);
+            throw UsageError(message);  // dgwarp.InputError, as the library's range checks
+        }
     }
     return o;
 }
 
 py::dict options_dict(Method method, const MethodOptions& o) {
     py::dict d;
-    switch (method) {
-        case Method::dg_idw:
-            d["a_translation"] = o.dg_idw.a_translation;
-            d["a_rotation"] = o.dg_idw.a_rotation;
-            d["length_scale"] = o.dg_idw.length_scale == 0 ? py::object(py::str("auto")) : py::object(py::float_(o.dg_idw.length_scale));
-            d["dg_idw_weights"] = weighting_name(o.dg_idw.weighting);
-            break;
-        case Method::dgm: d["dgm_substep"] = o.dgm.on_invalid == DgmOptions::OnInvalidGraph::substep; break;
-        case Method::idw:
-            d["idw_moving_exponent"] = o.idw.exponent_moving;
-            d["idw_static_exponent"] = o.idw.exponent_static;
-            break;
-        case Method::rbf:
-            d["rbf_radius"] = o.rbf.support_radius;
-            d["rbf_greedy"] = o.rbf.greedy_tolerance;
-            break;
-        case Method::dg_harmonic:
-            d["harmonic_wall_spacing"] = o.dg_harmonic.wall_spacing;
-            d["harmonic_growth"] = o.dg_harmonic.growth;
-            d["harmonic_redo_below"] = o.dg_harmonic.redo_below;
-            break;
-        case Method::laplacian:
-            d["laplacian_increments"] = o.laplacian.increments;
-            d["laplacian_exponent"] = o.laplacian.stiffness_exponent;
-            d["laplacian_model"] = o.laplacian.model == LaplacianModel::laplacian ? "laplacian" : "elasticity";
-            break;
+    for (const MethodOption& row : method_option_table) {
+        if (row.method != method || row.tuning) continue;
+        const OptionValue v = row.get(o);
+        const std::string key = keyword(row.name);
+        switch (row.kind) {
+            case OptionKind::number: d[key.c_str()] = v.number; break;
+            case OptionKind::whole_number: d[key.c_str()] = static_cast<long long>(v.number); break;
+            case OptionKind::number_or_auto:
+                d[key.c_str()] = v.number == 0 ? py::object(py::str("auto")) : py::object(py::float_(v.number));
+                break;
+            case OptionKind::word: d[key.c_str()] = std::string(v.word); break;
+            case OptionKind::on_off: d[key.c_str()] = v.number != 0; break;
+        }
     }
     return d;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Methods and their options by the names the Python API gives them: the
-// CLI's flags with '_' for '-' (the table in methods/option_names.hpp).
+// CLI's flags with '_' for '-' (the table in methods/option_table.hpp).
 #include <pybind11/pybind11.h>
 
 #include <string>

@@ -15,6 +15,7 @@
 #include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
 #include "dgwarp/methods/mesh_fingerprint.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/mpi/collective_checks.hpp"
 #include "dgwarp/mpi/distributed_coarse_points.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
@@ -66,20 +67,10 @@ std::string check_local_input(int dim, std::span<const double> points, std::span
 // What every process must give alike: the method, the dimension and every
 // option, as one hash (each field listed: the structs have padding).
 std::uint64_t setup_fingerprint(Method method, int dim, const MethodOptions& o) {
-    const double v[] = {static_cast<double>(method), static_cast<double>(dim),
-                        o.dg_idw.a_translation, o.dg_idw.a_rotation, o.dg_idw.length_scale,
-                        static_cast<double>(o.dg_idw.weighting), static_cast<double>(o.dgm.on_invalid),
-                        static_cast<double>(o.dgm.max_substeps), o.idw.exponent_moving, o.idw.exponent_static,
-                        o.idw.length_scale, o.rbf.support_radius, o.rbf.greedy_tolerance,
-                        static_cast<double>(o.rbf.max_dense_bytes), static_cast<double>(o.rbf.solver),
-                        o.dg_harmonic.wall_spacing, o.dg_harmonic.growth, o.dg_harmonic.translation_exponent,
-                        o.dg_harmonic.rotation_exponent, o.dg_harmonic.rigid_zone, o.dg_harmonic.rigid_gap,
-                        o.dg_harmonic.redo_below, static_cast<double>(o.dg_harmonic.redo_max_increments),
-                        static_cast<double>(o.dg_harmonic.redo_max_nodes_3d),
-                        static_cast<double>(o.laplacian.increments), static_cast<double>(o.laplacian.max_increments),
-                        o.laplacian.stiffness_exponent, static_cast<double>(o.laplacian.model),
-                        o.laplacian.poisson_ratio};
-    return hash64_of(std::span<const double>(v));
+    // Every option, tuning ones too, exactly (methods/option_table.hpp).
+    const std::string text = std::to_string(static_cast<int>(method)) + " " + std::to_string(dim) + "\n" +
+                             method_options_text(o);
+    return hash64_of(std::as_bytes(std::span<const char>(text)));
 }
 
 // "" when this process's method, dimension and options are process 0's; else what differs.

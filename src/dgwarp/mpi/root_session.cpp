@@ -9,6 +9,7 @@
 
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/core/stopwatch.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/mpi/large_transfers.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 
@@ -19,15 +20,13 @@ namespace {
 enum Command : int { command_stop = 0, command_prepare = 1, command_deform = 2, command_everywhere = 3 };
 enum Tag : int { tag_ids = 7401, tag_points, tag_boundary, tag_moving, tag_motion, tag_result };
 
-// What every process needs to prepare (one binary for every process of an
-// mpirun, so the options go as bytes).
+// What every process needs to prepare besides its part; the method options
+// go as the option table's text (exact: methods/option_table.hpp).
 struct PrepareHeader {
     int method;
     int dim;
     int threads;
-    MethodOptions options;
 };
-static_assert(std::is_trivially_copyable_v<PrepareHeader>);
 static_assert(std::is_trivially_copyable_v<NodeMotion>);
 
 // Vectors of any size (in pieces of at most INT_MAX bytes: large_transfers.hpp).
@@ -103,8 +102,9 @@ RootRun root_prepare(MPI_Comm comm, const Mesh& mesh, const BoundarySet& boundar
     run.dim = mesh.dim;
     run.parts = split_mesh(mesh, boundary, size, node_parts);
     broadcast_command(comm, command_prepare);
-    PrepareHeader h{static_cast<int>(method), mesh.dim, threads, options};
+    PrepareHeader h{static_cast<int>(method), mesh.dim, threads};
     MPI_Bcast(&h, sizeof h, MPI_BYTE, 0, comm);
+    broadcast_text(comm, method_options_text(options));
     for (int r = 1; r < size; ++r) {
         const NodePart& p = run.parts[static_cast<std::size_t>(r)];
         send_vector(comm, p.global_ids, r, tag_ids);
@@ -174,6 +174,7 @@ int serve_root(MPI_Comm comm, const std::function<int(const std::string& payload
             } else if (command == command_prepare) {
                 PrepareHeader h{};
                 MPI_Bcast(&h, sizeof h, MPI_BYTE, 0, comm);
+                const MethodOptions options = method_options_from_text(broadcast_text(comm, {}));
                 if (h.threads > 0) set_num_threads(h.threads);
                 plan.reset();
                 part.global_ids = receive_vector<std::int64_t>(comm, 0, tag_ids);
@@ -181,7 +182,7 @@ int serve_root(MPI_Comm comm, const std::function<int(const std::string& payload
                 part.boundary.nodes = receive_vector<NodeId>(comm, 0, tag_boundary);
                 part.boundary.moving = receive_vector<std::uint8_t>(comm, 0, tag_moving);
                 plan = prepare_part(comm, static_cast<Method>(h.method), h.dim, part.points, part.global_ids,
-                                    part.boundary, h.options);
+                                    part.boundary, options);
             } else if (command == command_deform) {
                 const BoundaryMotion motion = receive_vector<NodeMotion>(comm, 0, tag_motion);
                 std::vector<double> out(part.points.size()), seconds;
