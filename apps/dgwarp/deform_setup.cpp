@@ -407,7 +407,7 @@ nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
         switch (row.kind) {
             case OptionKind::number: j[key] = v.number; break;
             case OptionKind::whole_number: j[key] = static_cast<std::int64_t>(v.number); break;
-            case OptionKind::number_or_auto: j[key] = v.number == 0 ? nlohmann::json("auto") : nlohmann::json(v.number); break;
+            case OptionKind::number_or_auto: j[key] = v.automatic ? nlohmann::json("auto") : nlohmann::json(v.number); break;
             case OptionKind::word: j[key] = std::string(v.word); break;
             case OptionKind::on_off: j[key] = v.number != 0; break;
         }

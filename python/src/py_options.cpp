@@ -143,7 +143,7 @@ py::dict options_dict(Method method, const MethodOptions& o) {
             case OptionKind::number: d[key.c_str()] = v.number; break;
             case OptionKind::whole_number: d[key.c_str()] = static_cast<long long>(v.number); break;
             case OptionKind::number_or_auto:
-                d[key.c_str()] = v.number == 0 ? py::object(py::str("auto")) : py::object(py::float_(v.number));
+                d[key.c_str()] = v.automatic ? py::object(py::str("auto")) : py::object(py::float_(v.number));
                 break;
             case OptionKind::word: d[key.c_str()] = std::string(v.word); break;
             case OptionKind::on_off: d[key.c_str()] = v.number != 0; break;

@@ -169,16 +169,21 @@ TEST(MethodOptionTable, TuningRowsTravelExactlyAndAutoStandsForTheSentinel) {
     const MethodOption* exponent = find_method_option("harmonic-translation-exponent");
     ASSERT_NE(exponent, nullptr);
     EXPECT_TRUE(exponent->tuning);
-    EXPECT_EQ(option_text(*exponent, o), "auto");  // -1: the dimension's default
+    EXPECT_EQ(option_text(*exponent, o), "auto");  // unset: the dimension's default
     set_method_option(o, "harmonic-translation-exponent", "2.75");
     EXPECT_EQ(o.dg_harmonic.translation_exponent, 2.75);
     set_method_option(o, "harmonic_translation_exponent", "auto");
-    EXPECT_EQ(o.dg_harmonic.translation_exponent, -1.0);
-    EXPECT_THROW(set_method_option(o, "harmonic-translation-exponent", "-1"), UsageError);  // 'auto', not its sentinel
+    EXPECT_FALSE(o.dg_harmonic.translation_exponent.has_value());
+    EXPECT_THROW(set_method_option(o, "harmonic-translation-exponent", "-1"), UsageError);  // 'auto', not a sentinel
+    EXPECT_THROW(set_method_option(o, "harmonic-translation-exponent", "4.5"), UsageError);
     set_method_option(o, "rbf-solver", "sparse");
     EXPECT_EQ(o.rbf.solver, RbfSolver::sparse);
     EXPECT_EQ(expected_values(*find_method_option("rbf-solver")), "'automatic', 'dense' or 'sparse'");
-    EXPECT_EQ(expected_values(*exponent), "a number from 0 to 8 or 'auto'");
+    EXPECT_EQ(expected_values(*exponent), "a number from 0 to 4 or 'auto'");
+    // A set value that is not in the range (prepare refuses it) is no 'auto' when it travels.
+    o.dg_harmonic.rotation_exponent = -1;
+    EXPECT_EQ(method_options_from_text(method_options_text(o)).dg_harmonic.rotation_exponent, -1.0);
+    o.dg_harmonic.rotation_exponent.reset();
     // Every field a method reads travels: values no flag takes (NaN, beyond
     // the ranges) come back as they were, for prepare to refuse on every process.
     o.dg_idw.a_translation = std::numeric_limits<double>::quiet_NaN();

@@ -33,6 +33,7 @@
 // Results do not depend on the thread count.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -55,18 +56,19 @@ struct DgHarmonicOptions {
     /// Conductivity of a coarse simplex in the two Laplacians:
     /// size^-translation_exponent for the translation, size^-rotation_exponent
     /// for the rotation (times the rigid-zone factor); size is the simplex's
-    /// mean edge length. Prepare time. A negative value takes the
-    /// dimension's default (translation: 3 in 2D, 2.5 in 3D; rotation: 0 in
-    /// 2D, 2.5 in 3D; docs/dg-harmonic.md has the measurements).
-    double translation_exponent = -1;
-    double rotation_exponent = -1;
+    /// mean edge length. Prepare time, 0 to 4. Unset: the dimension's
+    /// default (translation: 3 in 2D, 2.5 in 3D; rotation: 0 in 2D, 2.5 in
+    /// 3D; docs/dg-harmonic.md has the measurements); a plan's are set.
+    std::optional<double> translation_exponent = std::nullopt;
+    std::optional<double> rotation_exponent = std::nullopt;
     /// Rigid zone of the rotation: a simplex closer to the moving boundary
     /// than rho = min(rigid_zone D, rigid_gap d_s) is stiffened by
     /// 1 + (rho / d_m)^2 (D: the moving boundary's bounding-box diagonal; d_m,
     /// d_s: the mean distances of its corners to the nearest moving and
     /// static boundary nodes, d_m at least half its size). Prepare time.
-    /// Negative: the dimension's default (0.25 in 2D, 0 in 3D).
-    double rigid_zone = -1;
+    /// Unset: the dimension's default (0.25 in 2D, 0 in 3D); a plan's is set.
+    /// rigid_gap: negative takes 0.5.
+    std::optional<double> rigid_zone = std::nullopt;
     double rigid_gap = 0.5;
     /// The guard (dg_harmonic_guard.hpp), at step time, when the plan was
     /// prepared with the mesh's cells: a step that inverts a cell or whose

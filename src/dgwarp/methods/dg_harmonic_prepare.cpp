@@ -96,7 +96,7 @@ WallDistances wall_distances(int dim, std::span<const double> points, const Boun
 // Rigid-zone factor of the rotation's conductivity at a point with distances
 // dm, ds to the nearest moving and static boundary nodes.
 double rigid_factor(const DgHarmonicOptions& o, double dm, double ds, double moving_diagonal) {
-    const double rho = std::min(o.rigid_zone * moving_diagonal, o.rigid_gap * ds);
+    const double rho = std::min(*o.rigid_zone * moving_diagonal, o.rigid_gap * ds);
     if (!(rho > 0) || !std::isfinite(rho)) return 1.0;
     return 1.0 + std::min((rho / dm) * (rho / dm), 1e6);
 }
@@ -166,10 +166,10 @@ void edge_weights(const DgHarmonicPlan& plan, std::span<const std::int32_t> simp
         }
         size /= pairs;
         dm = std::max(dm, 0.5 * size);
-        const double kt = o.translation_exponent == 0 ? 1.0 : std::pow(size, -o.translation_exponent);
-        const double kr = (o.rotation_exponent == o.translation_exponent ? kt
-                           : o.rotation_exponent == 0                    ? 1.0
-                                                                         : std::pow(size, -o.rotation_exponent)) *
+        const double kt = *o.translation_exponent == 0 ? 1.0 : std::pow(size, -*o.translation_exponent);
+        const double kr = (*o.rotation_exponent == *o.translation_exponent ? kt
+                           : *o.rotation_exponent == 0                     ? 1.0
+                                                                           : std::pow(size, -*o.rotation_exponent)) *
                           rigid_factor(o, dm, ds, moving_diagonal);
         for (int a = 0; a < corners; ++a)
             for (int b = a + 1; b < corners; ++b) {
@@ -213,12 +213,14 @@ void check_dg_harmonic_options(const DgHarmonicOptions& options) {
         throw Error("DG-harmonic: growth must be finite and positive, got " + std::to_string(options.growth));
     for (const auto& [name, value] : {std::pair{"translation_exponent", options.translation_exponent},
                                       std::pair{"rotation_exponent", options.rotation_exponent}})
-        if (!std::isfinite(value) || value > 4)
-            throw Error(std::string("DG-harmonic: ") + name + " must be at most 4 (negative: the default), got " +
-                        std::to_string(value));
-    for (const auto& [name, value] : {std::pair{"rigid_zone", options.rigid_zone}, std::pair{"rigid_gap", options.rigid_gap}})
-        if (!std::isfinite(value))
-            throw Error(std::string("DG-harmonic: ") + name + " must be finite, got " + std::to_string(value));
+        if (value && !(*value >= 0 && *value <= 4))
+            throw Error(std::string("DG-harmonic: ") + name + " must be 0 to 4 (unset: the default), got " +
+                        std::to_string(*value));
+    if (options.rigid_zone && !(std::isfinite(*options.rigid_zone) && *options.rigid_zone >= 0))
+        throw Error("DG-harmonic: rigid_zone must be finite and >= 0 (unset: the default), got " +
+                    std::to_string(*options.rigid_zone));
+    if (!std::isfinite(options.rigid_gap))
+        throw Error("DG-harmonic: rigid_gap must be finite, got " + std::to_string(options.rigid_gap));
     if (!(options.redo_max_nodes_3d >= 0))
         throw Error("DG-harmonic: redo_max_nodes_3d must not be negative, got " +
                     std::to_string(options.redo_max_nodes_3d));
@@ -231,9 +233,9 @@ void check_dg_harmonic_options(const DgHarmonicOptions& options) {
 
 DgHarmonicOptions resolved_options(const DgHarmonicOptions& options, int dim) {
     DgHarmonicOptions o = options;
-    if (o.translation_exponent < 0) o.translation_exponent = dim == 2 ? 3 : 2.5;
-    if (o.rotation_exponent < 0) o.rotation_exponent = dim == 2 ? 0 : 2.5;
-    if (o.rigid_zone < 0) o.rigid_zone = dim == 2 ? 0.25 : 0;
+    if (!o.translation_exponent) o.translation_exponent = dim == 2 ? 3 : 2.5;
+    if (!o.rotation_exponent) o.rotation_exponent = dim == 2 ? 0 : 2.5;
+    if (!o.rigid_zone) o.rigid_zone = dim == 2 ? 0.25 : 0;
     if (o.rigid_gap < 0) o.rigid_gap = 0.5;
     return o;
 }
@@ -314,7 +316,7 @@ DgHarmonicPlan prepare_dg_harmonic_on_coarse(int dim, std::span<const double> po
             // Without a rigid zone (the 3D default) the distances would weigh
             // nothing: skip their queries (exact nearest-node queries far from a
             // sphere's nodes are slow: 0.2 s of prepare at 202k nodes).
-            const WallDistances wall = plan.options.rigid_zone > 0 ? wall_distances(dim, points, boundary, vertex_node)
+            const WallDistances wall = *plan.options.rigid_zone > 0 ? wall_distances(dim, points, boundary, vertex_node)
                                                                    : WallDistances{};
             std::vector<double> wt, wr;
             edge_weights(plan, g.simplices, edges, vertex_xyz, wall, boundary_diagonal(dim, points, boundary, true), wt,

@@ -12,8 +12,11 @@ namespace dgwarp {
 
 namespace {
 
-OptionValue number_value(double x) { return {x, {}}; }
-OptionValue word_value(std::string_view w) { return {0, w}; }
+OptionValue number_value(double x) { return {x, {}, false}; }
+OptionValue word_value(std::string_view w) { return {0, w, false}; }
+/// `x`, or "auto" when it is `automatic` (the member's value for it).
+OptionValue auto_or(double x, double automatic) { return {x, {}, x == automatic}; }
+OptionValue auto_or(const std::optional<double>& x) { return {x.value_or(0), {}, !x}; }
 
 }  // namespace
 
@@ -30,8 +33,8 @@ const std::array<MethodOption, 27> method_option_table = {{
      "DG-IDW reference length L the distances are divided by: a number (1 reproduces the paper) or 'auto' (the "
      "moving boundary's diagonal, reduced so that max(a) L fits in the gap between the moving and the static "
      "boundary; docs/dg-idw-length-scale.md)",
-     [](const MethodOptions& o) { return number_value(o.dg_idw.length_scale); },
-     [](MethodOptions& o, const OptionValue& v) { o.dg_idw.length_scale = v.number; }},
+     [](const MethodOptions& o) { return auto_or(o.dg_idw.length_scale, 0); },
+     [](MethodOptions& o, const OptionValue& v) { o.dg_idw.length_scale = v.automatic ? 0 : v.number; }},
     {"dg-idw-weights", Method::dg_idw, OptionKind::word, "dg_idw_weights", true, 0, 0, false, {"paper", "continuous"},
      "DG-IDW corner weights: 'paper' (the paper's formula) or 'continuous' (each weight times the node's "
      "barycentric coordinate: no jump across graph faces; docs/dg-idw.md)",
@@ -101,15 +104,17 @@ const std::array<MethodOption, 27> method_option_table = {{
     {"dgm-max-substeps", Method::dgm, OptionKind::whole_number, "dgm_max_substeps", true, 1, 1 << 20, false, {},
      "DGM: the most increments --dgm-substep splits a motion into",
      [](const MethodOptions& o) { return number_value(o.dgm.max_substeps); },
-     [](MethodOptions& o, const OptionValue& v) { o.dgm.max_substeps = static_cast<int>(v.number); }, 0, true},
+     [](MethodOptions& o, const OptionValue& v) { o.dgm.max_substeps = static_cast<int>(v.number); }, true},
     {"idw-length-scale", Method::idw, OptionKind::number_or_auto, "idw_length_scale", false, 0, HUGE_VAL, true, {},
      "IDW: reference length the distances are divided by ('auto': the boundary's diagonal)",
-     [](const MethodOptions& o) { return number_value(o.idw.length_scale); },
-     [](MethodOptions& o, const OptionValue& v) { o.idw.length_scale = v.number; }, 0, true},
+     [](const MethodOptions& o) { return auto_or(o.idw.length_scale, 0); },
+     [](MethodOptions& o, const OptionValue& v) { o.idw.length_scale = v.automatic ? 0 : v.number; }, true},
     {"rbf-max-dense-bytes", Method::rbf, OptionKind::number_or_auto, "rbf_max_dense_bytes", true, 0, 9007199254740992.0,
      true, {}, "RBF: the largest dense system it factorises, in bytes ('auto': its default)",
-     [](const MethodOptions& o) { return number_value(static_cast<double>(o.rbf.max_dense_bytes)); },
-     [](MethodOptions& o, const OptionValue& v) { o.rbf.max_dense_bytes = static_cast<std::size_t>(v.number); }, 0,
+     [](const MethodOptions& o) { return auto_or(static_cast<double>(o.rbf.max_dense_bytes), 0); },
+     [](MethodOptions& o, const OptionValue& v) {
+         o.rbf.max_dense_bytes = v.automatic ? 0 : static_cast<std::size_t>(v.number);
+     },
      true},
     {"rbf-solver", Method::rbf, OptionKind::word, "rbf_solver", true, 0, 0, false, {"automatic", "dense", "sparse"},
      "RBF: the factorisation ('automatic': dense for a global support, sparse otherwise)",
@@ -120,44 +125,50 @@ const std::array<MethodOption, 27> method_option_table = {{
      },
      [](MethodOptions& o, const OptionValue& v) {
          o.rbf.solver = v.word == "dense" ? RbfSolver::dense : v.word == "sparse" ? RbfSolver::sparse : RbfSolver::automatic;
-     },
-     0, true},
+     }, true},
     {"harmonic-translation-exponent", Method::dg_harmonic, OptionKind::number_or_auto, "harmonic_translation_exponent",
-     true, 0, 8, false, {}, "DG-harmonic: conductivity exponent of the translation ('auto': 3 in 2D, 2.5 in 3D)",
-     [](const MethodOptions& o) { return number_value(o.dg_harmonic.translation_exponent); },
-     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.translation_exponent = v.number; }, -1, true},
+     true, 0, 4, false, {}, "DG-harmonic: conductivity exponent of the translation ('auto': 3 in 2D, 2.5 in 3D)",
+     [](const MethodOptions& o) { return auto_or(o.dg_harmonic.translation_exponent); },
+     [](MethodOptions& o, const OptionValue& v) {
+         o.dg_harmonic.translation_exponent = v.automatic ? std::nullopt : std::optional<double>(v.number);
+     },
+     true},
     {"harmonic-rotation-exponent", Method::dg_harmonic, OptionKind::number_or_auto, "harmonic_rotation_exponent", true,
-     0, 8, false, {}, "DG-harmonic: conductivity exponent of the rotation ('auto': 0 in 2D, 2.5 in 3D)",
-     [](const MethodOptions& o) { return number_value(o.dg_harmonic.rotation_exponent); },
-     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.rotation_exponent = v.number; }, -1, true},
+     0, 4, false, {}, "DG-harmonic: conductivity exponent of the rotation ('auto': 0 in 2D, 2.5 in 3D)",
+     [](const MethodOptions& o) { return auto_or(o.dg_harmonic.rotation_exponent); },
+     [](MethodOptions& o, const OptionValue& v) {
+         o.dg_harmonic.rotation_exponent = v.automatic ? std::nullopt : std::optional<double>(v.number);
+     },
+     true},
     {"harmonic-rigid-zone", Method::dg_harmonic, OptionKind::number_or_auto, "harmonic_rigid_zone", true, 0, HUGE_VAL,
      false, {}, "DG-harmonic: the rotation's rigid zone, a fraction of the moving boundary's diagonal ('auto': 0.25 in 2D, 0 in 3D)",
-     [](const MethodOptions& o) { return number_value(o.dg_harmonic.rigid_zone); },
-     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.rigid_zone = v.number; }, -1, true},
+     [](const MethodOptions& o) { return auto_or(o.dg_harmonic.rigid_zone); },
+     [](MethodOptions& o, const OptionValue& v) {
+         o.dg_harmonic.rigid_zone = v.automatic ? std::nullopt : std::optional<double>(v.number);
+     },
+     true},
     {"harmonic-rigid-gap", Method::dg_harmonic, OptionKind::number, "harmonic_rigid_gap", true, 0, HUGE_VAL, false, {},
      "DG-harmonic: the rigid zone's bound, a fraction of the distance to the static boundary",
      [](const MethodOptions& o) { return number_value(o.dg_harmonic.rigid_gap); },
-     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.rigid_gap = v.number; }, 0, true},
+     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.rigid_gap = v.number; }, true},
     {"harmonic-redo-max-increments", Method::dg_harmonic, OptionKind::whole_number, "harmonic_redo_max_increments",
      false, 1, 64, false, {}, "DG-harmonic's guard: the most increments laplacian's solve again may use",
      [](const MethodOptions& o) { return number_value(o.dg_harmonic.redo_max_increments); },
-     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.redo_max_increments = static_cast<int>(v.number); }, 0,
-     true},
+     [](MethodOptions& o, const OptionValue& v) { o.dg_harmonic.redo_max_increments = static_cast<int>(v.number); }, true},
     {"harmonic-redo-max-nodes-3d", Method::dg_harmonic, OptionKind::whole_number, "harmonic_redo_max_nodes_3d", false,
      0, 9007199254740992.0, false, {}, "DG-harmonic's guard: the largest 3D mesh laplacian solves again, in nodes",
      [](const MethodOptions& o) { return number_value(static_cast<double>(o.dg_harmonic.redo_max_nodes_3d)); },
      [](MethodOptions& o, const OptionValue& v) {
          o.dg_harmonic.redo_max_nodes_3d = static_cast<std::int64_t>(v.number);
-     },
-     0, true},
+     }, true},
     {"laplacian-max-increments", Method::laplacian, OptionKind::whole_number, "laplacian_max_increments", true, 1, 64,
      false, {}, "laplacian: the most increments it doubles to while a simplex folds",
      [](const MethodOptions& o) { return number_value(o.laplacian.max_increments); },
-     [](MethodOptions& o, const OptionValue& v) { o.laplacian.max_increments = static_cast<int>(v.number); }, 0, true},
+     [](MethodOptions& o, const OptionValue& v) { o.laplacian.max_increments = static_cast<int>(v.number); }, true},
     {"laplacian-poisson-ratio", Method::laplacian, OptionKind::number, "laplacian_poisson_ratio", true, 0, 0.45, false,
      {}, "laplacian: Poisson's ratio of the elasticity model",
      [](const MethodOptions& o) { return number_value(o.laplacian.poisson_ratio); },
-     [](MethodOptions& o, const OptionValue& v) { o.laplacian.poisson_ratio = v.number; }, 0, true},
+     [](MethodOptions& o, const OptionValue& v) { o.laplacian.poisson_ratio = v.number; }, true},
 }};
 
 const MethodOption* find_method_option(std::string_view name) {
@@ -246,7 +257,7 @@ OptionValue parse_option_value(const MethodOption& o, std::string_view text, boo
             if (!number(v) || !(std::abs(v) <= 9007199254740992.0) || v != std::floor(v)) return refuse();
             return {v, {}};
         case OptionKind::number_or_auto:
-            if (text == "auto") return {o.auto_value, {}};
+            if (text == "auto") return {0, {}, true};
             if (!number(v)) return refuse();
             return {v, {}};
         case OptionKind::word:
@@ -267,7 +278,7 @@ std::string option_text(const MethodOption& o, const MethodOptions& options) {
         case OptionKind::word: return std::string(v.word);
         case OptionKind::on_off: return v.number != 0 ? "true" : "false";
         case OptionKind::number_or_auto:
-            if (v.number == o.auto_value) return "auto";
+            if (v.automatic) return "auto";
             return exact_text(v.number);
         default: return exact_text(v.number);
     }

@@ -21,16 +21,17 @@ namespace dgwarp {
 enum class OptionKind {
     number,          // a finite number from low to high (low excluded when low_open)
     whole_number,    // a whole number from low to high
-    number_or_auto,  // a number from low to high, or "auto" (held as auto_value: the method chooses)
+    number_or_auto,  // a number from low to high, or "auto" (the method chooses)
     word,            // one of `words`
     on_off,          // true or false (on/off, yes/no, 1/0); the CLI's flag takes no value
 };
 
-/// A value of an option: `number` for the number kinds (auto_value for "auto") and
-/// on_off (1 or 0), `word` for a word (one of the row's words).
+/// A value of an option: `number` for the number kinds and on_off (1 or 0),
+/// `word` for a word (one of the row's words), `automatic` for "auto".
 struct OptionValue {
     double number = 0;
     std::string_view word;
+    bool automatic = false;
 };
 
 struct MethodOption {
@@ -45,7 +46,6 @@ struct MethodOption {
     std::string_view help;        // what it does (the CLI's --help, the docs)
     OptionValue (*get)(const MethodOptions&) = nullptr;
     void (*set)(MethodOptions&, const OptionValue&) = nullptr;
-    double auto_value = 0;        // number_or_auto: the value that stands for "auto"
     bool tuning = false;          // a method's internal constant: no flag, keyword nor report key
 };
 

@@ -89,7 +89,9 @@ void write_dg_harmonic(std::ostream& out, const DgHarmonicPlan& plan) {
     h.points_hash = plan.mesh.points_hash;
     h.boundary_hash = plan.mesh.boundary_hash;
     const DgHarmonicOptions& o = plan.options;
-    h.options = {o.wall_spacing, o.growth, o.translation_exponent, o.rotation_exponent, o.rigid_zone, o.rigid_gap};
+    // A plan's options are resolved (resolved_options): every one set.
+    h.options = {o.wall_spacing, o.growth, o.translation_exponent.value(), o.rotation_exponent.value(),
+                 o.rigid_zone.value(), o.rigid_gap};
     h.num_boundary_vertices = plan.num_boundary_vertices;
     h.shared = plan.solve.shared ? 1 : 0;
     const DgHarmonicPrepareStats& s = plan.stats;
@@ -204,7 +206,12 @@ DgHarmonicPlan load_dg_harmonic(const PlanSource& source) {
     check_array_lengths(path, h);
     check_indices(path, p, h, off);
     p.mesh = {h.num_points, h.points_hash, h.boundary_hash};
-    p.options = {h.options[0], h.options[1], h.options[2], h.options[3], h.options[4], h.options[5]};
+    p.options.wall_spacing = h.options[0];
+    p.options.growth = h.options[1];
+    p.options.translation_exponent = h.options[2];
+    p.options.rotation_exponent = h.options[3];
+    p.options.rigid_zone = h.options[4];
+    p.options.rigid_gap = h.options[5];
     p.num_boundary_vertices = h.num_boundary_vertices;
     p.stats = {h.stats[0], h.stats[1], h.stats[2], h.stats[3], h.stats[4]};
     return p;
