@@ -10,7 +10,6 @@
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <tuple>
 #include <variant>
 
 #include "commands.hpp"
@@ -21,8 +20,10 @@
 #include "dgwarp/io/openfoam.hpp"
 #include "dgwarp/mpi/agreement.hpp"
 #include "dgwarp/mpi/part_reductions.hpp"
+#include "dgwarp/mpi/part_run.hpp"
 #include "dgwarp/mpi/part_setup.hpp"
 #include "dgwarp/mpi/reductions.hpp"
+#include "distributed_run.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
 #include "frame_output.hpp"
@@ -216,56 +217,49 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     progress.clear();
     if (text) print_plan(std::cout, in, run.planned, warnings);
 
-    std::vector<double> deformed(in.mesh.points.size());
     bool base_written = false;
-    for (std::size_t k = 0; k < frames; ++k) {
-        FrameResult f;
-        f.frame = k;
-        f.time = frame_time(in.spec, k);
-        f.own_parts = true;
+    const mpi::PartRunContext ctx{world, in.mesh, in.spec, in.boundary, in.original, *run.planned.distributed->own,
+                                  part.cell_ids};
+    mpi::PartRunCallbacks on;
+    on.frame_started = [&](std::size_t k) {
         progress.phase(std::string(method_name(method)) + ": deforming" +
                        (frames > 1 ? " frame " + std::to_string(k) + " (" + std::to_string(k + 1) + " of " +
                                          std::to_string(frames) + ")"
                                    : ""));
-        ResolvedFrame motion;
-        collectively([&] { motion = resolve_frame(in.mesh, in.spec, in.boundary, k); });
-        f.warnings = mpi::warnings_over_parts(world, motion.warnings);
-        Stopwatch step_sw;
-        f.step = mpi_deform_own(*run.planned.distributed, in.mesh.points, motion.motion, deformed, f.process_seconds);
-        f.step_seconds = step_sw.lap();
-        for (Warning& w : step_warnings(f.step)) f.warnings.push_back(std::move(w));
-
-        // The frame's quality, reduced over the processes.
-        const FrameCells cells = measure_frame(in.mesh, deformed, in.original, in.boundary.boundary.nodes);
-        f.quality = mpi::quality_over_parts(world, cells.quality, part.cell_ids);
-        f.ratio = mpi::ratios_over_parts(world, quality_ratios(cells.quality, in.original.quality), part.cell_ids);
-        std::tie(f.worst_inverted, f.inverted_by_motion) = mpi::worst_over_parts(world, cells.inverted, cells.quality, part.cell_ids, 10);
-        std::tie(f.worst_on_boundary, f.inverted_on_boundary) =
-            mpi::worst_over_parts(world, cells.inverted_on_boundary, cells.quality, part.cell_ids, 10);
-        f.quality_seconds = step_sw.lap();
+    };
+    on.frame_done = [&](const mpi::PartFrameView& view) {
+        FrameResult f;
+        static_cast<FrameReport&>(f) = view.report;
+        f.frame = view.frame;
+        f.time = view.time;
+        f.own_parts = true;
+        f.process_seconds = view.process_seconds;
+        Stopwatch write_sw;
         if (method == Method::dg_harmonic && !a.no_untangle && f.inverted_by_motion > 0 && f.inverted_on_boundary == 0)
             // One process would repair them (the last resort); it moves nodes
             // that several processes hold, so it is not run on the parts.
             throw InvalidResultError(
                 "dg-harmonic inverted " + std::to_string(f.inverted_by_motion) + " cell" +
-                    (f.inverted_by_motion == 1 ? "" : "s") + " in frame " + std::to_string(k) + " (worst: " +
+                    (f.inverted_by_motion == 1 ? "" : "s") + " in frame " + std::to_string(f.frame) + " (worst: " +
                     cell_list(f.worst_inverted) +
                     "), which its last resort (untangle) would repair on one process; it does not run when each "
                     "process reads its own processor folder. Nothing was written for this frame. Run with "
                     "--untangle (rank 0 then reads the whole case and repairs them), or on one process",
                 f.inverted_by_motion);
-        const bool invalid = f.inverted_by_motion > 0;
-        if (!invalid || a.allow_invalid) {
-            write_processor_points(a.output, foam_times[k], part, deformed, base_written);
-            f.output = openfoam_points_file(fs::path(a.output) / "processor*", foam_times[k]).file.string();
-            f.write_seconds = step_sw.lap();
+        if (f.valid() || a.allow_invalid) {
+            write_processor_points(a.output, foam_times[f.frame], part, view.points, base_written);
+            f.output = openfoam_points_file(fs::path(a.output) / "processor*", foam_times[f.frame]).file.string();
+            f.write_seconds = write_sw.lap();
         }
         if (text) {
             progress.clear();
             print_frame(in, f, frames, warnings);
         }
-        if (!add_frame(run, std::move(f), a.allow_invalid)) break;
-    }
+        return add_frame(run, std::move(f), a.allow_invalid);
+    };
+    RunOptions options;
+    options.stop_at_invalid = false;  // add_frame decides (--allow-invalid)
+    mpi::run_frames_on_parts(ctx, options, on);
     progress.clear();
 
     if (a.json && rank == 0) {

@@ -8,6 +8,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
+#include "distributed_run.hpp"
 #include "dgwarp/mpi/root_session.hpp"
 #include "mpi_session.hpp"
 
@@ -20,11 +21,6 @@ int mpi_my_rank = 0, mpi_size = 1;
 const MPI_Comm world = MPI_COMM_WORLD;
 
 }  // namespace
-
-struct DistributedRun {
-    std::optional<mpi::RootRun> root;  // rank 0 holds the whole mesh (mpi_prepare)
-    std::optional<mpi::PartPlan> own;  // each process its own part (mpi_prepare_own)
-};
 
 int mpi_start(int& argc, char**& argv) {
     // Open MPI's mpirun sets OMPI_COMM_WORLD_SIZE in every process it starts;
@@ -64,11 +60,6 @@ std::shared_ptr<DistributedRun> mpi_prepare_own(Method method, int dim, const Me
     outside_hull = run->own->outside_hull;
     my_plan = run->own->plan.plan;
     return run;
-}
-
-StepReport mpi_deform_own(const DistributedRun& run, std::span<const double> points, const BoundaryMotion& motion,
-                          std::span<double> out, std::vector<double>& seconds) {
-    return mpi::deform_part(*run.own, points, motion, out, seconds);
 }
 
 std::shared_ptr<DistributedRun> mpi_prepare(const Mesh& mesh, const BoundarySet& boundary, Method method,

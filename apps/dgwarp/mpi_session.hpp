@@ -55,10 +55,6 @@ std::shared_ptr<DistributedRun> mpi_prepare_own(Method method, int dim, const Me
                                                 std::span<const double> points, std::span<const std::int64_t> global_ids,
                                                 const BoundarySet& boundary, Plan& my_plan, std::vector<double>& seconds,
                                                 std::int64_t& outside_hull);
-/// Every process: one step over its own nodes (`motion`: one per its
-/// boundary node); `seconds` (rank 0): each process's step time.
-StepReport mpi_deform_own(const DistributedRun& run, std::span<const double> points, const BoundaryMotion& motion,
-                          std::span<double> out, std::vector<double>& seconds);
 
 /// Rank 0: tells the other ranks to stop, with its exit code (mpi_serve
 /// returns it, so every rank exits with it); every rank: ends MPI.

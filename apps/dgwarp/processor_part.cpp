@@ -47,7 +47,7 @@ std::int64_t owned_moving_and_static(const Mesh& mesh, const ResolvedBoundary& b
 }
 
 fs::path write_processor_points(const fs::path& out, const std::string& time, const ProcessorPart& part,
-                                const std::vector<double>& points, bool& base_written) {
+                                std::span<const double> points, bool& base_written) {
     const fs::path folder = out / ("processor" + std::to_string(mpi_rank()));
     const OpenFoamPointsFile file = openfoam_points_file(folder, time);
     const fs::path tmp = file.file.string() + ".dgwarp-part";

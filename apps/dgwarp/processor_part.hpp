@@ -4,6 +4,7 @@
 // processes share about their parts. Collective: every process calls them.
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,7 @@ std::int64_t owned_moving_and_static(const Mesh& mesh, const ResolvedBoundary& b
 /// every process wrote its own, so that an error on one leaves no process's
 /// new points (every process throws it). Returns the points file.
 std::filesystem::path write_processor_points(const std::filesystem::path& out, const std::string& time,
-                                             const ProcessorPart& part, const std::vector<double>& points,
+                                             const ProcessorPart& part, std::span<const double> points,
                                              bool& base_written);
 
 }  // namespace dgwarp::cli

@@ -23,9 +23,12 @@
 #include "dgwarp/mpi/mesh_parts.hpp"
 #include "dgwarp/mpi/morton_partition.hpp"
 #include "dgwarp/mpi/part_reductions.hpp"
+#include "dgwarp/mpi/part_run.hpp"
 #include "dgwarp/mpi/part_setup.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/mpi/root_session.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+#include "dgwarp/run/run_deformation.hpp"
 
 using namespace dgwarp;
 
@@ -377,6 +380,119 @@ TEST(PartSetup, InterfaceNodesOnEveryMarkerAnyProcessHasThemOn) {
     EXPECT_EQ(marker_nodes(part.markers[0]), (std::vector<NodeId>{seven}));
     EXPECT_EQ(marker_nodes(part.markers[1]),
               rank == 0 ? (std::vector<NodeId>{own_node, eight}) : (std::vector<NodeId>{eight}));
+}
+
+// This process's part of `whole`: the cells morton_cell_parts gives it, their
+// nodes, the marker elements whose nodes it holds, and its interface nodes'
+// markers shared (as a decomposed case's processor folder holds it).
+struct MeshPart {
+    Mesh mesh;
+    std::vector<std::int64_t> global_ids, cell_ids;
+};
+
+MeshPart part_of(const Mesh& whole, int rank, int size) {
+    const std::vector<std::int32_t> cell_part = mpi::morton_cell_parts(whole, size);
+    MeshPart p;
+    p.mesh.dim = whole.dim;
+    std::vector<NodeId> local(whole.num_points(), -1);
+    std::vector<int> holders(whole.num_points(), 0);
+    std::vector<std::vector<std::uint8_t>> held(static_cast<std::size_t>(size), std::vector<std::uint8_t>(whole.num_points(), 0));
+    for (std::size_t c = 0; c < whole.cells.size(); ++c)
+        for (std::int64_t k = whole.cells.offsets[c]; k < whole.cells.offsets[c + 1]; ++k) {
+            const auto n = static_cast<std::size_t>(whole.cells.nodes[static_cast<std::size_t>(k)]);
+            if (!held[static_cast<std::size_t>(cell_part[c])][n]++) ++holders[n];
+        }
+    const auto local_of = [&](NodeId g) {
+        if (local[static_cast<std::size_t>(g)] < 0) {
+            local[static_cast<std::size_t>(g)] = static_cast<NodeId>(p.global_ids.size());
+            p.global_ids.push_back(g);
+            for (int d = 0; d < whole.dim; ++d) p.mesh.points.push_back(whole.points[static_cast<std::size_t>(g) * 2 + d]);
+        }
+        return local[static_cast<std::size_t>(g)];
+    };
+    for (std::size_t c = 0; c < whole.cells.size(); ++c) {
+        if (cell_part[c] != rank) continue;
+        std::vector<NodeId> nodes;
+        for (std::int64_t k = whole.cells.offsets[c]; k < whole.cells.offsets[c + 1]; ++k)
+            nodes.push_back(local_of(whole.cells.nodes[static_cast<std::size_t>(k)]));
+        p.mesh.cells.push_back(whole.cells.types[c], nodes);
+        p.cell_ids.push_back(static_cast<std::int64_t>(c));
+    }
+    for (const Marker& m : whole.markers) {
+        Marker mine{m.name, {}};
+        for (std::size_t e = 0; e < m.elements.size(); ++e) {
+            std::vector<NodeId> nodes;
+            for (std::int64_t k = m.elements.offsets[e]; k < m.elements.offsets[e + 1]; ++k) {
+                const NodeId g = m.elements.nodes[static_cast<std::size_t>(k)];
+                if (local[static_cast<std::size_t>(g)] >= 0) nodes.push_back(local[static_cast<std::size_t>(g)]);
+            }
+            if (nodes.size() == static_cast<std::size_t>(m.elements.offsets[e + 1] - m.elements.offsets[e]))
+                mine.elements.push_back(m.elements.types[e], nodes);
+        }
+        p.mesh.markers.push_back(std::move(mine));
+    }
+    std::vector<NodeId> interface;
+    for (std::size_t i = 0; i < p.global_ids.size(); ++i)
+        if (holders[static_cast<std::size_t>(p.global_ids[i])] > 1) interface.push_back(static_cast<NodeId>(i));
+    mpi::share_interface_markers(MPI_COMM_WORLD, p.mesh, interface, p.global_ids);
+    return p;
+}
+
+TEST(PartRun, FramesOverThePartsAreOneProcessRunOverTheWholeMesh) {
+    const int rank = rank_of(), size = size_of();
+    const Mesh whole = make_rect_box();
+    MotionSpec spec;
+    spec.frames.resize(2);
+    for (std::size_t k = 0; k < 2; ++k)
+        spec.frames[k].markers["rectangle"] = RigidMotion{NodeMotion{.rotation = {0, 0, (10.0 + 25.0 * double(k)) * 3.141592653589793 / 180}}};
+    // One process over the whole mesh.
+    const Deformation d = prepare_deformation(whole, spec, Method::dg_idw);
+    std::vector<std::vector<double>> one_points;
+    RunCallbacks keep;
+    keep.frame_done = [&](const FrameView& f) {
+        one_points.emplace_back(f.points.begin(), f.points.end());
+        return true;
+    };
+    const RunReport one = run_frames(RunContext::of(whole, spec, d), {}, keep);
+    // Every process over its part.
+    MeshPart part = part_of(whole, rank, size);
+    const ResolvedBoundary boundary = resolve_boundary(part.mesh, spec);
+    std::vector<std::int8_t> own = cell_orientations(part.mesh);
+    std::vector<std::int8_t> orientation = mpi::dominant_orientations_over_parts(MPI_COMM_WORLD, part.mesh, own);
+    const OriginalCells original = measure_original(part.mesh, std::move(own), std::move(orientation));
+    const mpi::PartPlan plan =
+        mpi::prepare_part(MPI_COMM_WORLD, Method::dg_idw, 2, part.mesh.points, part.global_ids, boundary.boundary);
+    const mpi::PartRunContext ctx{MPI_COMM_WORLD, part.mesh, spec, boundary, original, plan, part.cell_ids};
+    std::size_t seen = 0;
+    mpi::PartRunCallbacks on;
+    on.frame_done = [&](const mpi::PartFrameView& f) {
+        ++seen;
+        // This process's coordinates are the whole run's, bit for bit.
+        for (std::size_t i = 0; i < part.global_ids.size(); ++i)
+            for (int dd = 0; dd < 2; ++dd)
+                EXPECT_EQ(f.points[i * 2 + dd], one_points[f.frame][static_cast<std::size_t>(part.global_ids[i]) * 2 + dd]);
+        return true;
+    };
+    const RunReport parts = mpi::run_frames_on_parts(ctx, {}, on);
+    ASSERT_EQ(parts.frames.size(), one.frames.size());
+    EXPECT_EQ(seen, one.frames.size());
+    for (std::size_t k = 0; k < one.frames.size(); ++k) {
+        const FrameReport &a = parts.frames[k], &b = one.frames[k];
+        EXPECT_EQ(a.quality.cells, b.quality.cells);
+        EXPECT_EQ(a.quality.min, b.quality.min);
+        EXPECT_EQ(a.quality.worst_cell, b.quality.worst_cell);
+        EXPECT_EQ(a.quality.histogram.counts, b.quality.histogram.counts);
+        EXPECT_NEAR(a.quality.mean, b.quality.mean, 1e-13);
+        EXPECT_EQ(a.ratio.min, b.ratio.min);
+        EXPECT_EQ(a.inverted_by_motion, b.inverted_by_motion);
+        EXPECT_EQ(a.worst_inverted, b.worst_inverted);
+    }
+    // A failure in one process's frame_done stops every process, with its error.
+    on.frame_done = [&](const mpi::PartFrameView&) {
+        if (rank == size - 1) throw IoError("part.out", "disk full");
+        return true;
+    };
+    EXPECT_THROW(mpi::run_frames_on_parts(ctx, {}, on), Error);
 }
 
 }  // namespace
