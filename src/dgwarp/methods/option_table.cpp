@@ -243,9 +243,12 @@ OptionValue parse_option_value(const MethodOption& o, std::string_view text, boo
     };
     // A number (any, unless the range is checked: then finite and in it).
     const auto number = [&](double& v) {
-        const char* end = text.data() + text.size();
-        const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-        if (text.empty() || ec != std::errc() || ptr != end) return false;
+        // As a command line's number: an explicit '+' too (from_chars takes only '-').
+        std::string_view digits = text;
+        if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-' && digits[1] != '+') digits.remove_prefix(1);
+        const char* end = digits.data() + digits.size();
+        const auto [ptr, ec] = std::from_chars(digits.data(), end, v);
+        if (digits.empty() || ec != std::errc() || ptr != end) return false;
         return !check_range || (std::isfinite(v) && v >= o.low && v <= o.high && !(o.low_open && v == o.low));
     };
     double v = 0;
