@@ -1,13 +1,14 @@
 #pragma once
 // The MPI test programs' partitions of a mesh read whole by every process:
 // each process keeps the nodes of the cells given to it (mpi_same_bits.cpp,
-// mpi_failures.cpp).
+// mpi_failures.cpp); and the rect-box's boundary they move.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/motion/node_motion.hpp"
+#include "dgwarp/motion/resolve_motion.hpp"
 
 namespace dgwarp::test {
 
@@ -66,6 +67,14 @@ inline Part make_part(const Mesh& mesh, const BoundarySet& whole, int rank, int 
         sorted.boundary_slot[i] = p.boundary_slot[order[i]];
     }
     return sorted;
+}
+
+// The rect-box's boundary: the rectangle moving, the far field static (as a motion file moving the rectangle says).
+inline BoundarySet rect_box_boundary(const Mesh& mesh) {
+    MotionSpec spec;
+    spec.frames.resize(1);
+    spec.frames[0].markers["rectangle"] = RigidMotion{};
+    return resolve_boundary(mesh, spec).boundary;
 }
 
 }  // namespace dgwarp::test

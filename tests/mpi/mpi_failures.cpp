@@ -48,17 +48,9 @@ BoundaryMotion turn(std::size_t count) {
     return m;
 }
 
-// The rect-box's boundary: the rectangle moving, the far field static (as a motion file moving the rectangle says).
-BoundarySet rect_box_boundary(const Mesh& mesh) {
-    MotionSpec spec;
-    spec.frames.resize(1);
-    spec.frames[0].markers["rectangle"] = RigidMotion{};
-    return resolve_boundary(mesh, spec).boundary;
-}
-
 int run_failure(const std::string& scenario, int rank, int size) {
     const Mesh mesh = make_rect_box();
-    const BoundarySet whole = rect_box_boundary(mesh);
+    const BoundarySet whole = test::rect_box_boundary(mesh);
     test::Part part = test::make_part(mesh, whole, rank, size, test::Partition::round_robin);
     Method method = Method::dg_idw;
     MethodOptions options;
@@ -97,7 +89,7 @@ int run_failure(const std::string& scenario, int rank, int size) {
 
 int run_ghosts(int rank, int size) {
     const Mesh mesh = make_rect_box();
-    const BoundarySet whole = rect_box_boundary(mesh);
+    const BoundarySet whole = test::rect_box_boundary(mesh);
     // Round robin: interface nodes, boundary ones among them, are held by several processes.
     const test::Part part = test::make_part(mesh, whole, rank, size, test::Partition::round_robin);
     // The owner of a boundary node: the lowest rank listing it.

@@ -27,6 +27,7 @@
 #include "dgwarp/mpi/part_setup.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/mpi/root_session.hpp"
+#include "mesh_parts.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 
@@ -44,14 +45,6 @@ int size_of(MPI_Comm comm = MPI_COMM_WORLD) {
     int s = 1;
     MPI_Comm_size(comm, &s);
     return s;
-}
-
-// The rect-box's boundary: the rectangle moving, the far field static.
-BoundarySet rect_box_boundary(const Mesh& mesh) {
-    MotionSpec spec;
-    spec.frames.resize(1);
-    spec.frames[0].markers["rectangle"] = RigidMotion{};
-    return resolve_boundary(mesh, spec).boundary;
 }
 
 // Every moving boundary node turned by 10 degrees about the origin.
@@ -96,7 +89,7 @@ void expect_valid_split(const Mesh& mesh, const BoundarySet& whole, const std::v
 
 TEST(SplitMesh, EveryCellsNodesInItsPart) {
     const Mesh mesh = make_rect_box();
-    const BoundarySet whole = rect_box_boundary(mesh);
+    const BoundarySet whole = test::rect_box_boundary(mesh);
     for (int parts : {1, 2, 3, 5}) {
         const std::vector<mpi::NodePart> split = mpi::split_mesh(mesh, whole, parts);
         ASSERT_EQ(split.size(), static_cast<std::size_t>(parts));
@@ -120,7 +113,7 @@ TEST(SplitMesh, EveryCellsNodesInItsPart) {
 
 TEST(SplitMesh, NodeListsAndLooseNodes) {
     Mesh mesh = make_rect_box();
-    const BoundarySet whole = rect_box_boundary(mesh);
+    const BoundarySet whole = test::rect_box_boundary(mesh);
     // A node of no cell goes to part 0.
     mesh.points.insert(mesh.points.end(), {100.0, 100.0});
     const auto loose = static_cast<std::int64_t>(mesh.num_points() - 1);
@@ -158,7 +151,7 @@ int drive(MPI_Comm comm, Root&& root, int stop_code, std::vector<std::string>* p
 
 TEST(RootSession, StepsBitIdenticalToOneProcess) {
     const Mesh mesh = make_rect_box();
-    const BoundarySet whole = rect_box_boundary(mesh);
+    const BoundarySet whole = test::rect_box_boundary(mesh);
     const BoundaryMotion motion = turn(whole);
     for (Method method : {Method::dg_idw, Method::idw}) {
         std::vector<double> one(mesh.points.size()), many(mesh.points.size(), -1);
@@ -181,7 +174,7 @@ TEST(RootSession, StepsBitIdenticalToOneProcess) {
 
 TEST(RootSession, PreparesAgainAfterAFailure) {
     const Mesh mesh = make_rect_box();
-    const BoundarySet whole = rect_box_boundary(mesh);
+    const BoundarySet whole = test::rect_box_boundary(mesh);
     std::vector<double> out(mesh.points.size()), one(mesh.points.size()), seconds;
     if (rank_of() == 0) deform(prepare(Method::dg_idw, 2, mesh.points, whole), mesh.points, turn(whole), one);
     drive(MPI_COMM_WORLD,
@@ -334,7 +327,7 @@ TEST(PartReductions, AsOneProcessOverTheWholeMesh) {
 TEST(PartSetup, DiagonalAndOrientationsAsTheWholeMesh) {
     const int rank = rank_of(), size = size_of();
     const Mesh whole = make_rect_box();
-    const std::vector<mpi::NodePart> split = mpi::split_mesh(whole, rect_box_boundary(whole), size);
+    const std::vector<mpi::NodePart> split = mpi::split_mesh(whole, test::rect_box_boundary(whole), size);
     Mesh part;
     part.dim = 2;
     part.points = split[static_cast<std::size_t>(rank)].points;

@@ -130,12 +130,6 @@ bool keeps_su2_surroundings(const std::filesystem::path& path) {
     return f && f->keeps_su2_surroundings;
 }
 
-std::string joined_list(const std::vector<std::string>& items) {
-    std::string list;
-    for (const auto& d : items) list += (list.empty() ? "" : ", ") + d;
-    return list;
-}
-
 }  // namespace
 
 std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::filesystem::path& path) {
@@ -148,12 +142,12 @@ std::vector<std::string> dropped_extras(const MeshExtras& extras, const std::fil
 std::string dropped_extras_warning(const MeshExtras& extras, const std::string& input, const std::filesystem::path& output) {
     std::string text;
     if (const auto zones = dropped_zones(extras, output); !zones.empty())
-        text = output.string() + " does not keep " + input + "'s " + joined_list(zones) +
+        text = output.string() + " does not keep " + input + "'s " + joined(zones) +
                (writes_openfoam(output) ? " (OpenFOAM zones; the faces are numbered anew; its cell and point zones are kept)"
                                         : " (OpenFOAM zones; an OpenFOAM case output keeps the cell and point zones)");
     if (extras.su2 && !keeps_su2_surroundings(output))
         text += (text.empty() ? "" : "; ") + output.string() + " holds the mesh only: " + input + " also has " +
-                joined_list(extras.su2->contents) + " (an .su2 output keeps them)";
+                joined(extras.su2->contents) + " (an .su2 output keeps them)";
     return text;
 }
 

@@ -2,6 +2,7 @@
 #include "dgwarp/mpi/mesh_parts.hpp"
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/methods/boundary_set_tools.hpp"
 #include "dgwarp/mpi/morton_partition.hpp"
 
 namespace dgwarp::mpi {
@@ -16,15 +17,10 @@ std::vector<NodePart> split_mesh(const Mesh& mesh, const BoundarySet& boundary, 
     // it again after another part's cell.
     std::vector<std::vector<bool>> taken(static_cast<std::size_t>(parts), std::vector<bool>(n, false));
     std::vector<std::uint8_t> held(n, 0);  // by some part
+    check_boundary_set(n, boundary);
     std::vector<std::int32_t> boundary_slot(n, -1);
-    for (std::size_t b = 0; b < boundary.nodes.size(); ++b) {
-        const NodeId node = boundary.nodes[b];
-        if (node < 0 || static_cast<std::size_t>(node) >= n)
-            throw MeshError("split_mesh: boundary node " + std::to_string(node) + " of a mesh of " +
-                                std::to_string(n) + " nodes",
-                            {}, node);
-        boundary_slot[static_cast<std::size_t>(node)] = static_cast<std::int32_t>(b);
-    }
+    for (std::size_t b = 0; b < boundary.nodes.size(); ++b)
+        boundary_slot[static_cast<std::size_t>(boundary.nodes[b])] = static_cast<std::int32_t>(b);
     auto take = [&](int r, NodeId node) {
         if (node < 0 || static_cast<std::size_t>(node) >= n)
             throw MeshError("split_mesh: node " + std::to_string(node) + " of part " + std::to_string(r) +

@@ -23,7 +23,9 @@ struct NodePart {
 /// cells along a Morton curve (morton_cell_parts), or, when `node_parts` has
 /// `parts` lists (a decomposed case's processors), the nodes of list r. A
 /// node of several cells (or lists) of one part is held once by it, and by
-/// every part with one of its cells; a node of none goes to part 0.
+/// every part with one of its cells; a node of none goes to part 0. Throws
+/// MeshError for a boundary set that does not fit the mesh
+/// (check_boundary_set) or a listed node out of range.
 std::vector<NodePart> split_mesh(const Mesh& mesh, const BoundarySet& boundary, int parts,
                                  const std::vector<std::vector<NodeId>>& node_parts = {});
 
