@@ -39,17 +39,9 @@ CLI::Validator positive_number() {
     return real_validator("a positive number", [](double x) { return x > 0; });
 }
 
-CLI::Validator non_negative_number() {
-    return real_validator("a number >= 0", [](double x) { return x >= 0; });
-}
-
 CLI::Validator number_between(double low, double high) {
     return real_validator("a number from " + flag_number_text(low) + " to " + flag_number_text(high),
                           [low, high](double x) { return x >= low && x <= high; });
-}
-
-CLI::Validator positive_number_up_to(double high) {
-    return real_validator("a number > 0 and <= " + flag_number_text(high), [high](double x) { return x > 0 && x <= high; });
 }
 
 CLI::Validator finite_number() {

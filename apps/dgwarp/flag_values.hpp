@@ -13,12 +13,8 @@ namespace dgwarp::cli {
 
 /// A finite number > 0.
 CLI::Validator positive_number();
-/// A finite number >= 0.
-CLI::Validator non_negative_number();
 /// A finite number in [low, high].
 CLI::Validator number_between(double low, double high);
-/// A finite number in (0, high].
-CLI::Validator positive_number_up_to(double high);
 /// Any finite number.
 CLI::Validator finite_number();
 /// One of `names` ("expected one of a, b, c; got d"); `what` names them ("a case").
