@@ -85,8 +85,10 @@ def boundary_error(base_file, moved_file, csv_file):
 
 
 def time_v(path):
-    """Wall seconds, CPU seconds (user + system) and peak memory (MB) of a /usr/bin/time -v report."""
+    """Wall seconds, CPU seconds (user + system) and peak memory (MB) of a /usr/bin/time -v report; its
+    "Wall seconds" line (openfoam.sh's nanosecond clock), when there is one, rather than GNU time's 10 ms."""
     wall = rss = cpu = None
+    wall_ns = None
     with open(path) as f:
         for line in f:
             line = line.strip()
@@ -97,9 +99,11 @@ def time_v(path):
                 wall = 0.0
                 for p in parts:
                     wall = wall * 60 + p
+            elif line.startswith("Wall seconds:"):
+                wall_ns = float(line.rsplit(" ", 1)[1])
             elif line.startswith("Maximum resident set size"):
                 rss = int(line.rsplit(" ", 1)[1]) / 1024.0
-    return wall, cpu, rss
+    return (wall if wall_ns is None else wall_ns), cpu, rss
 
 
 def checkmesh_status(path):
@@ -162,7 +166,9 @@ def fmt(x, digits=3):
     if isinstance(x, float):
         if x >= 100:
             return "%.0f" % x
-        return ("%." + str(digits) + "f") % x if x >= 0.01 or x == 0 else "%.1e" % x
+        if x >= 10.0 ** -digits or x == 0:
+            return ("%." + str(digits) + "f") % x
+        return "%.2g" % x if x >= 0.01 else "%.1e" % x  # not 0.0 for 0.04 s
     return str(x)
 
 
