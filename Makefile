@@ -12,7 +12,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # heaviest file in 14 s instead of 18 s with -g. A sanitizer error exits with status 86,
 # a code no test expects (the CLI's codes are 0-4). Gmsh's own leaks are
 # suppressed inside the test binary (__lsan_default_suppressions in
-# tests/io/gmsh_write_test.cpp); fontconfig's caches (Cairo's text in the
+# tests/io/gmsh/gmsh_write_test.cpp); fontconfig's caches (Cairo's text in the
 # pictures, also in the CLI the tests run) and OpenCASCADE's (Gmsh's OCC kernel,
 # the wing-body case) by tests/lsan.supp.
 SANITIZER_ENV = ASAN_OPTIONS=exitcode=86:detect_leaks=1:check_initialization_order=1:strict_init_order=1 \

@@ -14,13 +14,13 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
-#include "dgwarp/io/cgns.hpp"
-#include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/cgns/cgns.hpp"
+#include "dgwarp/io/gmsh/gmsh.hpp"
 #include "dgwarp/io/motion_file.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/plan/plan_file.hpp"
-#include "dgwarp/io/su2.hpp"
-#include "dgwarp/io/vtu.hpp"
+#include "dgwarp/io/su2/su2.hpp"
+#include "dgwarp/io/vtu/vtu.hpp"
 
 namespace dgwarp::fuzz {
 

@@ -1,18 +1,17 @@
 #pragma once
 // dgwarp bench --robustness: every method on the random scenes of a range of
-// seeds (cases/random_scene.hpp), against the laplacian reference
-// (docs/ROBUSTNESS.md).
+// seeds, against the laplacian reference (bench/robustness.hpp, docs/ROBUSTNESS.md).
 #include <string>
+
+#include "dgwarp/bench/robustness.hpp"
 
 namespace dgwarp::cli {
 
 struct RobustnessArgs {
-    int first_seed = 1, last_seed = 20;
-    int dim = 2;
+    RobustnessCampaign campaign;
     bool quiet = false;
-    std::string markdown, json, cache, pictures, commit;
-    int mesh_timeout = 600;          // seconds per Gmsh run
-    double rbf_max_boundary = 6000;  // RBF: a dense N_b × N_b solve beyond this is skipped
+    std::string markdown, json, cache, pictures;
+    int mesh_timeout = 600;  // seconds per Gmsh run
 };
 
 /// The outputs of a bench run, checked before its work (the extensions, that
@@ -20,8 +19,8 @@ struct RobustnessArgs {
 void check_bench_outputs(const std::string& markdown, const std::string& json, const std::string& pictures,
                          const std::string& cache);
 
-/// "A-B" or "A" into args.first_seed, args.last_seed; "" when fine, else why not.
-std::string parse_seed_range(const std::string& text, RobustnessArgs& args);
+/// "A-B" or "A" into the campaign's first and last seeds; "" when fine, else why not.
+std::string parse_seed_range(const std::string& text, RobustnessCampaign& campaign);
 
 /// Runs the campaign: prints a line per scene and the summary per method;
 /// writes the Markdown and JSON reports when asked.

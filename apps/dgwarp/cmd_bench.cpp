@@ -4,18 +4,18 @@
 #include <iostream>
 #include <memory>
 
+#include <unistd.h>
+
 #include "bench_robustness.hpp"
-#include "bench_tables.hpp"
 #include "commands.hpp"
+#include "dgwarp/bench/bench_pictures.hpp"
+#include "dgwarp/bench/bench_report.hpp"
 #include "dgwarp/cases/child_process.hpp"
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/motion/resolve_motion.hpp"
-#include "dgwarp/picture/mesh_picture.hpp"
-#include "dgwarp/repair/untangle.hpp"
 #include "flag_values.hpp"
 #include "output_files.hpp"
 #include "progress_line.hpp"
@@ -25,16 +25,13 @@ namespace dgwarp::cli {
 namespace {
 
 struct BenchArgs {
-    bool quick = false;
     bool quiet = false;  // nothing but errors on the terminal; the files are written
     int threads = 1;
     std::string markdown, json, pictures, commit, cache;
     std::vector<std::string> cases;  // empty: all
     int mesh_timeout = 1200;         // seconds per Gmsh run of a 3D case
-    double rbf_max_boundary = 20000; // RBF: dense N_b × N_b beyond this is skipped
-    double idw_max_work = 1e11;      // IDW: N_volume × N_boundary beyond this is skipped
-    double laplacian_max_nodes = 3e5;  // laplacian: a sparse factorisation per increment beyond this is skipped
-    bool robustness = false;           // the random-scene campaign instead (bench_robustness.hpp)
+    BenchLimits limits;              // its quick: --quick (small sizes only, no 3D RBF or laplacian)
+    bool robustness = false;  // the random-scene campaign instead (bench_robustness.hpp)
     std::string seeds = "1-20";
     int dim = 2;
 };
@@ -76,152 +73,41 @@ Mesh generate_with_timeout(const std::string& name, int size, const std::filesys
     return read();
 }
 
-/// Why `method` is not run on this problem, or "" to run it.
-std::string skip_reason(Method method, const BenchArgs& a, std::size_t nodes, std::size_t boundary, int dim) {
-    const double nb = double(boundary), nv = double(nodes - boundary);
-    if (method == Method::rbf && nb > a.rbf_max_boundary)
-        return "skipped: dense " + std::to_string(boundary) + "² system (" + std::to_string(int(nb * nb * 8 / 1e9)) +
-               " GB, O(N_b³) solve); the paper did not run it either";
-    if (method == Method::rbf && dim == 3 && a.quick) return "skipped: --quick (dense 3D solve takes minutes)";
-    if (method == Method::idw && nv * nb > a.idw_max_work)
-        return "skipped: N_v × N_b = " + std::to_string(static_cast<long long>(nv * nb)) + " (too long for one run)";
-    if (method == Method::laplacian && dim == 3 && a.quick)
-        return "skipped: --quick (a 3D sparse factorisation per increment takes minutes)";
-    if (method == Method::laplacian && double(nodes) > a.laplacian_max_nodes)
-        return "skipped: " + std::to_string(nodes) + " nodes (a 3D sparse factorisation per increment)";
-    return "";
-}
-
-/// PNGs of a 2D `mesh` coloured by `quality` (one value per cell) in a.pictures: the whole mesh when
-/// `mesh` is `original` itself, and a close-up; adds their paths (relative to the Markdown file) to row.
-void write_pictures(const BenchArgs& a, BenchRow& row, const Mesh& original, const Mesh& mesh,
-                    std::span<const double> quality,
-                    const std::string& stem, const std::string& caption) {
-    if (a.pictures.empty() || mesh.dim != 2) return;
-    std::filesystem::create_directories(a.pictures);
-    PictureOptions o;
-    o.width = 800;
-    o.height = 600;
-    o.title = caption;
-    const auto rel = [&](const std::filesystem::path& p) {
-        return a.markdown.empty() ? p.string()
-                                  : std::filesystem::relative(p, std::filesystem::absolute(a.markdown).parent_path()).string();
-    };
-    // The whole mesh for the original only; deformed meshes as close-ups (as
-    // the paper's figures), which keeps the pictures few enough to commit.
-    if (&original == &mesh) {
-        const auto whole = std::filesystem::absolute(a.pictures) / (stem + ".png");
-        write_mesh_picture(whole, mesh, quality, o);
-        row.pictures.push_back(rel(whole));
-    }
-    // Close-up: of the moving body; for the NACA0012, of its trailing edge and
-    // the sliver behind it (the trailing edge is the original mesh's airfoil
-    // node of largest x: node ids do not change).
-    const Marker& body = mesh.markers.front();
-    std::vector<NodeId> nodes = marker_nodes(body);
-    if (row.case_name == "naca0012") {
-        NodeId te = nodes.front();
-        for (NodeId n : nodes)
-            if (original.points[2 * n] > original.points[2 * te]) te = n;
-        const double x = mesh.points[2 * te], y = mesh.points[2 * te + 1];
-        o.window = std::array<double, 4>{x - 0.06, x + 0.06, y - 0.045, y + 0.045};
-    } else {
-        o.window = window_around(mesh, nodes, 1.6, 4.0 / 3.0);
-    }
-    o.title = caption + " (close-up)";
-    const auto close = std::filesystem::absolute(a.pictures) / (stem + "-close.png");
-    write_mesh_picture(close, mesh, quality, o);
-    row.pictures.push_back(rel(close));
-}
-
 BenchRow run_motion(const BenchArgs& a, const std::string& name, int size, const Mesh& mesh, const CaseMotion& cm,
                     ProgressLine& progress) {
-    BenchRow row;
-    row.case_name = name;
-    row.size = size;
-    row.motion = cm.name;
-    row.motion_description = cm.description;
-    row.nodes = mesh.num_points();
-    row.cells = mesh.cells.size();
-    row.paper = paper_entry(name, size, cm.name);
-    const ResolvedBoundary b = resolve_boundary(mesh, cm.spec);
-    const BoundaryMotion motion = resolve_frame(mesh, cm.spec, b, 0).motion;
-    row.boundary_nodes = b.boundary.nodes.size();
-    for (auto m : b.boundary.moving) row.moving_nodes += m;
-    const std::vector<std::int8_t> orientation = cell_orientations(mesh);
-    const std::vector<double> original = cell_qualities(mesh, orientation);
-    row.original = summarize_quality(original);
-    const std::string stem = name + "-" + std::to_string(size) + "-" + cm.name;
-    Mesh deformed = mesh;
-    struct Variant {
-        Method method;
-        std::string label;
-        MethodOptions options;
-        bool untangle = false;  // repair inverted cells after the step (its time counts in the step)
-    };
-    std::vector<Variant> variants;
-    for (Method m : all_methods) variants.push_back({m, std::string(method_name(m)), {}});
-    variants.push_back({Method::dg_idw, "dg-idw L=auto", {}});
-    variants.back().options.dg_idw.length_scale = 0;
-    variants.push_back({Method::dg_idw, "dg-idw continuous", {}});
-    variants.back().options.dg_idw.weighting = DgIdwWeighting::continuous;
-    variants.push_back({Method::dg_idw, "dg-idw + untangle", {}, true});
-    for (const Variant& v : variants) {
-        const Method method = v.method;
-        MethodResult r;
-        r.method = method;
-        r.label = v.label;
-        const std::string skip = skip_reason(method, a, mesh.num_points(), row.boundary_nodes, mesh.dim);
-        if (!skip.empty()) {
-            r.status = skip;
-            row.methods.push_back(r);
-            continue;
-        }
-        const std::string what = "bench: " + name + " " + std::to_string(size) + " " + cm.name + " " + v.label;
+    std::vector<std::string> pictures;
+    BenchObserver observer;
+    observer.progress = [&](const std::string& what) { return progress.reporter(what); };
+    observer.started = [&](const std::string& what) {
         if (!a.quiet) std::cerr << what << " ..." << std::endl;
-        const MethodOptions& options = v.options;
-        try {
-            Stopwatch sw;
-            const Plan plan = prepare(method, mesh.dim, mesh.points, mesh.cells, b.boundary, options,
-                                      progress.reporter(what + ": preparing"));
-            r.prepare_seconds = sw.lap();
-            const StepReport step =
-                deform(plan, mesh.points, motion, deformed.points, options, progress.reporter(what + ": deforming"));
-            if (v.untangle) untangle(mesh.dim, mesh.cells, orientation, b.boundary.nodes, deformed.points);
-            r.step_seconds = sw.lap();
-            const std::vector<double> q = cell_qualities(deformed, orientation);
-            r.quality = summarize_quality(q);
-            r.ran = true;
-            if (step.substeps > 1 && method == Method::dgm)
-                r.status = "ok (" + std::to_string(step.substeps) + " DGM sub-steps)";
-            if (step.guard.kept_redo)
-                r.status = "ok (redone by laplacian, " + std::to_string(step.substeps) + " increments)";
-            if (r.quality.inverted > 0) r.status = "invalid: " + std::to_string(r.quality.inverted) + " inverted";
-            if (v.label == method_name(method))  // the paper's methods only
-                write_pictures(a, row, mesh, deformed, q, stem + "-" + v.label, name + ", " + cm.name + ", " + v.label);
-        } catch (const Error& e) {
-            r.status = std::string("failed: ") + e.what();
-        }
-        progress.clear();
-        row.methods.push_back(r);
-    }
+    };
+    observer.ended = [&] { progress.clear(); };
+    if (!a.pictures.empty())
+        observer.deformed = [&](const std::string& label, const Mesh& deformed, std::span<const double> q) {
+            for (std::string& p : write_bench_pictures(a.pictures, a.markdown, name, mesh, deformed, q,
+                                                       name + "-" + std::to_string(size) + "-" + cm.name + "-" + label,
+                                                       name + ", " + cm.name + ", " + label))
+                pictures.push_back(std::move(p));
+        };
+    BenchRow row = measure_motion(name, size, mesh, cm, a.limits, observer);
+    row.pictures = std::move(pictures);
     return row;
 }
 
 void run_bench(const BenchArgs& a) {
     if (a.robustness) {
-        if (a.quick || !a.cases.empty())
+        if (a.limits.quick || !a.cases.empty())
             throw CLI::ValidationError("--robustness", "runs the random scenes: --quick and --case do not apply");
         RobustnessArgs r;
-        if (const std::string why = parse_seed_range(a.seeds, r); !why.empty())
+        if (const std::string why = parse_seed_range(a.seeds, r.campaign); !why.empty())
             throw CLI::ValidationError("--seeds", why);
-        r.dim = a.dim;
+        r.campaign.dim = a.dim;
+        r.campaign.commit = a.commit;
         r.quiet = a.quiet;
         r.markdown = a.markdown;
         r.json = a.json;
         r.cache = a.cache;
         r.pictures = a.pictures;
-        r.commit = a.commit;
         r.mesh_timeout = a.mesh_timeout;
         run_robustness(r);
         return;
@@ -245,7 +131,7 @@ void run_bench(const BenchArgs& a) {
     ProgressLine progress(!a.quiet);  // on a terminal only; the results go to standard output and files
     std::vector<Job> jobs;
     for (const auto& n : names)
-        for (int s = 0; s < (a.quick ? 1 : case_size_count(n)); ++s) jobs.push_back({n, s, std::nullopt, ""});
+        for (int s = 0; s < (a.limits.quick ? 1 : case_size_count(n)); ++s) jobs.push_back({n, s, std::nullopt, ""});
     for (Job& j : jobs)
         if (case_size_count(j.name) > 1) try {
                 j.mesh = generate_with_timeout(j.name, j.size, cache, a.mesh_timeout, a.quiet, progress);
@@ -261,11 +147,9 @@ void run_bench(const BenchArgs& a) {
         }
         std::vector<std::string> original_pictures;
         if (!a.pictures.empty() && j.mesh->dim == 2) {
-            BenchRow original;
-            original.case_name = j.name;
             const auto q = cell_qualities(*j.mesh, cell_orientations(*j.mesh));
-            write_pictures(a, original, *j.mesh, *j.mesh, q, j.name + "-original", j.name + ", original");
-            original_pictures = original.pictures;
+            original_pictures = write_bench_pictures(a.pictures, a.markdown, j.name, *j.mesh, *j.mesh, q,
+                                                     j.name + "-original", j.name + ", original");
         }
         for (const CaseMotion& cm : case_motions(j.name, *j.mesh)) {
             rows.push_back(run_motion(a, j.name, j.size, *j.mesh, cm, progress));
@@ -276,7 +160,7 @@ void run_bench(const BenchArgs& a) {
         j.mesh.reset();
     }
     if (a.cache.empty()) std::filesystem::remove_all(cache);
-    BenchInfo info{machine_name(), utc_now(), a.commit, a.threads, a.quick, total.lap()};
+    BenchInfo info{machine_name(), utc_now(), a.commit, a.threads, a.limits.quick, total.lap()};
     if (!a.markdown.empty()) {
         // What the file holds from bench_kept_marker on (tables other tools wrote, e.g.
         // bench/peers/openfoam.sh's) stays below the new tables.
@@ -300,7 +184,7 @@ void add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* cmd = app.add_subcommand("bench", "Run the paper's test cases with every method; print our figures "
                                                 "beside the paper's (Tables 1-10)");
-    cmd->add_flag("--quick", args->quick, "Small sizes only, no 3D RBF or laplacian (a few minutes)");
+    cmd->add_flag("--quick", args->limits.quick, "Small sizes only, no 3D RBF or laplacian (a few minutes)");
     cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (the --markdown and --json files are written)");
     add_threads_option(cmd, args->threads, "1, as the paper's single-core figures");
     cmd->add_option("--case", args->cases, "Run only these cases (repeatable)")->check(one_of(case_names(), "a case"));

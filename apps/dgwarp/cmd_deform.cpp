@@ -15,7 +15,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"

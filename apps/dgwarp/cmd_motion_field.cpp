@@ -10,7 +10,7 @@
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/number_text.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/run/slide_pass.hpp"
 #include "output_files.hpp"
 

@@ -6,6 +6,7 @@
 #include "deform_setup.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/plan/plan_file.hpp"
+#include "dgwarp/run/report_json.hpp"
 #include "output_files.hpp"
 
 namespace dgwarp::cli {

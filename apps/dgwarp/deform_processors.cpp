@@ -17,7 +17,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/motion_file.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/mpi/agreement.hpp"
 #include "dgwarp/mpi/part_reductions.hpp"
 #include "dgwarp/mpi/part_run.hpp"

@@ -11,7 +11,7 @@
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/marker_names.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/su2_config.hpp"
+#include "dgwarp/io/su2/su2_config.hpp"
 #include "dgwarp/motion/planar_motion.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/plan/plan_file.hpp"

@@ -7,7 +7,7 @@
 #include <system_error>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/io/text_reader.hpp"
 #include "output_files.hpp"
 

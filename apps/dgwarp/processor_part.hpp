@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "deform_setup.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "report.hpp"
 
 namespace dgwarp::cli {

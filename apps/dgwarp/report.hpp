@@ -13,9 +13,6 @@
 
 namespace dgwarp::cli {
 
-/// JSON schema version of every --json report; bumped on incompatible changes.
-inline constexpr int json_schema_version = 2;
-
 /// What describe_mesh and mesh_json say about a mesh (under mpirun, summed
 /// over the processes' parts: deform_processors.cpp).
 struct MeshCounts {

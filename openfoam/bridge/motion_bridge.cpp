@@ -11,7 +11,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/io/openfoam_poly_mesh.hpp"
+#include "dgwarp/io/openfoam/openfoam_poly_mesh.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/run/deform_frame.hpp"

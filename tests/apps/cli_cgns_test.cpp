@@ -3,7 +3,7 @@
 // coordinates, damaged files refused with nothing written.
 #include <gtest/gtest.h>
 
-#include "dgwarp/io/cgns.hpp"
+#include "dgwarp/io/cgns/cgns.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "support/cgns_test_writer.hpp"
 

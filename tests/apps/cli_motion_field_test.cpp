@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/openfoam.hpp"
-#include "io/openfoam_test_support.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
+#include "io/openfoam/openfoam_test_support.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;

@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/mesh/planar_case.hpp"
-#include "io/openfoam_test_support.hpp"
+#include "io/openfoam/openfoam_test_support.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;

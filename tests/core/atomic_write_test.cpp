@@ -20,9 +20,9 @@
 #include "dgwarp/cases/rect_box.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
-#include "dgwarp/io/gmsh.hpp"
-#include "dgwarp/io/su2.hpp"
-#include "dgwarp/io/vtu.hpp"
+#include "dgwarp/io/gmsh/gmsh.hpp"
+#include "dgwarp/io/su2/su2.hpp"
+#include "dgwarp/io/vtu/vtu.hpp"
 #include "support/test_paths.hpp"
 
 using namespace dgwarp;

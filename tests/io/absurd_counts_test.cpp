@@ -17,10 +17,10 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
-#include "dgwarp/io/gmsh.hpp"
+#include "dgwarp/io/gmsh/gmsh.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/plan/plan_file.hpp"
-#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/su2/su2.hpp"
 #include "fuzz_checks.hpp"
 #include "support/box_in_box.hpp"
 #include "support/test_paths.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/su2/su2.hpp"
 #include "dgwarp/io/text_reader.hpp"
 #include "support/test_paths.hpp"
 

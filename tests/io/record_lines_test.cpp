@@ -13,7 +13,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/parallel_for.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/su2/su2.hpp"
 #include "dgwarp/io/text_reader.hpp"
 #include "support/test_paths.hpp"
 

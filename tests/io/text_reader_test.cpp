@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "dgwarp/io/gmsh.hpp"
-#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/gmsh/gmsh.hpp"
+#include "dgwarp/io/su2/su2.hpp"
 
 using namespace dgwarp;
 

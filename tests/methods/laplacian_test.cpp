@@ -10,7 +10,7 @@
 
 #include "dgwarp/cases/paper_cases.hpp"
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"

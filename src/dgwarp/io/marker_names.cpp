@@ -5,7 +5,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
 
 namespace dgwarp {
 

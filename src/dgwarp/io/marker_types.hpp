@@ -52,7 +52,7 @@ bool is_cyclic_type(std::string_view type);
 
 /// Makes the markers that slide by their type, and the cyclic pairs cyclic
 /// (unless the motion names either half), and the markers `also` (an
-/// SU2 configuration's MARKER_SYM: io/su2_config.hpp; names of `mesh`'s
+/// SU2 configuration's MARKER_SYM: io/su2/su2_config.hpp; names of `mesh`'s
 /// markers), slide in `spec` unless it names them, and finds the 2D case the
 /// `empty` or `wedge` markers make, if any (the caller deforms planar->mesh
 /// with planar_motion(*planar, mesh, spec)).

@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "dgwarp/core/progress.hpp"
-#include "dgwarp/io/cgns.hpp"
-#include "dgwarp/io/openfoam.hpp"
-#include "dgwarp/io/su2.hpp"
+#include "dgwarp/io/cgns/cgns.hpp"
+#include "dgwarp/io/openfoam/openfoam.hpp"
+#include "dgwarp/io/su2/su2.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 
 namespace dgwarp {

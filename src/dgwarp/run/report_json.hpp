@@ -13,6 +13,9 @@
 
 namespace dgwarp {
 
+/// JSON schema version of every --json report (docs/JSON.md); bumped on incompatible changes.
+inline constexpr int json_schema_version = 2;
+
 /// {"cells", "min", "mean", "inverted", "worst_cell", "histogram": {"edges", "counts"}}
 nlohmann::json quality_json(const QualitySummary& q);
 /// {"min", "mean", "worst_cell"}
