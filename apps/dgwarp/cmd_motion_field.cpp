@@ -59,7 +59,7 @@ void run_motion_field(const MotionFieldArgs& a) {
     const Inputs in = read_motion_inputs(a.setup, progress, [&](const MotionSpec& spec) {
         std::vector<std::filesystem::path> inputs = mesh_input_files(a.setup.mesh);
         inputs.push_back(a.setup.motion);
-        for (const auto& f : motion_files(spec)) inputs.push_back(f);
+        for (const auto& f : motion_named_files(spec)) inputs.push_back(f);
         check_nearest_folder_writable(file.parent_path());
         check_output(file, inputs);
         if (static_cast<std::size_t>(a.frame) >= frame_count(spec))

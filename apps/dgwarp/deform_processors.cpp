@@ -17,7 +17,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/motion_file.hpp"
-#include "dgwarp/io/openfoam/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam_frames.hpp"
 #include "dgwarp/mpi/agreement.hpp"
 #include "dgwarp/mpi/part_reductions.hpp"
 #include "dgwarp/mpi/part_run.hpp"
@@ -121,10 +121,10 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         in.spec = read_motion_file(a.setup.motion);
         foam_times = foam_time_names(in.spec, frame_count(in.spec), a.foam_time);
         if (rank == 0) {
-            std::vector<fs::path> inputs = motion_files(in.spec);
+            std::vector<fs::path> inputs = motion_named_files(in.spec);
             inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
             for (const auto& file : mesh_input_files(a.setup.mesh)) inputs.push_back(file);
-            check_foam_outputs(a.output, foam_times, a.setup.mesh, inputs);
+            check_openfoam_frame_outputs(a.output, foam_times, a.setup.mesh, inputs);
         }
         const std::vector<fs::path> processors = openfoam_processor_meshes(a.setup.mesh);
         if (processors.size() != static_cast<std::size_t>(processes))

@@ -119,6 +119,10 @@ TEST(MotionFile, FilesAreReadRelativeToTheMotionFile) {
     EXPECT_EQ(std::get<PrescribedPositions>(m.at("b")).positions.values[0], (Vec3{1, 2, 0}));
     EXPECT_EQ(std::get<PrescribedNodeMotions>(m.at("c")).motions.values[0].rotation, (Vec3{0, 0, 0.5}));
     EXPECT_EQ(std::get<PrescribedDisplacements>(m.at("d")).displacements.source, d.source);
+    // The files reading it read besides it, each once.
+    EXPECT_EQ(motion_named_files(spec), (std::vector<std::filesystem::path>{dir / "sub" / "d.csv", dir / "sub" / "s.dat",
+                                                                             dir / "sub" / "n.csv"}));
+    EXPECT_TRUE(motion_named_files(parse(R"({"markers": {"a": {"translate": [1, 0]}}})")).empty());
 }
 
 TEST(MotionFile, MissingNamedFileSaysWhichFieldNamedIt) {

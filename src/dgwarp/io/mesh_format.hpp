@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "dgwarp/io/mesh_io.hpp"
 
@@ -30,6 +31,12 @@ struct MeshFormat {
     void (*check_writable)(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options) = nullptr;
     void (*write)(const std::filesystem::path& path, const Mesh& mesh, const MeshFields& fields,
                   const WriteOptions& options) = nullptr;
+    /// The files `read` reads for `path` (nullptr: `path` itself), which no
+    /// output may be (mesh_input_files).
+    std::vector<std::filesystem::path> (*input_files)(const std::filesystem::path& path) = nullptr;
+    /// The files `write` writes for `path` (nullptr: `path` itself), in
+    /// folders it may make (check_mesh_output).
+    std::vector<std::filesystem::path> (*output_files)(const std::filesystem::path& path) = nullptr;
 };
 
 extern const MeshFormat su2_format, gmsh_format, vtu_format, cgns_format, openfoam_format;

@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/output_checks.hpp"
 #include "dgwarp/io/mesh_format.hpp"
 
 namespace dgwarp {
@@ -71,6 +72,19 @@ std::vector<std::string> writable_extensions() { return extensions(); }
 
 bool reads_openfoam(const std::filesystem::path& path) { return format_to_read(path) == &openfoam_format; }
 bool writes_openfoam(const std::filesystem::path& path) { return format_to_write(path) == &openfoam_format; }
+
+std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path& path) {
+    const MeshFormat* format = format_to_read(path);
+    return format && format->input_files ? format->input_files(path) : std::vector<std::filesystem::path>{path};
+}
+
+void check_mesh_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs) {
+    const MeshFormat* format = format_to_write(output);
+    if (!format || !format->output_files) return check_output_file(output, inputs);
+    const std::vector<std::filesystem::path> files = format->output_files(output);
+    for (const auto& file : files) check_output(file, inputs);
+    if (!files.empty()) check_nearest_folder_writable(files.front().parent_path());
+}
 
 namespace {
 

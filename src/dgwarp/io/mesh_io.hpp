@@ -117,6 +117,19 @@ std::string lower_case_extension(const std::filesystem::path& path);
 bool reads_openfoam(const std::filesystem::path& path);
 bool writes_openfoam(const std::filesystem::path& path);
 
+/// The files read_mesh(path) reads: an OpenFOAM case's polyMesh files (its
+/// points perhaps a time folder's; each processor's of a decomposed case),
+/// else `path` itself. For the check that no output is an input.
+std::vector<std::filesystem::path> mesh_input_files(const std::filesystem::path& path);
+
+/// Checks, before the work, that write_mesh(output) can write and destroys
+/// no input (`inputs`, e.g. mesh_input_files): check_output_file
+/// (core/output_checks.hpp) for a file; for an OpenFOAM case folder,
+/// check_output for each file written there and that the nearest existing
+/// folder on its path is writable (the case folder may not exist yet).
+/// UsageError (an output is an input), IoError.
+void check_mesh_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs);
+
 /// The extensions read_mesh / write_mesh accept, for help texts.
 std::vector<std::string> readable_extensions();
 std::vector<std::string> writable_extensions();

@@ -1,9 +1,11 @@
 #include "dgwarp/io/motion_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
 #include <utility>
+#include <variant>
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/json_fields.hpp"
@@ -252,6 +254,28 @@ MotionSpec parse_motion_file(const std::string& text, const std::string& file_na
 
 MotionSpec read_motion_file(const std::filesystem::path& path) {
     return parse_motion_file(read_file_text(path), path.string(), path.parent_path());
+}
+
+namespace {
+
+void add_table_source(std::vector<std::filesystem::path>& files, const std::string& source) {
+    if (!source.empty() && std::find(files.begin(), files.end(), source) == files.end()) files.emplace_back(source);
+}
+
+void add_marker_files(std::vector<std::filesystem::path>& files, const MarkerMotion& motion) {
+    if (const auto* d = std::get_if<PrescribedDisplacements>(&motion)) add_table_source(files, d->displacements.source);
+    if (const auto* p = std::get_if<PrescribedPositions>(&motion)) add_table_source(files, p->positions.source);
+    if (const auto* n = std::get_if<PrescribedNodeMotions>(&motion)) add_table_source(files, n->motions.source);
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> motion_named_files(const MotionSpec& spec) {
+    std::vector<std::filesystem::path> files;
+    add_marker_files(files, spec.default_motion);
+    for (const MotionFrame& frame : spec.frames)
+        for (const auto& [marker, motion] : frame.markers) add_marker_files(files, motion);
+    return files;
 }
 
 }  // namespace dgwarp

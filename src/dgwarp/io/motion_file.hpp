@@ -40,4 +40,9 @@ MotionSpec parse_motion_file(const std::string& text, const std::string& file_na
 std::vector<std::filesystem::path> write_motion_file(const std::filesystem::path& path, const MotionSpec& spec,
                                                      const std::string& comment = "");
 
+/// The node files `spec`'s tables were read from (their `source`), each once,
+/// in order of first use: the files reading its motion file read besides it,
+/// which no output may be.
+std::vector<std::filesystem::path> motion_named_files(const MotionSpec& spec);
+
 }  // namespace dgwarp

@@ -13,6 +13,7 @@
 #include "dgwarp/core/hash.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/methods/dg_harmonic_on_coarse.hpp"
+#include "dgwarp/methods/dg_idw_subset.hpp"
 #include "dgwarp/methods/mesh_fingerprint.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/option_table.hpp"
@@ -108,70 +109,39 @@ void sort_by_global_id(std::vector<NodeId>& nodes, std::span<const std::int64_t>
 
 // DG-IDW: the working nodes cut down to the boundary nodes a step reads
 // (`keep`, by boundary index) and the process's volume nodes, so that a step
-// costs nothing per boundary node of the whole mesh. Boundary indices are
-// renumbered in the same order (ascending), so the plan's rule for shared
-// vertices and its bits are unchanged; static corners' motions are never
-// read, so a static corner not kept points to boundary index 0.
+// costs nothing per boundary node of the whole mesh (keep_dg_idw_boundary_nodes:
+// the plan's bits unchanged); the distributed plan's own indices renumbered alike.
 void keep_only_boundary_nodes_read(DistributedPlan& p, const std::vector<std::uint8_t>& keep) {
-    auto& plan = std::get<DgIdwPlan>(p.plan);
     const auto nb = static_cast<std::int32_t>(keep.size());
-    std::vector<std::int32_t> renumber(keep.size(), -1);
-    std::int32_t kept = 0;
-    for (std::int32_t b = 0; b < nb; ++b)
-        if (keep[b]) renumber[b] = kept++;
     const int dim = p.dim;
     std::vector<double> points;
-    points.reserve(p.working_points.size() - static_cast<std::size_t>(nb - kept) * dim);
     for (std::int32_t b = 0; b < nb; ++b)
         if (keep[b]) points.insert(points.end(), p.working_points.begin() + b * dim, p.working_points.begin() + (b + 1) * dim);
+    const auto kept = static_cast<std::int32_t>(points.size() / static_cast<std::size_t>(dim));
     points.insert(points.end(), p.working_points.begin() + static_cast<std::ptrdiff_t>(nb) * dim, p.working_points.end());
+    const std::vector<std::int32_t> renumber = keep_dg_idw_boundary_nodes(std::get<DgIdwPlan>(p.plan), keep, points);
     p.working_points = std::move(points);
     for (std::int32_t& w : p.local_to_working) w = w < nb ? renumber[w] : w - nb + kept;
     for (std::int32_t& b : p.local_boundary_index) b = renumber[b];
     for (std::int32_t& b : p.adopted_boundary) b = renumber[b];
     for (std::int32_t& b : p.recv_boundary) b = renumber[b];
     for (std::int32_t& b : p.counted_shared_members) b = renumber[b];
-    for (std::int32_t& c : plan.simplex_motion)
-        c = c >= 0 ? renumber[c] : (renumber[-1 - c] >= 0 ? -1 - renumber[-1 - c] : -1);
-
-    std::vector<NodeId> nodes;
-    std::vector<std::uint8_t> moving;
-    for (std::int32_t b = 0; b < nb; ++b)
-        if (keep[b]) {
-            nodes.push_back(static_cast<NodeId>(nodes.size()));
-            moving.push_back(plan.boundary_moving[b]);
-        }
-    plan.boundary_nodes = std::move(nodes);
-    plan.boundary_moving = std::move(moving);
-    std::vector<std::int32_t> node_simplex(static_cast<std::size_t>(kept), 0);
-    for (std::int32_t i = 0; i < kept; ++i) node_simplex[i] = -1 - i;
-    node_simplex.insert(node_simplex.end(), plan.node_simplex.begin() + nb, plan.node_simplex.end());
-    plan.node_simplex = std::move(node_simplex);
-    // The step report's shared vertices are counted by their owners (counted_shared_*).
-    plan.shared_offsets = {0};
-    plan.shared_members.clear();
-    // The plan is now one for the kept working nodes: its fingerprint says so, so that its plan file
-    // (save_distributed_plan) passes load_plan's consistency checks.
-    plan.mesh = mesh_fingerprint(dim, p.working_points, BoundarySet{plan.boundary_nodes, plan.boundary_moving});
 }
 
 // DG-IDW: who sends which motions to whom every step.
 void plan_motion_exchange(DistributedPlan& p, const detail::GatheredBoundary& g) {
     const auto& plan = std::get<DgIdwPlan>(p.plan);
     const auto nb = static_cast<std::size_t>(p.num_boundary_nodes);
-    std::vector<std::uint8_t> needed(nb, 0);
     // Moving corners of the graph simplices holding this process's volume
     // nodes (static corners' motions are never read).
-    for (std::int32_t b : plan.simplex_motion)
-        if (b >= 0) needed[static_cast<std::size_t>(b)] = 1;
+    std::vector<std::uint8_t> needed = dg_idw_motions_read(plan);
     // The shared graph vertices whose first boundary node this process owns:
     // it counts their conflicts, so it needs all their nodes' motions.
-    for (std::size_t grp = 0; grp + 1 < plan.shared_offsets.size(); ++grp) {
-        const std::int32_t first = plan.shared_members[plan.shared_offsets[grp]];
-        if (g.owner[first] != p.rank) continue;
-        for (std::int32_t k = plan.shared_offsets[grp]; k < plan.shared_offsets[grp + 1]; ++k) {
-            needed[plan.shared_members[k]] = 1;
-            p.counted_shared_members.push_back(plan.shared_members[k]);
+    for (std::span<const std::int32_t> group : dg_idw_shared_groups(plan)) {
+        if (g.owner[group.front()] != p.rank) continue;
+        for (std::int32_t b : group) {
+            needed[b] = 1;
+            p.counted_shared_members.push_back(b);
         }
         p.counted_shared_offsets.push_back(static_cast<std::int32_t>(p.counted_shared_members.size()));
     }

@@ -6,6 +6,50 @@
 
 namespace dgwarp {
 
+namespace {
+
+/// The polyMesh files read_openfoam reads for `path`: a decomposed case's
+/// processors' (with their addressing, and the points of the time read), or
+/// the case's (its points perhaps a time folder's); `path` itself when it is
+/// no case (reading it will say why).
+std::vector<std::filesystem::path> openfoam_input_files(const std::filesystem::path& path) {
+    std::vector<std::filesystem::path> processors;
+    try {
+        processors = openfoam_processor_meshes(path);
+    } catch (const Error&) {
+        return {path};
+    }
+    std::vector<std::filesystem::path> files;
+    if (!processors.empty()) {
+        const auto time = openfoam_decomposed_time(path);
+        for (const auto& dir : processors) {
+            for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+            for (const char* name : processor_addressing_file_names) files.push_back(dir / name);
+            if (time) files.push_back(dir.parent_path().parent_path() / time->time / "polyMesh" / "points");
+        }
+        return files;
+    }
+    std::filesystem::path dir;
+    try {
+        dir = find_poly_mesh(path);
+    } catch (const Error&) {
+        return {path};
+    }
+    for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+    files.front() = openfoam_points_folder(path) / "points";  // a time folder's, maybe
+    return files;
+}
+
+/// The polyMesh files write_openfoam writes for the case folder `path`.
+std::vector<std::filesystem::path> openfoam_output_files(const std::filesystem::path& path) {
+    const std::filesystem::path dir = openfoam_output_poly_mesh(path);
+    std::vector<std::filesystem::path> files;
+    for (const char* name : poly_mesh_file_names) files.push_back(dir / name);
+    return files;
+}
+
+}  // namespace
+
 const MeshFormat openfoam_format{
     "OpenFOAM", "", false, false, false, /*keeps_openfoam_zones=*/true, is_openfoam_input, is_openfoam_output,
     [](const std::filesystem::path& path, const ReadOptions&, const ProgressFn& progress, MeshExtras* extras) {
@@ -31,6 +75,8 @@ const MeshFormat openfoam_format{
         foam.source = source;
         write_openfoam(path, mesh, foam);
     },
+    openfoam_input_files,
+    openfoam_output_files,
 };
 
 }  // namespace dgwarp
