@@ -15,7 +15,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/openfoam/openfoam.hpp"
+#include "dgwarp/io/openfoam/openfoam_frames.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
@@ -113,10 +113,11 @@ MethodRun run_method(Inputs& in, MethodRun run, bool planned, const DeformArgs& 
         Stopwatch sw;
         const bool invalid = !f.valid();
         if ((!invalid || a.allow_invalid) && foam) {
-            if (!foam_base_written) write_foam_base(in, out, foam_times[v.frame], beside);
+            if (!foam_base_written) write_openfoam_frame_base(out, foam_times[v.frame], output_mesh(in), in.extras, beside);
             foam_base_written = true;
             f.output =
-                write_foam_points(in, out, foam_times[v.frame], output_points(in, v.points, lifted), beside).string();
+                write_openfoam_frame_points(out, foam_times[v.frame], output_points(in, v.points, lifted), in.extras, beside)
+                    .string();
             f.write_seconds = sw.lap();
         } else if (!invalid || a.allow_invalid) {
             const auto path = frame_path(out, v.frame, frames);
@@ -232,7 +233,7 @@ void run_deform(const DeformArgs& given) {
     ProgressLine progress(text);
     Inputs in = read_motion_inputs(a.setup, progress, [&](const MotionSpec& spec) {
         // Every file this run may write (each method's, each frame's), before any work.
-        std::vector<std::filesystem::path> inputs = motion_files(spec);
+        std::vector<std::filesystem::path> inputs = motion_named_files(spec);
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
         for (const auto& file : mesh_input_files(a.setup.mesh)) inputs.push_back(file);
         if (!a.plan.empty()) inputs.emplace_back(a.plan);
@@ -240,7 +241,8 @@ void run_deform(const DeformArgs& given) {
         if (foam) {
             foam_times = foam_time_names(spec, frames, a.foam_time);
             for (Method m : methods)
-                check_foam_outputs(method_output(a.output, m, several), foam_times, a.setup.mesh, inputs, a.foam_processors);
+                check_openfoam_frame_outputs(method_output(a.output, m, several), foam_times, a.setup.mesh, inputs,
+                                             a.foam_processors);
             return;
         }
         check_folder_writable(std::filesystem::path(a.output).parent_path());
@@ -261,7 +263,7 @@ void run_deform(const DeformArgs& given) {
     // The first method's plan, with the original's quality measured beside it.
     std::vector<MethodRun> runs(methods.size());
     std::vector<char> planned(methods.size(), 0);
-    measure_beside(in, [&] { planned[0] = plan_run(in, methods[0], a, several, progress, runs[0]); });
+    measure_original_cells(in, [&] { planned[0] = plan_run(in, methods[0], a, several, progress, runs[0]); });
 #ifdef __GLIBC__
     // The prepare's freed temporaries (the triangulation, the k-d trees,
     // the factorisation's work arrays: blocks under 2 MiB, and Eigen's from

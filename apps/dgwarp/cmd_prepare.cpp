@@ -30,12 +30,12 @@ void run_prepare(const PrepareArgs& a) {
     require_extension("--output", a.output, {".plan"}, "a plan file");
     ProgressLine progress(!a.json && !a.quiet);
     Inputs in = read_motion_inputs(a.setup, progress, [&a](const MotionSpec& spec) {
-        std::vector<std::filesystem::path> inputs = motion_files(spec);
+        std::vector<std::filesystem::path> inputs = motion_named_files(spec);
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
         check_output_file(a.output, inputs);
     });
     PlannedMethod p;
-    measure_beside(in, [&] { p = plan_method(in, method, "", progress); });
+    measure_original_cells(in, [&] { p = plan_method(in, method, "", progress); });
     Stopwatch sw;
     save_plan(a.output, p.plan);
     const double write_seconds = sw.lap();

@@ -164,108 +164,14 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     progress.phase("reading " + args.mesh);
     in.mesh = read_mesh(args.mesh, {args.zone}, progress.reporter("reading " + args.mesh), in.extras);
     apply_marker_renames(in.mesh, args.rename_markers);
-    // Names the output cannot hold (a CGNS BC "UserDefined 1" for an OpenFOAM
-    // patch): made into names it can, in the motion too, and said below.
-    std::vector<MarkerRename> made;
-    if (!args.writable_for.empty()) made = make_marker_names_writable(in.mesh, args.writable_for);
-    for (const MarkerRename& r : made) rename_marker(in.spec, r.from, r.to);
-    if (in.extras.cgns && !made.empty()) in.extras.cgns.reset();  // a renamed CGNS input is written whole
     in.read_seconds = sw.lap();
     progress.phase("classifying the boundary");
-    // Markers that slide by their type; a 2D case deformed as its 2D mesh.
-    std::vector<std::string> symmetry;
-    if (!args.su2_config.empty())
-        for (const Su2ConfigMarker& m : su2_symmetry_markers(args.su2_config)) {
-            try {
-                find_marker(in.mesh, m.name);
-            } catch (const MeshError& e) {
-                throw MeshError(args.su2_config + ":" + std::to_string(m.line) + ": MARKER_SYM: " + e.what(), m.name);
-            }
-            symmetry.push_back(m.name);
-        }
-    TypedMotion typed = apply_marker_types(in.mesh, in.extras, in.spec, symmetry);
-    in.sliding_by_type = std::move(typed.sliding);
-    in.coupled_by_type = std::move(typed.coupled);
-    in.not_planar = std::move(typed.not_planar);
-    if (typed.planar) {
-        in.spec = planar_motion(*typed.planar, in.mesh, in.spec);
-        in.file_mesh = std::move(in.mesh);
-        in.mesh = typed.planar->mesh;
-        in.planar = std::move(typed.planar);
-    }
-    in.boundary = resolve_boundary(in.mesh, in.spec);
-    if (!typed.uncoupled.empty())
-        in.boundary.warnings.push_back(
-            {WarningCode::other, "the cyclic patches " + joined(typed.uncoupled) +
-                                     " are not coupled (dgwarp couples cyclic and cyclicSlip patches that name each "
-                                     "other as neighbourPatch and that the motion does not name; a cyclicAMI's halves "
-                                     "do not share nodes): they move as the motion says (fixed unless it names them), "
-                                     "each on its own, so give both halves the same motion, or none, for them to still "
-                                     "match"});
-    for (const MarkerRename& r : made)
-        in.boundary.warnings.push_back(
-            {WarningCode::other, args.writable_for + " cannot hold the marker name '" + r.from + "': it is written as '" +
-                                     r.to + "' (--rename-marker '" + r.from + "=NEW' names it otherwise)",
-             r.to});
-    if (!in.not_planar.empty())
-        in.boundary.warnings.push_back(
-            {WarningCode::other, "the empty or wedge patches slide but do not make a 2D case (" + in.not_planar +
-                                     "): the mesh is deformed in 3D, their nodes kept in their planes"});
+    classify_inputs(in, {args.su2_config, args.writable_for, "--rename-marker"});
     if (const std::string zone = zone_notice(in.extras, args.mesh, args.zone); !zone.empty())
         in.boundary.warnings.insert(in.boundary.warnings.begin(),
                                     {WarningCode::other, zone + "; an .su2 output keeps the other zones as they are"});
-    in.resolve_seconds = sw.lap();
     progress.clear();
     return in;
-}
-
-const Mesh& output_mesh(const Inputs& in) { return in.planar ? in.file_mesh : in.mesh; }
-
-void write_output_mesh(Inputs& in, const std::filesystem::path& path, std::vector<double>& points,
-                       const MeshFields& fields, const WriteOptions& options) {
-    Mesh& mesh = in.planar ? in.file_mesh : in.mesh;
-    if (points.size() != mesh.points.size())
-        throw MeshError(std::to_string(points.size()) + " coordinates for an output mesh of " +
-                        std::to_string(mesh.points.size()));
-    struct SwapBack {
-        std::vector<double>& a;
-        std::vector<double>& b;
-        ~SwapBack() { a.swap(b); }
-    } back{mesh.points, points};
-    mesh.points.swap(points);
-    write_mesh(path, mesh, fields, options);
-}
-
-std::span<const double> output_points(const Inputs& in, std::span<const double> points, std::vector<double>& buffer) {
-    if (!in.planar) return points;
-    buffer.resize(in.file_mesh.points.size());
-    lift_points(*in.planar, in.file_mesh.points, points, buffer);
-    return buffer;
-}
-
-std::vector<double>& output_points(const Inputs& in, std::vector<double>& points, std::vector<double>& buffer) {
-    if (!in.planar) return points;
-    output_points(in, std::span<const double>(points), buffer);
-    return buffer;
-}
-
-void warn_already_inverted(Inputs& in) {
-    const std::int64_t bad = in.original.summary.inverted;
-    if (bad == 0) return;
-    Warning w{WarningCode::already_inverted,
-              std::to_string(bad) + (bad == 1 ? " cell is" : " cells are") +
-                  " already inverted or degenerate in the input mesh (quality <= 0, e.g. cell " +
-                  std::to_string(in.original.summary.worst_cell) +
-                  "): they are counted as inverted before and after, but not blamed on the motion, and do not "
-                  "make a step invalid",
-              "", bad};
-    w.element = in.original.summary.worst_cell;
-    in.boundary.warnings.push_back(std::move(w));
-}
-
-void measure_beside(Inputs& in, const std::function<void()>& work) {
-    in.original = measure_original_beside(in.mesh, work, &in.quality_seconds);
-    warn_already_inverted(in);
 }
 
 PlanSummary planned_summary(const PlannedMethod& p) {

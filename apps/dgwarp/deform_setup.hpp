@@ -16,6 +16,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/number_text.hpp"
+#include "dgwarp/job/job_inputs.hpp"
 #include "dgwarp/mesh/planar_case.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
@@ -72,46 +73,11 @@ void refuse_other_methods_options(const SetupArgs& args, Method method, const st
 /// The method options from the command line.
 MethodOptions method_options(const SetupArgs& args);
 
-/// The mesh, the motion and the boundary, read and checked once.
-struct Inputs {
+/// The mesh, the motion and the boundary, read and checked once
+/// (job/job_inputs.hpp), and the command line they were read by.
+struct Inputs : JobInputs {
     SetupArgs args;
-    /// The mesh deformed: the file's, or the 2D mesh of a 2D case stored as 3D (`planar`).
-    Mesh mesh;
-    MeshExtras extras;  // what the mesh file holds besides the mesh (SU2: other zones, FFD boxes)
-    /// The motion, in `mesh`'s terms: markers that slide by their type added
-    /// (`sliding_by_type`); for a 2D case, in its planes (motion/planar_motion.hpp).
-    MotionSpec spec;
-    std::vector<std::string> sliding_by_type;
-    /// The OpenFOAM cyclic patch pairs coupled because of their type (TypedMotion::coupled).
-    std::vector<std::pair<std::string, std::string>> coupled_by_type;
-    /// A 2D case stored as 3D (an OpenFOAM 2D case): `mesh` is its 2D mesh,
-    /// `file_mesh` the mesh read, which the outputs are (lift_points).
-    std::optional<PlanarCase> planar;
-    Mesh file_mesh;
-    /// Empty patches that slide but make no 2D case: why (they slide in 3D).
-    std::string not_planar;
-    ResolvedBoundary boundary;
-    /// The original cells every frame is judged against (run/original_cells.hpp):
-    /// a cell flipped in the input counts as inverted before and after.
-    OriginalCells original;
-    double read_seconds = 0, resolve_seconds = 0, quality_seconds = 0;
 };
-
-/// The mesh outputs are written as: the file's (in.file_mesh for a 2D case).
-const Mesh& output_mesh(const Inputs& in);
-
-/// Writes output_mesh(in) with `points` (of output_mesh(in)) for its
-/// coordinates: the array is swapped into the mesh for the write and back,
-/// so that a frame's output costs no copy of the cells nor of the points.
-/// `in` and `points` are as they were on return, also when the write throws.
-void write_output_mesh(Inputs& in, const std::filesystem::path& path, std::vector<double>& points,
-                       const MeshFields& fields, const WriteOptions& options);
-
-/// `points` (of in.mesh) as points of output_mesh(in): themselves, or the 2D
-/// case's 3D points (lift_points) in `buffer`.
-std::span<const double> output_points(const Inputs& in, std::span<const double> points, std::vector<double>& buffer);
-/// The same for an array: `points` itself, or `buffer`.
-std::vector<double>& output_points(const Inputs& in, std::vector<double>& points, std::vector<double>& buffer);
 
 /// Reads the motion file, calls `check_outputs` with it when given (so that
 /// outputs are checked before the long work: their names may depend on its
@@ -120,17 +86,6 @@ std::vector<double>& output_points(const Inputs& in, std::vector<double>& points
 /// and resolve seconds.
 Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
                           const std::function<void(const MotionSpec&)>& check_outputs = {});
-
-/// Calls work() (a method's prepare: mostly serial) with the original
-/// mesh's orientation and quality measured beside it on a thread of its own
-/// (measure_original_beside), then keeps them in `in` (in.original, in.quality_seconds: the
-/// measure's own time, which overlaps work's) with warn_already_inverted's
-/// warning. work() must not read in.original nor in.boundary.warnings.
-void measure_beside(Inputs& in, const std::function<void()>& work);
-
-/// Adds the boundary warning about the cells already inverted or degenerate
-/// in the input (in.original.summary, its worst cell named), if any.
-void warn_already_inverted(Inputs& in);
 
 /// A method's plan for the inputs: built, or loaded from `plan_file` (a DG-IDW
 /// or DG-harmonic plan file) and checked to fit the mesh and boundary.
