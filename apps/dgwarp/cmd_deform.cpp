@@ -20,7 +20,7 @@
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
-#include "frame_output.hpp"
+#include "dgwarp/job/frame_outputs.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
 
@@ -69,13 +69,10 @@ MethodRun run_method(Inputs& in, MethodRun run, bool planned, const DeformArgs& 
     if (text && several)
         for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w.text);
     const auto out = method_output(a.output, method, several);
-    const bool foam = !foam_times.empty();
-    bool foam_base_written = false;
-    if (const std::string w = foam ? "" : dropped_extras_warning(in.extras, in.args.mesh, out); !w.empty() && !a.quiet)
+    FrameOutputs outputs{out, frames, foam_times, beside};
+    if (const std::string w = foam_times.empty() ? dropped_extras_warning(in.extras, in.args.mesh, out) : "";
+        !w.empty() && !a.quiet)
         std::cerr << "warning: " << w << "\n";
-    WriteOptions write_options;
-    write_options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
-    std::vector<double> lifted;
     RunOptions options;
     options.frame.repair = a.untangle ? Repair::untangle : a.no_untangle ? Repair::none : Repair::method_default;
     options.frame.untangle_target = a.untangle_target;
@@ -111,23 +108,8 @@ MethodRun run_method(Inputs& in, MethodRun run, bool planned, const DeformArgs& 
         f.time = v.time;
         f.process_seconds = process_seconds;
         Stopwatch sw;
-        const bool invalid = !f.valid();
-        if ((!invalid || a.allow_invalid) && foam) {
-            if (!foam_base_written) write_openfoam_frame_base(out, foam_times[v.frame], output_mesh(in), in.extras, beside);
-            foam_base_written = true;
-            f.output =
-                write_openfoam_frame_points(out, foam_times[v.frame], output_points(in, v.points, lifted), in.extras, beside)
-                    .string();
-            f.write_seconds = sw.lap();
-        } else if (!invalid || a.allow_invalid) {
-            const auto path = frame_path(out, v.frame, frames);
-            std::vector<double>& points = output_points(in, v.points_array, lifted);
-            const MeshFields fields =
-                writes_fields(path) ? deformation_fields(output_mesh(in), points, v.cells.quality,
-                                                         quality_ratios(v.cells.quality, in.original.quality))
-                                    : MeshFields{};
-            write_output_mesh(in, path, points, fields, write_options);
-            f.output = path.string();
+        if (f.valid() || a.allow_invalid) {
+            f.output = write_frame(in, outputs, v.frame, v.points_array, v.cells.quality).string();
             f.write_seconds = sw.lap();
         }
         if (text && !several) {

@@ -17,7 +17,7 @@
 #include "deform_setup.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "flag_values.hpp"
-#include "frame_output.hpp"
+#include "dgwarp/job/frame_outputs.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
 

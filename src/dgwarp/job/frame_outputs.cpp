@@ -1,9 +1,11 @@
-#include "frame_output.hpp"
+#include "dgwarp/job/frame_outputs.hpp"
 
 #include <algorithm>
-#include <numeric>
 
-namespace dgwarp::cli {
+#include "dgwarp/io/openfoam/openfoam_frames.hpp"
+#include "dgwarp/quality/mesh_quality.hpp"
+
+namespace dgwarp {
 
 std::filesystem::path frame_path(const std::filesystem::path& out, std::size_t frame, std::size_t frames) {
     if (frames <= 1) return out;
@@ -42,4 +44,24 @@ MeshFields deformation_fields(const Mesh& original, std::span<const double> new_
     return fields;
 }
 
-}  // namespace dgwarp::cli
+std::filesystem::path write_frame(JobInputs& in, FrameOutputs& o, std::size_t frame, std::vector<double>& points,
+                                  const std::vector<double>& quality) {
+    if (!o.foam_times.empty()) {
+        const std::string& time = o.foam_times.at(frame);
+        if (!o.base_written) write_openfoam_frame_base(o.out, time, output_mesh(in), in.extras, o.beside);
+        o.base_written = true;
+        return write_openfoam_frame_points(o.out, time, output_points(in, std::span<const double>(points), o.lifted),
+                                           in.extras, o.beside);
+    }
+    const std::filesystem::path path = frame_path(o.out, frame, o.frames);
+    std::vector<double>& written = output_points(in, points, o.lifted);
+    const MeshFields fields = writes_fields(path) ? deformation_fields(output_mesh(in), written, quality,
+                                                                       quality_ratios(quality, in.original.quality))
+                                                  : MeshFields{};
+    WriteOptions options;
+    options.extras = &in.extras;  // an SU2 output keeps the input's other zones, FFD boxes, periodic data
+    write_output_mesh(in, path, written, fields, options);
+    return path;
+}
+
+}  // namespace dgwarp
