@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/joined.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/marker_names.hpp"
@@ -24,11 +25,8 @@ namespace dgwarp::cli {
 
 namespace {
 
-std::string joined(const std::vector<std::string>& names) {
-    std::string s;
-    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-    return s.empty() ? "none" : s;
-}
+/// The names joined, or "none".
+std::string names_or_none(const std::vector<std::string>& names) { return names.empty() ? "none" : joined(names); }
 
 std::string method_list() {
     std::string s;
@@ -264,16 +262,17 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
     out << "mesh      " << in.args.mesh << ": " << describe_mesh(output_mesh(in)) << "\n";
     if (in.planar)
         out << "2D case   one cell thick between its " << (in.planar->wedge ? "wedge" : "empty") << " patches ("
-            << joined(in.planar->plane_markers) << "), deformed as the 2D mesh of the first plane: "
+            << names_or_none(in.planar->plane_markers) << "), deformed as the 2D mesh of the first plane: "
             << describe_mesh(in.mesh) << "; the other plane's nodes move as their twins"
             << (in.planar->axis_marker.empty() ? "" : "; the axis (" + in.planar->axis_marker + ") slides") << "\n";
     out << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
-        << "; moving: " << joined(in.boundary.moving_markers) << "; static: " << joined(in.boundary.static_markers);
-    if (!in.boundary.sliding_markers.empty()) out << "; sliding: " << joined(in.boundary.sliding_markers);
+        << "; moving: " << names_or_none(in.boundary.moving_markers)
+        << "; static: " << names_or_none(in.boundary.static_markers);
+    if (!in.boundary.sliding_markers.empty()) out << "; sliding: " << names_or_none(in.boundary.sliding_markers);
     if (!in.sliding_by_type.empty())
-        out << "; sliding by their patch or BC type (unless the motion names them): " << joined(in.sliding_by_type);
+        out << "; sliding by their patch or BC type (unless the motion names them): " << names_or_none(in.sliding_by_type);
     if (!in.boundary.cyclic_markers.empty()) {
-        out << "; cyclic, each node moving as its image on the other half: " << joined(in.boundary.cyclic_markers);
+        out << "; cyclic, each node moving as its image on the other half: " << names_or_none(in.boundary.cyclic_markers);
         if (!in.coupled_by_type.empty()) out << " (OpenFOAM cyclic patches and their neighbourPatch, unless the motion names them)";
     }
     out << "\n";

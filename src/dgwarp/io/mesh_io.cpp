@@ -5,20 +5,11 @@
 #include <cctype>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/joined.hpp"
 #include "dgwarp/core/output_checks.hpp"
 #include "dgwarp/io/mesh_format.hpp"
 
 namespace dgwarp {
-
-namespace {
-
-std::string joined(const std::vector<std::string>& v) {
-    std::string s;
-    for (const auto& e : v) s += (s.empty() ? "" : ", ") + e;
-    return s;
-}
-
-}  // namespace
 
 std::string lower_case_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();

@@ -1,22 +1,13 @@
 #include "dgwarp/job/job_inputs.hpp"
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/core/joined.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/su2/su2_config.hpp"
 #include "dgwarp/motion/planar_motion.hpp"
 
 namespace dgwarp {
-
-namespace {
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string s;
-    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-    return s;
-}
-
-}  // namespace
 
 void classify_inputs(JobInputs& in, const InputSettings& settings) {
     Stopwatch sw;
