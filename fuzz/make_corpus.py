@@ -25,7 +25,7 @@ def write(target, name, text):
     return path
 
 
-# The valid 2D mesh of tests/io/su2_read_damage_test.cpp.
+# The valid 2D mesh of tests/io/su2/su2_read_damage_test.cpp.
 BASE_2D = """NDIME= 2
 NELEM= 2
 5 0 1 2 0
@@ -114,7 +114,7 @@ TWO_ZONES = "NZONE= 2\nIZONE= 1\n" + BASE_2D + "IZONE= 2\n" + BASE_2D.replace("l
 
 WITH_FFD = BASE_2D + "FFD_NBOX= 1\nFFD_NLEVEL= 1\nFFD_TAG= box\nFFD_LEVEL= 0\nFFD_DEGREE_I= 1\n"
 
-# The texts of tests/io/gmsh_test_support.hpp.
+# The texts of tests/io/gmsh/gmsh_test_support.hpp.
 TET_22 = """$MeshFormat
 2.2 0 8
 $EndMeshFormat

@@ -95,12 +95,6 @@ DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_
 }
 
 /// "a, b", or "none".
-std::string processor_name_list(const std::vector<std::string>& names) {
-    std::string s;
-    for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-    return s.empty() ? "none" : s;
-}
-
 void deform_per_processor(const DeformArgs& a, const std::string& given_output) {
     const int rank = mpi_rank(), processes = mpi_processes();
     const bool text = rank == 0 && !a.json && !a.quiet;
@@ -196,8 +190,8 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         std::cout << "mesh      " << in.args.mesh << ": " << describe_mesh(counts) << ", read by " << processes
                   << " processes, each its own processor folder\n";
         std::cout << "motion    " << in.args.motion << ": " << frames << " frame" << (frames == 1 ? "" : "s")
-                  << "; moving: " << processor_name_list(in.boundary.moving_markers)
-                  << "; static: " << processor_name_list(in.boundary.static_markers) << "\n";
+                  << "; moving: " << names_or_none(in.boundary.moving_markers)
+                  << "; static: " << names_or_none(in.boundary.static_markers) << "\n";
         std::cout << "boundary  " << boundary_nodes << " nodes (" << moving_nodes << " moving)\n";
         for (const auto& w : in.boundary.warnings) warnings.print(w.text);
     }

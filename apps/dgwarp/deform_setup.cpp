@@ -25,8 +25,6 @@ namespace dgwarp::cli {
 
 namespace {
 
-/// The names joined, or "none".
-std::string names_or_none(const std::vector<std::string>& names) { return names.empty() ? "none" : joined(names); }
 
 std::string method_list() {
     std::string s;
@@ -50,6 +48,8 @@ std::int64_t moving_count(const BoundarySet& b) {
 }
 
 }  // namespace
+
+std::string names_or_none(const std::vector<std::string>& names) { return names.empty() ? "none" : joined(names); }
 
 // An option of another method than the one that runs would be silently
 // ignored: a usage error instead (with --method all, every option applies).

@@ -30,6 +30,9 @@
 
 namespace dgwarp::cli {
 
+/// The names joined ("a, b"), or "none".
+std::string names_or_none(const std::vector<std::string>& names);
+
 /// Every method option's default as text (option_text of MethodOptions{}).
 std::map<std::string, std::string, std::less<>> default_option_texts();
 

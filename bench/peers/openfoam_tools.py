@@ -166,9 +166,9 @@ def fmt(x, digits=3):
     if isinstance(x, float):
         if x >= 100:
             return "%.0f" % x
-        if x >= 10.0 ** -digits or x == 0:
+        if x == 0 or (x >= 0.01 and x >= 10.0 ** -digits):
             return ("%." + str(digits) + "f") % x
-        return "%.2g" % x if x >= 0.01 else "%.1e" % x  # not 0.0 for 0.04 s
+        return "%.2g" % x if x >= 0.01 else "%.1e" % x  # 0.04 s with one digit: 0.04, not 0.0
     return str(x)
 
 

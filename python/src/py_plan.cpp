@@ -2,7 +2,8 @@
 // deform (methods/method.hpp) and plan files (plan/plan_file.hpp) for Python,
 // with the boundary classified and each step's motion resolved as the CLI's
 // `dgwarp prepare` / `dgwarp deform` do (apps/dgwarp/deform_setup.cpp,
-// cmd_deform.cpp), through the same library calls.
+// cmd_deform.cpp), through the same library calls (marker types, which the CLI
+// applies with job/job_inputs.hpp's classify_inputs, are not: docs/PYTHON.md).
 #include "py_plan.hpp"
 
 #include <pybind11/numpy.h>

@@ -63,7 +63,8 @@ TEST(FrameOutputs, A2dCasesFramesAreWrittenIn3dAsFilesAndAsTimeFolders) {
     EXPECT_EQ(vtu.dim, 3);
     EXPECT_EQ(vtu.num_points(), in.file_mesh.num_points());
 
-    FrameOutputs foam{dir / "case", 1, {"0.5"}};
+    const std::vector<std::string> times = {"0.5"};
+    FrameOutputs foam{dir / "case", 1, times};
     EXPECT_EQ(write_frame(in, foam, 0, points, quality), dir / "case/0.5/polyMesh/points");
     EXPECT_TRUE(foam.base_written);
     const Mesh back = read_mesh(dir / "case/0.5");

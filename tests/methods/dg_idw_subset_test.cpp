@@ -76,7 +76,14 @@ TEST(DgIdwSubset, ANodeAStepReadsCannotBeCutAndTheFlagsMustFit) {
     DgIdwPlan plan = prepare_dg_idw(2, m.points, m.boundary);
     EXPECT_TRUE(dg_idw_shared_groups(plan).empty());  // no two boundary nodes at one place
     std::vector<std::uint8_t> keep(m.boundary.nodes.size(), 0);
-    EXPECT_THROW(keep_dg_idw_boundary_nodes(plan, keep, {}), Error);  // the moving corners are read
+    const std::vector<double> volume_points(static_cast<std::size_t>(plan.num_volume_nodes()) * 2, 0.0);
+    try {
+        keep_dg_idw_boundary_nodes(plan, keep, volume_points);  // the points fit: the moving corners are read
+        FAIL() << "a boundary node a step reads was cut";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("moves a graph simplex corner but is not kept"), std::string::npos)
+            << e.what();
+    }
     keep.pop_back();
     EXPECT_THROW(keep_dg_idw_boundary_nodes(plan, keep, {}), Error);
     std::vector<std::uint8_t> all(m.boundary.nodes.size(), 1);

@@ -15,7 +15,8 @@ namespace dgwarp {
 /// missing): the whole mesh when `mesh` is `original` itself, and a close-up
 /// of the moving body (for naca0012, of its trailing edge). Returns their
 /// paths, relative to the folder of `markdown` when it is given. Nothing for
-/// a 3D mesh. Throws IoError when a file cannot be written.
+/// a 3D mesh. Throws IoError when a file cannot be written, and
+/// std::filesystem::filesystem_error when `folder` cannot be made.
 std::vector<std::string> write_bench_pictures(const std::filesystem::path& folder, const std::filesystem::path& markdown,
                                               const std::string& case_name, const Mesh& original, const Mesh& mesh,
                                               std::span<const double> quality, const std::string& stem,

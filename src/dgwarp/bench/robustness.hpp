@@ -94,7 +94,8 @@ std::string summary_markdown(const std::vector<MethodSummary>& summary);
 std::string robustness_markdown(const RobustnessCampaign& c, const std::vector<SceneResult>& scenes,
                                 const std::vector<MethodSummary>& summary, const std::string& picture, double seconds);
 
-/// The whole report as JSON (docs/JSON.md).
+/// The whole report as JSON: dim, seeds, commit, seconds, a scene per seed
+/// with each method's figures, and the summary per method.
 nlohmann::json robustness_json(const RobustnessCampaign& c, const std::vector<SceneResult>& scenes,
                                const std::vector<MethodSummary>& summary, double seconds);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "dgwarp/core/error.hpp"
 #include "dgwarp/io/openfoam/openfoam_frames.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 
@@ -47,7 +48,10 @@ MeshFields deformation_fields(const Mesh& original, std::span<const double> new_
 std::filesystem::path write_frame(JobInputs& in, FrameOutputs& o, std::size_t frame, std::vector<double>& points,
                                   const std::vector<double>& quality) {
     if (!o.foam_times.empty()) {
-        const std::string& time = o.foam_times.at(frame);
+        if (frame >= o.foam_times.size())
+            throw Error("write_frame: frame " + std::to_string(frame) + " of " + std::to_string(o.foam_times.size()) +
+                        " time folders");
+        const std::string& time = o.foam_times[frame];
         if (!o.base_written) write_openfoam_frame_base(o.out, time, output_mesh(in), in.extras, o.beside);
         o.base_written = true;
         return write_openfoam_frame_points(o.out, time, output_points(in, std::span<const double>(points), o.lifted),

@@ -31,16 +31,17 @@ std::vector<std::filesystem::path> stale_frames(const std::filesystem::path& out
 MeshFields deformation_fields(const Mesh& original, std::span<const double> new_points,
                               const std::vector<double>& quality, const std::vector<double>& ratio);
 
-/// Where a job writes its frames, and what it has written so far.
+/// Where a job writes its frames, and what it has written so far. It views
+/// the caller's time names and processors, which must outlive it.
 struct FrameOutputs {
     std::filesystem::path out;  // a mesh file, or an OpenFOAM case folder
     std::size_t frames = 1;
     /// For an OpenFOAM case folder: each frame's time folder
     /// (openfoam_time_names); empty for a mesh file.
-    std::vector<std::string> foam_times{};
+    std::span<const std::string> foam_times{};
     /// The processor folders beside the input's constant/polyMesh written
     /// with the whole case (read_processors_beside); empty for none.
-    std::vector<OpenFoamProcessor> beside{};
+    std::span<const OpenFoamProcessor> beside{};
     bool base_written = false;  // an OpenFOAM case's constant/polyMesh is there
     std::vector<double> lifted{};  // a 2D case's 3D points
 };

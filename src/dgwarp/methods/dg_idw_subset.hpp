@@ -30,8 +30,9 @@ std::vector<std::span<const std::int32_t>> dg_idw_shared_groups(const DgIdwPlan&
 /// nodes): the plan's step reports no conflicts, a caller counts them
 /// (dg_idw_shared_groups before the cut). `kept_points`: the points of the
 /// mesh left (the plan's fingerprint is made anew from them, so that a plan
-/// file of it passes load_plan's checks). Returns each old boundary index's
-/// new one, or -1 when not kept.
+/// file of it passes load_plan's checks, unless no boundary node is left: its
+/// static corners then name none). Returns each old boundary index's new
+/// one, or -1 when not kept.
 /// Throws Error when `keep` has not a value per boundary node, when a node a
 /// step reads (dg_idw_motions_read) is not kept, or when `kept_points` has
 /// not the kept nodes' count × dim values.

@@ -89,7 +89,7 @@ namespace {
 
 /// Each processor's polyMesh copied into OUT/processorN (not into itself;
 /// without its points when `time` puts them there).
-void copy_processor_bases(const std::vector<OpenFoamProcessor>& processors, const std::filesystem::path& out,
+void copy_processor_bases(std::span<const OpenFoamProcessor> processors, const std::filesystem::path& out,
                           const std::string& time) {
     for (std::size_t p = 0; p < processors.size(); ++p) {
         const std::filesystem::path base = openfoam_output_poly_mesh(processor_folder(out, p));
@@ -101,7 +101,7 @@ void copy_processor_bases(const std::vector<OpenFoamProcessor>& processors, cons
 }
 
 /// Each processor's points (its own numbering and format) of the whole mesh's `points`.
-void write_processor_points(const std::vector<OpenFoamProcessor>& processors, const std::filesystem::path& out,
+void write_processor_points(std::span<const OpenFoamProcessor> processors, const std::filesystem::path& out,
                             const std::string& time, std::span<const double> points) {
     for (std::size_t p = 0; p < processors.size(); ++p) {
         const OpenFoamPointsFile file = openfoam_points_file(processor_folder(out, p), time);
@@ -113,7 +113,7 @@ void write_processor_points(const std::vector<OpenFoamProcessor>& processors, co
 }  // namespace
 
 void write_openfoam_frame_base(const std::filesystem::path& out, const std::string& time, const Mesh& original,
-                               const MeshExtras& extras, const std::vector<OpenFoamProcessor>& beside) {
+                               const MeshExtras& extras, std::span<const OpenFoamProcessor> beside) {
     copy_processor_bases(beside, out, time);
     if (extras.openfoam && !extras.openfoam->processors.empty()) {
         copy_processor_bases(extras.openfoam->processors, out, time);
@@ -132,7 +132,7 @@ void write_openfoam_frame_base(const std::filesystem::path& out, const std::stri
 
 std::filesystem::path write_openfoam_frame_points(const std::filesystem::path& out, const std::string& time,
                                                   std::span<const double> points, const MeshExtras& extras,
-                                                  const std::vector<OpenFoamProcessor>& beside) {
+                                                  std::span<const OpenFoamProcessor> beside) {
     write_processor_points(beside, out, time, points);
     if (extras.openfoam && !extras.openfoam->processors.empty()) {
         write_processor_points(extras.openfoam->processors, out, time, points);

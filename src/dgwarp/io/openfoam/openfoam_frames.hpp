@@ -46,13 +46,13 @@ void check_openfoam_frame_outputs(const std::filesystem::path& out, const std::v
 /// `time` puts them there. `beside`: processor folders beside the input's
 /// constant/polyMesh (read_processors_beside), written too.
 void write_openfoam_frame_base(const std::filesystem::path& out, const std::string& time, const Mesh& original,
-                               const MeshExtras& extras, const std::vector<OpenFoamProcessor>& beside = {});
+                               const MeshExtras& extras, std::span<const OpenFoamProcessor> beside = {});
 
 /// Writes a frame's `points` to out's points file for `time`, in the format
 /// of the OpenFOAM input (ascii for another format); returns its path
 /// (OUT/processor*/<time>/polyMesh/points for a decomposed input).
 std::filesystem::path write_openfoam_frame_points(const std::filesystem::path& out, const std::string& time,
                                                   std::span<const double> points, const MeshExtras& extras,
-                                                  const std::vector<OpenFoamProcessor>& beside = {});
+                                                  std::span<const OpenFoamProcessor> beside = {});
 
 }  // namespace dgwarp
