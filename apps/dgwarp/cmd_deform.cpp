@@ -16,11 +16,11 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam/openfoam_frames.hpp"
+#include "dgwarp/job/frame_outputs.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
-#include "dgwarp/job/frame_outputs.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
 

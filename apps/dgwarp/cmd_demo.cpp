@@ -9,6 +9,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/job/frame_outputs.hpp"
 #include "dgwarp/methods/method.hpp"
 #include "dgwarp/motion/resolve_motion.hpp"
 #include "dgwarp/picture/mesh_picture.hpp"
@@ -17,7 +18,6 @@
 #include "deform_setup.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "flag_values.hpp"
-#include "dgwarp/job/frame_outputs.hpp"
 #include "output_files.hpp"
 #include "report.hpp"
 

@@ -26,7 +26,6 @@
 #include "distributed_run.hpp"
 #include "flag_values.hpp"
 #include "foam_output.hpp"
-#include "dgwarp/job/frame_outputs.hpp"
 #include "output_files.hpp"
 #include "processor_part.hpp"
 #include "report.hpp"
