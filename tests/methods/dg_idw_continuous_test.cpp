@@ -10,9 +10,11 @@
 #include "dgwarp/graph/delaunay_graph.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
 #include "support/box_in_box.hpp"
+#include "support/dg_idw_deformed.hpp"
 
 using namespace dgwarp;
 using dgwarp::test::box_in_box;
+using dgwarp::test::dg_idw_deformed;
 using dgwarp::test::BoxInBox;
 using dgwarp::test::jittered;
 using dgwarp::test::random_motion;
@@ -20,13 +22,6 @@ using dgwarp::test::random_motion;
 namespace {
 
 constexpr DgIdwOptions continuous{.weighting = DgIdwWeighting::continuous};
-
-/// The points deformed by DG-IDW with the plan's options.
-std::vector<double> run_dg_idw(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion) {
-    std::vector<double> out(points.size(), std::nan(""));
-    deform_dg_idw(plan, points, motion, out);
-    return out;
-}
 
 // Barycentric coordinates of x in the triangle p0 p1 p2 by Cramer's rule
 // (independent of the library's sub-area form).
@@ -70,7 +65,7 @@ TEST(DgIdwContinuous, OneTriangleTranslationMatchesTheHandFormulaForEveryMovingS
                     static_sum += e[k] / r;
                 }
             }
-            const auto out = run_dg_idw(plan, points, motion);
+            const auto out = dg_idw_deformed(plan, points, motion);
             for (int d = 0; d < 2; ++d) {
                 const double expected = mask == 0 ? 0.0 : numerator[d] / (moving_sum + static_sum);
                 EXPECT_NEAR(out[6 + d] - x[d], expected, 1e-14) << "mask " << mask << " L " << length;
@@ -123,7 +118,7 @@ double largest_slope_across_faces(int dim, DgIdwWeighting weighting) {
     BoxInBox with_pairs = m;
     with_pairs.points = points;
     const BoundaryMotion motion = random_motion(with_pairs, 3, 0.05);
-    const auto out = run_dg_idw(plan, points, motion);
+    const auto out = dg_idw_deformed(plan, points, motion);
     double worst = 0;
     for (NodeId p : pairs) {
         const auto a = static_cast<std::size_t>(p), b = a + 1;

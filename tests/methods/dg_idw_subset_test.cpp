@@ -10,20 +10,16 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/methods/mesh_fingerprint.hpp"
 #include "support/box_in_box.hpp"
+#include "support/dg_idw_deformed.hpp"
 
 using namespace dgwarp;
 using dgwarp::test::box_in_box;
+using dgwarp::test::dg_idw_deformed;
 using dgwarp::test::BoxInBox;
 using dgwarp::test::jittered;
 using dgwarp::test::random_motion;
 
 namespace {
-
-std::vector<double> deformed_by(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion) {
-    std::vector<double> out(points.size(), std::nan(""));
-    deform_dg_idw(plan, points, motion, out);
-    return out;
-}
 
 bool same_bits_of(const double* a, const double* b, int dim) { return std::memcmp(a, b, sizeof(double) * dim) == 0; }
 
@@ -34,7 +30,7 @@ TEST(DgIdwSubset, ACutPlanGivesTheNodesLeftTheSameBits) {
         const BoxInBox m = jittered(box_in_box(dim, dim == 2 ? 14 : 7), 0.01, 3);
         const DgIdwPlan full = prepare_dg_idw(dim, m.points, m.boundary);
         const BoundaryMotion motion = random_motion(m, 11);
-        const std::vector<double> expected = deformed_by(full, m.points, motion);
+        const std::vector<double> expected = dg_idw_deformed(full, m.points, motion);
 
         const std::size_t nb = m.boundary.nodes.size();
         std::vector<std::uint8_t> keep = dg_idw_motions_read(full);
@@ -65,7 +61,7 @@ TEST(DgIdwSubset, ACutPlanGivesTheNodesLeftTheSameBits) {
             else EXPECT_EQ(renumber[b], -1);
         EXPECT_EQ(cut.num_volume_nodes(), full.num_volume_nodes());
         EXPECT_EQ(cut.mesh, mesh_fingerprint(dim, points, BoundarySet{cut.boundary_nodes, cut.boundary_moving}));
-        const std::vector<double> got = deformed_by(cut, points, kept_motion);
+        const std::vector<double> got = dg_idw_deformed(cut, points, kept_motion);
         for (std::size_t n = 0; n < old_id.size(); ++n)
             EXPECT_TRUE(same_bits_of(&got[n * dim], &expected[old_id[n] * dim], dim)) << dim << "D node " << old_id[n];
     }

@@ -8,21 +8,17 @@
 
 #include "dgwarp/core/error.hpp"
 #include "support/box_in_box.hpp"
+#include "support/dg_idw_deformed.hpp"
 
 using namespace dgwarp;
 using dgwarp::test::all_moving;
 using dgwarp::test::box_in_box;
+using dgwarp::test::dg_idw_deformed;
 using dgwarp::test::BoxInBox;
 using dgwarp::test::moved;
 using dgwarp::test::random_motion;
 
 namespace {
-
-std::vector<double> deform(const DgIdwPlan& plan, const std::vector<double>& points, const BoundaryMotion& motion) {
-    std::vector<double> out(points.size(), std::nan(""));
-    deform_dg_idw(plan, points, motion, out);
-    return out;
-}
 
 /// `plan` with another L (deform uses the plan's options).
 DgIdwPlan with_length_scale(DgIdwPlan plan, double length_scale) {
@@ -121,7 +117,7 @@ TEST(DgIdw, OneSimplexTranslationMatchesThePaperFormulaForEveryMovingSet) {
                     for (int d = 0; d < dim; ++d) sq += (x[d] - s.points[k * dim + d]) * (x[d] - s.points[k * dim + d]);
                     r[k] = std::sqrt(sq) / length;  // distances divided by L
                 }
-                const auto out = deform(with_length_scale(plan, length), s.points, motion);
+                const auto out = dg_idw_deformed(with_length_scale(plan, length), s.points, motion);
                 const double* y = out.data() + dim * (dim + 1);
                 EXPECT_NEAR(y[0] - x[0], paper_component(dim, 7.0, mask, r, tx), 1e-14) << dim << "D mask " << mask;
                 EXPECT_NEAR(y[1] - x[1], paper_component(dim, 7.0, mask, r, ty), 1e-14) << dim << "D mask " << mask;
@@ -164,7 +160,7 @@ TEST(DgIdw, OneSimplexRotationMatchesThePaperFormulaForEveryMovingSet) {
             for (int d = 0; d < 3 && sum > 0; ++d) expected.center[d] /= sum;
             const auto y_expected = moved(dim, s.points, dim + 1, expected);
 
-            const auto out = deform(plan, s.points, motion);
+            const auto out = dg_idw_deformed(plan, s.points, motion);
             for (int d = 0; d < dim; ++d)
                 EXPECT_NEAR(out[dim * (dim + 1) + d], y_expected[d], 1e-14) << dim << "D mask " << mask;
             if (mask != 0) {  // the node does rotate
@@ -191,8 +187,8 @@ TEST(DgIdw, LengthScaleMakesTheDeformationScaleInvariant) {
         const DgIdwPlan plan_small = prepare_dg_idw(dim, small.points, small.boundary);
         const DgIdwPlan plan_big = prepare_dg_idw(dim, big.points, big.boundary);
         auto max_relative_gap = [&](double l_small, double l_big) {
-            const auto a = deform(with_length_scale(plan_small, l_small), small.points, motion_small);
-            const auto b = deform(with_length_scale(plan_big, l_big), big.points, motion_big);
+            const auto a = dg_idw_deformed(with_length_scale(plan_small, l_small), small.points, motion_small);
+            const auto b = dg_idw_deformed(with_length_scale(plan_big, l_big), big.points, motion_big);
             double gap = 0;
             for (std::size_t i = 0; i < a.size(); ++i) gap = std::max(gap, std::abs(b[i] / 1000 - a[i]));
             return gap;
@@ -264,7 +260,7 @@ TEST(DgIdw, NodeOnAGraphVertexTakesItsMotion) {
     EXPECT_EQ(plan.stats.snapped_count, 2);
     BoundaryMotion motion(7);
     for (int b = 4; b < 7; ++b) motion[b] = {{0.1 * b, -0.2, 0}, {0, 0, 0.1 * b}, {1.5, 2, 0}};
-    const auto out = deform(plan, pts, motion);
+    const auto out = dg_idw_deformed(plan, pts, motion);
     const auto y = moved(2, pts, 4, motion[4]);
     EXPECT_NEAR(out[14], y[0], 1e-15);
     EXPECT_NEAR(out[15], y[1], 1e-15);
@@ -281,7 +277,7 @@ TEST(DgIdw, SharedVerticesTakeTheFirstMovingNodesMotionAndConflictsAreCounted) {
     EXPECT_EQ(plan.stats.shared_vertex_count, 2);
     BoundaryMotion motion(9);
     for (int b = 4; b < 9; ++b) motion[b] = {{0.1 * b, -0.2, 0}, {0, 0, 0.05 * b}, {1.5, 2, 0}};
-    const auto out = deform(plan, pts, motion);
+    const auto out = dg_idw_deformed(plan, pts, motion);
     // Both shared vertices conflict: 4 and 7 differ; 0 is static and 8 moves.
     std::vector<double> scratch(pts.size());
     EXPECT_EQ(deform_dg_idw(plan, pts, motion, scratch).conflicting_shared_vertices, 2);
@@ -295,13 +291,13 @@ TEST(DgIdw, SharedVerticesTakeTheFirstMovingNodesMotionAndConflictsAreCounted) {
     // motion changes nothing for them, giving node 4 node 7's motion does.
     BoundaryMotion agree = motion;
     agree[7] = motion[4];
-    const auto same = deform(plan, pts, agree);
+    const auto same = dg_idw_deformed(plan, pts, agree);
     EXPECT_EQ(same[18], out[18]);
     EXPECT_EQ(same[20], out[20]);
     EXPECT_EQ(deform_dg_idw(plan, pts, agree, scratch).conflicting_shared_vertices, 1);
     BoundaryMotion other = motion;
     other[4] = motion[7];
-    EXPECT_NE(deform(plan, pts, other)[20], out[20]);
+    EXPECT_NE(dg_idw_deformed(plan, pts, other)[20], out[20]);
 }
 
 TEST(DgIdw, NodesOutsideTheHullAreCountedAndStillMoveRigidly) {
@@ -311,7 +307,7 @@ TEST(DgIdw, NodesOutsideTheHullAreCountedAndStillMoveRigidly) {
     const DgIdwPlan plan = prepare_dg_idw(2, m.points, m.boundary);
     EXPECT_EQ(plan.stats.outside_count, 2);
     const NodeMotion rigid{{0.1, 0.2, 0}, {0, 0, 0.4}, {0.5, 0.5, 0}};
-    const auto out = deform(plan, m.points, BoundaryMotion(m.boundary.nodes.size(), rigid));
+    const auto out = dg_idw_deformed(plan, m.points, BoundaryMotion(m.boundary.nodes.size(), rigid));
     for (std::size_t n = n0; n < n0 + 2; ++n) {
         const auto y = moved(2, m.points, n, rigid);
         EXPECT_NEAR(out[2 * n], y[0], 1e-12);
