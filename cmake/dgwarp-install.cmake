@@ -7,7 +7,7 @@
 #   find_package(dgwarp 0.1 REQUIRED COMPONENTS methods mpi)
 #   target_link_libraries(my_solver PRIVATE dgwarp::mpi)
 # A component is a folder (core, mesh, graph, motion, methods, quality,
-# repair, run, plan, io, job, picture, cases, bench, mpi); the package looks for the
+# repair, run, plan, io, job, picture, cases, bench, mpi, mpi_job); the package looks for the
 # third-party packages of the components asked for and of the folders they
 # link, nothing else (cmake/dgwarpConfig.cmake.in). The libraries' own
 # link interface names the third-party libraries: a methods-only solver links

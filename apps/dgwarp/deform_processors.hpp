@@ -1,11 +1,9 @@
 #pragma once
 // `mpirun -np P dgwarp deform CASE -m MOTION -o OUT` where CASE is a
-// decomposed OpenFOAM case of P processor folders (docs/MPI.md): process r
-// reads only CASE/processor<r> (its polyMesh, pointProcAddressing and
-// cellProcAddressing), resolves its boundary nodes' motions, prepares and
-// deforms with the distributed plans of dgwarp/mpi, measures its cells, and
-// writes only OUT/processor<r>; no process holds the whole mesh. The report
-// (the same fields as one process's) is reduced to rank 0, which prints it.
+// decomposed OpenFOAM case of P processor folders (docs/MPI.md): every
+// process runs the library's job on its own processor folder
+// (dgwarp/mpi_job/processor_job.hpp); no process holds the whole mesh. The
+// report (the same fields as one process's) is reduced to rank 0, which prints it.
 #include <string>
 #include <vector>
 
@@ -14,10 +12,9 @@
 namespace dgwarp::cli {
 
 /// Rank 0: whether `a` runs this way: more than one process, one method,
-/// no --plan nor --untangle, an OpenFOAM case output, a mesh that is a
-/// decomposed case of as many processor folders as processes, and a motion
-/// file that reads and gives no marker per-node tables (their node ids are
-/// the whole case's). Otherwise rank 0 reads the whole case (mpi_session.hpp).
+/// no --plan, --untangle, --su2-config nor --rename-marker, an OpenFOAM case
+/// output, and a case and motion the library's job takes
+/// (processor_job_refusal). Otherwise rank 0 reads the whole case (mpi_session.hpp).
 bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& methods);
 
 /// Rank 0: every process runs the deformation on its own processor folder;

@@ -8,7 +8,7 @@
 // folder (mpi_run_everywhere, deform_processors.hpp).
 //
 // Built with MPI: mpi_session.cpp, which forwards to dgwarp/mpi, and the
-// per-processor run (deform_processors.cpp, processor_part.cpp); without:
+// per-processor run (deform_processors.cpp); without:
 // mpi_session_serial.cpp (one process; started by mpirun with several, it
 // refuses to run, rather than have P copies write the same files).
 #include <cstdint>

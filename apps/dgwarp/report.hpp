@@ -8,24 +8,11 @@
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/mesh/mesh.hpp"
+#include "dgwarp/mesh/mesh_counts.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/report_json.hpp"
 
 namespace dgwarp::cli {
-
-/// What describe_mesh and mesh_json say about a mesh (under mpirun, summed
-/// over the processes' parts: deform_processors.cpp).
-struct MeshCounts {
-    int dim = 3;
-    std::int64_t nodes = 0, cells = 0;
-    std::vector<std::int64_t> cell_types;  // per CellType (count_by_type)
-    struct MarkerCounts {
-        std::string name;
-        std::int64_t elements = 0, nodes = 0;
-    };
-    std::vector<MarkerCounts> markers;
-};
-MeshCounts mesh_counts(const Mesh& mesh);
 
 /// "2D, 5233 nodes, 10216 cells (10216 triangle)".
 std::string describe_mesh(const Mesh& mesh);
