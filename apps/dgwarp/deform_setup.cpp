@@ -218,14 +218,9 @@ PlannedMethod plan_method(const Inputs& in, Method method, const std::string& pl
                                                      std::string(method_name(method)));
         p.method = planned;
         // The plan's options are the ones used; one given here that differs is a mistake.
+        // The guard acts at step time: the run's value, and the mesh's cells it measures.
         const MethodOptions& asked = p.options;
-        MethodOptions in_plan = asked;
-        if (const auto* d = std::get_if<DgIdwPlan>(&loaded)) in_plan.dg_idw = d->options;
-        if (const auto* h = std::get_if<DgHarmonicPlan>(&loaded)) {
-            in_plan.dg_harmonic = h->options;
-            // The guard acts at step time: the run's value, and the mesh's cells it measures.
-            in_plan.dg_harmonic.redo_below = asked.dg_harmonic.redo_below;
-        }
+        const MethodOptions in_plan = options_with_plan(loaded, asked);
         for (const MethodOption& row : method_option_table)
             if (row.method == planned && row.kept_by_plan)
                 refuse_conflict(in.args, plan_file, "--" + std::string(row.name),

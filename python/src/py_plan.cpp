@@ -19,6 +19,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/derivative.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/run/report_json.hpp"
 #include "dgwarp/run/run_deformation.hpp"
@@ -163,11 +164,10 @@ std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh
     const std::vector<std::uint8_t>* flags = nullptr;
     if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) {
         nodes = &d->boundary_nodes, flags = &d->boundary_moving;
-        p->options.dg_idw = d->options;
     } else if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
         nodes = &h->boundary_nodes, flags = &h->boundary_moving;
-        p->options.dg_harmonic = h->options;
     }
+    p->options = options_with_plan(p->plan, p->options);
     py::object moving_names = py::reinterpret_borrow<py::object>(moving);
     if (moving.is_none() && nodes) {
         // The markers all of whose nodes the plan moves (moving_wins: a moving
@@ -215,8 +215,7 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
         p->distributed = load_distributed_plan_file(comm, path, mesh->mesh.dim, mesh->mesh.points, global_ids,
                                                     p->boundary.boundary);
         p->comm = comm;
-        if (const auto* d = std::get_if<DgIdwPlan>(&plan_of(*p))) p->options.dg_idw = d->options;
-        if (const auto* h = std::get_if<DgHarmonicPlan>(&plan_of(*p))) p->options.dg_harmonic = h->options;
+        p->options = options_with_plan(plan_of(*p), p->options);
         return p;
     }
     if (!global_ids.is_none()) throw py::value_error("global_ids is for load_plan(comm=...)");
@@ -312,13 +311,7 @@ std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
     // from the state; those it holds are the plan's own.
     const MethodOptions given = method_options(plan_method(plan), options, "a pickled dgwarp.Plan");
     auto p = plan_from_file_content(std::move(plan), mesh, moving, fixed, shared_nodes, tolerance);
-    const double redo_below = given.dg_harmonic.redo_below;
-    p->options = given;
-    if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) p->options.dg_idw = d->options;
-    if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
-        p->options.dg_harmonic = h->options;
-        p->options.dg_harmonic.redo_below = redo_below;
-    }
+    p->options = options_with_plan(p->plan, given);
     return p;
 }
 

@@ -8,7 +8,10 @@
 #include <string>
 
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/rbf.hpp"
+#include "support/box_in_box.hpp"
 
 using namespace dgwarp;
 
@@ -204,4 +207,50 @@ TEST(MethodOptionTable, TuningRowsTravelExactlyAndAutoStandsForTheSentinel) {
     EXPECT_EQ(back.dg_harmonic.rigid_gap, 0.75);
     EXPECT_EQ(method_options_text(back), method_options_text(o));
     EXPECT_THROW(method_options_from_text("laplacian-increments 2.5\n"), UsageError);  // an integer member
+}
+
+TEST(MethodOptionTable, APlansKeptOptionsAreItsOwnAndTheRunsTheRest) {
+    const test::BoxInBox m = test::box_in_box(2, 8);
+    MethodOptions prepared;
+    prepared.dg_idw.a_translation = 5;
+    prepared.dg_idw.weighting = DgIdwWeighting::continuous;
+    prepared.dg_harmonic.wall_spacing = 2.0;
+    prepared.dg_harmonic.growth = 0.5;
+    prepared.dg_harmonic.rigid_gap = 0.25;
+    // The run asks for other values of every option.
+    MethodOptions run;
+    run.dg_idw.a_translation = 9;
+    run.dg_idw.a_rotation = 2;
+    run.dg_harmonic.wall_spacing = 3;
+    run.dg_harmonic.redo_below = 0.5;
+    run.idw.exponent_moving = 4;
+    for (Method method : {Method::dg_idw, Method::dg_harmonic}) {
+        const Plan plan = prepare(method, m.dim, m.points, m.boundary, prepared);
+        const MethodOptions used = options_with_plan(plan, run);
+        // What the plan holds of its method's options (its prepare resolved "auto" to values).
+        MethodOptions held = run;
+        if (const auto* d = std::get_if<DgIdwPlan>(&plan)) held.dg_idw = d->options;
+        if (const auto* h = std::get_if<DgHarmonicPlan>(&plan)) held.dg_harmonic = h->options;
+        for (const MethodOption& o : method_option_table) {
+            SCOPED_TRACE(std::string(method_name(method)) + ": " + std::string(o.name));
+            // Kept by the plan: its own; otherwise the run's (its other methods' too).
+            const MethodOptions& expected = o.method == method && o.kept_by_plan ? held : run;
+            EXPECT_EQ(option_text(o, used), option_text(o, expected));
+        }
+        if (method == Method::dg_idw) {
+            EXPECT_EQ(used.dg_idw.a_translation, 5);
+            EXPECT_EQ(used.dg_idw.a_rotation, prepared.dg_idw.a_rotation);  // not the run's 2
+            EXPECT_EQ(used.dg_idw.weighting, DgIdwWeighting::continuous);
+            EXPECT_EQ(used.dg_harmonic.wall_spacing, 3);
+        } else {
+            EXPECT_EQ(used.dg_harmonic.wall_spacing, 2);
+            EXPECT_EQ(used.dg_harmonic.growth, 0.5);
+            EXPECT_EQ(used.dg_harmonic.rigid_gap, 0.25);
+            EXPECT_EQ(used.dg_harmonic.redo_below, 0.5);  // the guard acts at step time: the run's
+            EXPECT_EQ(used.dg_idw.a_translation, 9);
+        }
+    }
+    // A method whose plan keeps none of its options: the run's, whole.
+    const Plan idw = prepare(Method::idw, m.dim, m.points, m.boundary, prepared);
+    EXPECT_EQ(method_options_text(options_with_plan(idw, run)), method_options_text(run));
 }

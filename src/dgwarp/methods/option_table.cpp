@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <variant>
 
 #include "dgwarp/core/error.hpp"
 
@@ -317,6 +318,17 @@ MethodOptions method_options_from_text(std::string_view text) {
         o->set(options, parse_option_value(*o, line.substr(space + 1), false));
     }
     return options;
+}
+
+MethodOptions options_with_plan(const Plan& plan, const MethodOptions& run) {
+    MethodOptions planned = run;  // the plan's method's options, as the plan holds them
+    if (const auto* d = std::get_if<DgIdwPlan>(&plan)) planned.dg_idw = d->options;
+    if (const auto* h = std::get_if<DgHarmonicPlan>(&plan)) planned.dg_harmonic = h->options;
+    const Method method = plan_method(plan);
+    MethodOptions used = run;
+    for (const MethodOption& o : method_option_table)
+        if (o.method == method && o.kept_by_plan) o.set(used, o.get(planned));
+    return used;
 }
 
 }  // namespace dgwarp

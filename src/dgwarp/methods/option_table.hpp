@@ -90,4 +90,10 @@ void set_method_option(MethodOptions& options, std::string_view name, std::strin
 std::string method_options_text(const MethodOptions& options);
 MethodOptions method_options_from_text(std::string_view text);
 
+/// The options a run with `plan` uses: `run`'s, but those of the plan's
+/// method that a plan keeps (kept_by_plan: they acted at its prepare) are the
+/// plan's own. What a plan loaded from a file, a pickle or a distributed plan
+/// file runs with; the step-time options (dg-harmonic's guard) stay the run's.
+MethodOptions options_with_plan(const Plan& plan, const MethodOptions& run);
+
 }  // namespace dgwarp

@@ -12,6 +12,7 @@
 #include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
+#include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/mpi/large_transfers.hpp"
 
@@ -312,8 +313,7 @@ DistributedPlan load_distributed_plan(MPI_Comm comm, const std::filesystem::path
         if (r.at != mine.size()) r.fail("the end of the part", "more bytes");
         plan.plan = load_plan_bytes(method_plan, name + " (process " + std::to_string(rank) + "'s method plan)");
         if (plan_method(plan.plan) != plan.method) r.fail("a method plan of the part's method", "another method's");
-        if (const auto* d = std::get_if<DgIdwPlan>(&plan.plan)) plan.options.dg_idw = d->options;
-        if (const auto* h = std::get_if<DgHarmonicPlan>(&plan.plan)) plan.options.dg_harmonic = h->options;
+        plan.options = options_with_plan(plan.plan, plan.options);
         check_part(plan, boundary.nodes.size(), [&](const std::string& e, const std::string& f) { r.fail(e, f); });
     } catch (...) {
         error = std::current_exception();
