@@ -27,6 +27,7 @@
 #include "dgwarp/mpi/part_setup.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/mpi/root_session.hpp"
+#include "../support/one_process_run.hpp"
 #include "mesh_parts.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/run_deformation.hpp"
@@ -439,14 +440,9 @@ TEST(PartRun, FramesOverThePartsAreOneProcessRunOverTheWholeMesh) {
     for (std::size_t k = 0; k < 2; ++k)
         spec.frames[k].markers["rectangle"] = RigidMotion{NodeMotion{.rotation = {0, 0, (10.0 + 25.0 * double(k)) * 3.141592653589793 / 180}}};
     // One process over the whole mesh.
-    const Deformation d = prepare_deformation(whole, spec, Method::dg_idw);
-    std::vector<std::vector<double>> one_points;
-    RunCallbacks keep;
-    keep.frame_done = [&](const FrameView& f) {
-        one_points.emplace_back(f.points.begin(), f.points.end());
-        return true;
-    };
-    const RunReport one = run_frames(RunContext::of(whole, spec, d), {}, keep);
+    const test::OneProcessRun whole_run = test::one_process_run(whole, spec, Method::dg_idw);
+    const RunReport& one = whole_run.report;
+    const std::vector<std::vector<double>>& one_points = whole_run.points;
     // Every process over its part.
     MeshPart part = part_of(whole, rank, size);
     const ResolvedBoundary boundary = resolve_boundary(part.mesh, spec);

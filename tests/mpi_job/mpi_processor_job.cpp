@@ -25,6 +25,7 @@
 #include "dgwarp/mpi/root_session.hpp"
 #include "dgwarp/mpi_job/processor_job.hpp"
 #include "dgwarp/run/run_deformation.hpp"
+#include "../support/one_process_run.hpp"
 
 using namespace dgwarp;
 namespace fs = std::filesystem;
@@ -112,14 +113,9 @@ TEST(ProcessorJob, TheCaseWrittenIsOneProcessRunOverTheWholeCaseBitForBit) {
         EXPECT_EQ(written[1], (out / ("processor" + std::to_string(rank_of())) / "0.25" / "polyMesh" / "points").string());
 
         // One process over the reconstructed case.
-        const Deformation d = prepare_deformation(whole, spec, method);
-        std::vector<std::vector<double>> one_points;
-        RunCallbacks keep;
-        keep.frame_done = [&](const FrameView& f) {
-            one_points.emplace_back(f.points.begin(), f.points.end());
-            return true;
-        };
-        const RunReport one = run_frames(RunContext::of(whole, spec, d), {}, keep);
+        const test::OneProcessRun whole_run = test::one_process_run(whole, spec, method);
+        const RunReport& one = whole_run.report;
+        const std::vector<std::vector<double>>& one_points = whole_run.points;
         ASSERT_EQ(parts.frames.size(), one.frames.size());
         for (std::size_t k = 0; k < one.frames.size(); ++k) {
             EXPECT_EQ(parts.frames[k].quality.min, one.frames[k].quality.min);

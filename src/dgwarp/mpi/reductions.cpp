@@ -9,6 +9,18 @@
 
 namespace dgwarp::mpi {
 
+int rank_in(MPI_Comm comm) {
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    return rank;
+}
+
+int processes_in(MPI_Comm comm) {
+    int size = 1;
+    MPI_Comm_size(comm, &size);
+    return size;
+}
+
 namespace {
 
 template <class T>

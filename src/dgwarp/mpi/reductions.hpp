@@ -12,6 +12,10 @@
 
 namespace dgwarp::mpi {
 
+/// This process's rank in `comm`, and the number of processes (not collective).
+int rank_in(MPI_Comm comm);
+int processes_in(MPI_Comm comm);
+
 std::int64_t sum(MPI_Comm comm, std::int64_t value);
 /// Element by element (every process gives as many).
 std::vector<std::int64_t> sum(MPI_Comm comm, std::vector<std::int64_t> values);

@@ -43,18 +43,6 @@ std::vector<T> receive_vector(MPI_Comm comm, int from, int tag) {
     return v;
 }
 
-int rank_of(MPI_Comm comm) {
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
-    return rank;
-}
-
-int size_of(MPI_Comm comm) {
-    int size = 1;
-    MPI_Comm_size(comm, &size);
-    return size;
-}
-
 void broadcast_command(MPI_Comm comm, int command) { MPI_Bcast(&command, 1, MPI_INT, 0, comm); }
 
 }  // namespace
@@ -71,9 +59,9 @@ PartPlan prepare_part(MPI_Comm comm, Method method, int dim, std::span<const dou
         error = std::current_exception();
     }
     const double s = sw.lap();
-    const bool root = rank_of(comm) == 0;
+    const bool root = rank_in(comm) == 0;
     PartPlan out;
-    if (root) out.prepare_seconds.resize(static_cast<std::size_t>(size_of(comm)));
+    if (root) out.prepare_seconds.resize(static_cast<std::size_t>(processes_in(comm)));
     MPI_Gather(&s, 1, MPI_DOUBLE, root ? out.prepare_seconds.data() : nullptr, 1, MPI_DOUBLE, 0, comm);
     if (error) std::rethrow_exception(error);
     out.outside_hull = sum(comm, plan_summary(plan->plan).outside_hull);
@@ -87,8 +75,8 @@ StepReport deform_part(const PartPlan& plan, std::span<const double> points, con
     Stopwatch sw;
     const StepReport report = deform_distributed(plan.plan, points, motion, out);
     const double s = sw.lap();
-    const bool root = rank_of(comm) == 0;
-    seconds.resize(root ? static_cast<std::size_t>(size_of(comm)) : 0);
+    const bool root = rank_in(comm) == 0;
+    seconds.resize(root ? static_cast<std::size_t>(processes_in(comm)) : 0);
     MPI_Gather(&s, 1, MPI_DOUBLE, root ? seconds.data() : nullptr, 1, MPI_DOUBLE, 0, comm);
     return report;
 }
@@ -96,7 +84,7 @@ StepReport deform_part(const PartPlan& plan, std::span<const double> points, con
 RootRun root_prepare(MPI_Comm comm, const Mesh& mesh, const BoundarySet& boundary, Method method,
                      const MethodOptions& options, const std::vector<std::vector<NodeId>>& node_parts,
                      int threads) {
-    const int size = size_of(comm);
+    const int size = processes_in(comm);
     RootRun run;
     run.comm = comm;
     run.dim = mesh.dim;
@@ -120,7 +108,7 @@ RootRun root_prepare(MPI_Comm comm, const Mesh& mesh, const BoundarySet& boundar
 StepReport root_deform(const RootRun& run, const BoundaryMotion& motion, std::span<double> out,
                        std::vector<double>& seconds) {
     const MPI_Comm comm = run.comm;
-    const int size = size_of(comm);
+    const int size = processes_in(comm);
     broadcast_command(comm, command_deform);
     auto motions_of = [&](const NodePart& p) {
         BoundaryMotion m(p.slots.size());
@@ -150,7 +138,7 @@ void root_run_everywhere(MPI_Comm comm, const std::string& payload) {
 }
 
 void root_stop(MPI_Comm comm, int exit_code) {
-    if (size_of(comm) < 2) return;
+    if (processes_in(comm) < 2) return;
     broadcast_command(comm, command_stop);
     MPI_Bcast(&exit_code, 1, MPI_INT, 0, comm);
 }

@@ -23,18 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int rank_of(MPI_Comm comm) {
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
-    return rank;
-}
-
-int size_of(MPI_Comm comm) {
-    int size = 1;
-    MPI_Comm_size(comm, &size);
-    return size;
-}
-
 /// True when a marker of `spec` moves by a per-node table (node ids of the whole case).
 bool has_node_tables(const MotionSpec& spec) {
     const auto tabled = [](const MarkerMotion& m) {
@@ -116,7 +104,7 @@ std::string processor_job_refusal(const fs::path& case_path, const fs::path& mot
 
 ProcessorCase read_processor_job(MPI_Comm comm, const ProcessorJobFiles& files, JobInputs& in,
                                  const std::function<void(const std::string&)>& phase) {
-    const int rank = rank_of(comm), processes = size_of(comm);
+    const int rank = rank_in(comm), processes = processes_in(comm);
     const auto say = [&](const std::string& what) {
         if (phase) phase(what);
     };
@@ -242,7 +230,7 @@ RunReport run_processor_job(MPI_Comm comm, const JobInputs& in, const ProcessorC
 
 fs::path write_processor_points(MPI_Comm comm, const fs::path& out, const std::string& time, const ProcessorPart& part,
                                 std::span<const double> points, bool& base_written) {
-    const fs::path folder = out / ("processor" + std::to_string(rank_of(comm)));
+    const fs::path folder = out / ("processor" + std::to_string(rank_in(comm)));
     const OpenFoamPointsFile file = openfoam_points_file(folder, time);
     const fs::path tmp = file.file.string() + ".dgwarp-part";
     collectively(comm, [&] {
