@@ -2,8 +2,9 @@
 // deform (methods/method.hpp) and plan files (plan/plan_file.hpp) for Python,
 // with the boundary classified and each step's motion resolved as the CLI's
 // `dgwarp prepare` / `dgwarp deform` do (apps/dgwarp/deform_setup.cpp,
-// cmd_deform.cpp), through the same library calls (marker types, which the CLI
-// applies with job/job_inputs.hpp's classify_inputs, are not: docs/PYTHON.md).
+// cmd_deform.cpp), through the same library calls: the markers the mesh
+// file's types make slide or couple too (io/marker_types.hpp), but a 2D case
+// stays 3D (docs/PYTHON.md).
 #include "py_plan.hpp"
 
 #include <pybind11/numpy.h>
@@ -16,6 +17,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/derivative.hpp"
@@ -82,11 +84,17 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
                                           "list it in one of them (or leave static=None: every marker not moving)");
         MotionFrame frame;
         for (const std::string& name : moved) frame.markers[name] = RigidMotion{};  // moving, whatever its motion
+        // Named static: not made to slide or couple by its type (below).
+        for (const std::string& name : fixed) frame.markers[name] = FixedMotion{};
         spec.frames.push_back(std::move(frame));
         spec.shared_nodes = rule;
         spec.shared_tolerance = tolerance;
         spec.source = "prepare";
     }
+    // The markers the mesh file's types make slide or couple (OpenFOAM's
+    // empty, symmetryPlane, cyclic; CGNS's BCSymmetryPlane), unless named, as
+    // `dgwarp deform` does; a 2D case stays 3D here, its empty patches sliding.
+    const TypedMotion typed = apply_marker_types(mesh.mesh, mesh.extras, spec);
     rule_used = spec.shared_nodes;
     tolerance_used = spec.shared_tolerance;
     used = spec;
@@ -95,6 +103,7 @@ ResolvedBoundary classify(const PyMesh& mesh, py::handle moving, py::handle stat
         py::gil_scoped_release release;
         resolved = resolve_boundary(mesh.mesh, spec);
     }
+    if (!typed.uncoupled.empty()) resolved.warnings.push_back(uncoupled_cyclic_warning(typed.uncoupled));
     warn_all(resolved.warnings);
     return resolved;
 }
@@ -286,6 +295,7 @@ std::shared_ptr<PyPlan> plan_from_state(const py::tuple& t) {
         // markers given a (zero) motion, sliding and cyclic ones as they were.
         py::dict markers;
         for (auto name : moving) markers[name] = py::dict(py::arg("translate") = py::make_tuple(0.0, 0.0));
+        for (auto name : fixed) markers[name] = py::str("fixed");  // not made to slide by its type
         for (auto name : sliding) markers[name] = py::str("slide");
         for (auto pair : cyclic) {
             const py::tuple ab = pair.cast<py::tuple>();
@@ -523,6 +533,11 @@ void bind_plan(py::module_& m) {
                                "The markers that move, in mesh order.")
         .def_property_readonly("static_markers", [](const PyPlan& p) { return p.boundary.static_markers; },
                                "The markers that stay, in mesh order.")
+        .def_property_readonly("sliding_markers", [](const PyPlan& p) { return p.boundary.sliding_markers; },
+                               "The markers that slide (named so, or by their type in the mesh file: OpenFOAM's\n"
+                               "empty and symmetryPlane patches, CGNS's BCSymmetryPlane), in mesh order.")
+        .def_property_readonly("cyclic_markers", [](const PyPlan& p) { return p.boundary.cyclic_markers; },
+                               "The markers coupled to a partner (named so, or OpenFOAM's cyclic patches), in mesh order.")
         .def_property_readonly("shared_nodes", [](const PyPlan& p) { return std::string(shared_nodes_name(p.shared_nodes)); },
                                "What nodes on a moving and a static marker do: 'moving_wins' or 'static_wins'.")
         .def_property_readonly("memory_bytes", [](const PyPlan& p) {

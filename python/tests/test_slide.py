@@ -1,6 +1,7 @@
 """Sliding and cyclic markers in Python plans (docs/MOTION.md "Sliding", "Cyclic pairs"):
 the same first pass and step as `dgwarp deform`."""
 
+import pathlib
 import pickle
 
 import numpy as np
@@ -83,3 +84,47 @@ def test_a_plan_with_sliding_markers_pickles_and_refuses_what_it_cannot_do():
     # The derivative does not follow the first pass.
     with pytest.raises(ValueError, match="sliding or cyclic markers"):
         plan.deform_derivative(np.zeros((len(plan.boundary_nodes), 2)))
+
+
+OPENFOAM = pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "openfoam"
+
+
+@pytest.mark.parametrize("method", ["dg-harmonic", "dg-idw"])
+def test_openfoam_cyclic_patches_couple_by_their_type_as_in_the_cli(tmp_path, cli, method):
+    # channel-cyclic: 3D, its inout and sides halves cyclic patches naming each other.
+    mesh = dgwarp.read(OPENFOAM / "channel-cyclic")
+    motion = {"markers": {"bottomWall": {"translate": [0.2, 0, 0.1]}}}
+    plan = dgwarp.prepare(mesh, motion, method=method)
+    assert plan.sliding_markers == []
+    assert sorted(plan.cyclic_markers) == sorted(["inout1_half0", "inout1_half1", "inout2_half0", "inout2_half1",
+                                                  "sides1_half0", "sides1_half1", "sides2_half0", "sides2_half1"])
+    moved = plan.deform(motion)
+    assert not np.array_equal(moved, mesh.points)
+    # As `dgwarp deform` couples them by their type: the same coordinates.
+    (tmp_path / "motion.json").write_text(__import__("json").dumps(motion))
+    cli("deform", OPENFOAM / "channel-cyclic", "-m", tmp_path / "motion.json", "-o", tmp_path / "out.vtu",
+        "--method", method)
+    assert np.array_equal(dgwarp.read(tmp_path / "out.vtu").points, moved)
+    # Named in the motion, a patch is as the motion says: held, no longer coupled.
+    held = dgwarp.prepare(mesh, {"markers": dict(motion["markers"], inout1_half0="fixed", inout1_half1="fixed")},
+                          method=method)
+    assert "inout1_half0" not in held.cyclic_markers and "inout1_half0" in held.static_markers
+    # A plan of such markers pickles with them.
+    assert np.array_equal(pickle.loads(pickle.dumps(plan)).deform(motion), moved)
+
+
+def test_openfoam_empty_patches_slide_by_their_type_and_the_case_stays_3d():
+    # cavity: a 2D case stored in 3D, frontAndBack empty. Python deforms the 3D mesh, its empty patch sliding
+    # in its planes (the CLI deforms the 2D case: docs/PYTHON.md).
+    mesh = dgwarp.read(OPENFOAM / "cavity")
+    plan = dgwarp.prepare(mesh, ["movingWall"])
+    assert plan.sliding_markers == ["frontAndBack"]
+    moved = plan.deform({"markers": {"movingWall": {"translate": [0.01, -0.01, 0]}}})
+    z0 = mesh.points[:, 2]
+    assert np.abs(moved[:, 2] - z0).max() < 1e-12  # every node on one of the two planes stays on it
+    assert np.abs(moved[:, :2] - mesh.points[:, :2]).max() > 0.005
+    # Named static, it is held instead.
+    held = dgwarp.prepare(mesh, ["movingWall"], ["fixedWalls", "frontAndBack"])
+    assert held.sliding_markers == [] and "frontAndBack" in held.static_markers
+    back = pickle.loads(pickle.dumps(held))
+    assert back.sliding_markers == [] and back.static_markers == held.static_markers

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "dgwarp/core/joined.hpp"
+
 namespace dgwarp {
 
 std::vector<std::string> marker_types(const Mesh& mesh, const MeshExtras& extras) {
@@ -93,6 +95,15 @@ TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, Motio
     typed.planar = std::move(found.planar);
     typed.not_planar = std::move(found.not_planar);
     return typed;
+}
+
+Warning uncoupled_cyclic_warning(const std::vector<std::string>& uncoupled) {
+    return {WarningCode::other,
+            "the cyclic patches " + joined(uncoupled) +
+                " are not coupled (dgwarp couples cyclic and cyclicSlip patches that name each other as "
+                "neighbourPatch and that the motion does not name; a cyclicAMI's halves do not share nodes): they "
+                "move as the motion says (fixed unless it names them), each on its own, so give both halves the "
+                "same motion, or none, for them to still match"};
 }
 
 }  // namespace dgwarp

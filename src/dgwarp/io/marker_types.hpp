@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/core/warning.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/mesh/planar_case.hpp"
 #include "dgwarp/motion/motion_spec.hpp"
@@ -58,5 +59,8 @@ bool is_cyclic_type(std::string_view type);
 /// with planar_motion(*planar, mesh, spec)).
 TypedMotion apply_marker_types(const Mesh& mesh, const MeshExtras& extras, MotionSpec& spec,
                                const std::vector<std::string>& also = {});
+
+/// The warning a caller gives about TypedMotion::uncoupled (non-empty).
+Warning uncoupled_cyclic_warning(const std::vector<std::string>& uncoupled);
 
 }  // namespace dgwarp

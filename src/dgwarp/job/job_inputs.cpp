@@ -1,7 +1,6 @@
 #include "dgwarp/job/job_inputs.hpp"
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/joined.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/su2/su2_config.hpp"
@@ -40,14 +39,7 @@ void classify_inputs(JobInputs& in, const InputSettings& settings) {
         in.planar = std::move(typed.planar);
     }
     in.boundary = resolve_boundary(in.mesh, in.spec);
-    if (!typed.uncoupled.empty())
-        in.boundary.warnings.push_back(
-            {WarningCode::other, "the cyclic patches " + joined(typed.uncoupled) +
-                                     " are not coupled (dgwarp couples cyclic and cyclicSlip patches that name each "
-                                     "other as neighbourPatch and that the motion does not name; a cyclicAMI's halves "
-                                     "do not share nodes): they move as the motion says (fixed unless it names them), "
-                                     "each on its own, so give both halves the same motion, or none, for them to still "
-                                     "match"});
+    if (!typed.uncoupled.empty()) in.boundary.warnings.push_back(uncoupled_cyclic_warning(typed.uncoupled));
     for (const MarkerRename& r : in.renamed_for_output)
         in.boundary.warnings.push_back({WarningCode::other,
                                         settings.writable_for + " cannot hold the marker name '" + r.from +
