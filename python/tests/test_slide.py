@@ -119,7 +119,9 @@ def test_openfoam_empty_patches_slide_by_their_type_and_the_case_stays_3d():
     mesh = dgwarp.read(OPENFOAM / "cavity")
     plan = dgwarp.prepare(mesh, ["movingWall"])
     assert plan.sliding_markers == ["frontAndBack"]
-    moved = plan.deform({"markers": {"movingWall": {"translate": [0.01, -0.01, 0]}}})
+    lid = {"markers": {"movingWall": {"translate": [0.01, -0.01, 0]}}}
+    moved = plan.deform(lid)
+    assert np.array_equal(pickle.loads(pickle.dumps(plan)).deform(lid), moved)
     z0 = mesh.points[:, 2]
     assert np.abs(moved[:, 2] - z0).max() < 1e-12  # every node on one of the two planes stays on it
     assert np.abs(moved[:, :2] - mesh.points[:, :2]).max() > 0.005
