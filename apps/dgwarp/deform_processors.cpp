@@ -136,7 +136,6 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     mpi::ProcessorRunOptions options;
     options.write_invalid = a.allow_invalid;
     options.last_resort = !a.no_untangle;
-    options.last_resort_advice = "Run with --untangle (rank 0 then reads the whole case and repairs them), or on one process";
     mpi::ProcessorRunCallbacks on;
     on.frame_started = [&](std::size_t k) {
         progress.phase(std::string(method_name(method)) + ": deforming" +

@@ -155,27 +155,46 @@ TEST(ProcessorJob, AnInvertedFrameWritesNothingOnAnyProcess) {
         EXPECT_FALSE(any_written);
         EXPECT_FALSE(fs::exists(points_file(out)));
     }
-    // dg-harmonic wants its last resort, which does not run on the parts: every process throws, with the advice.
+    // dg-harmonic repairs what its step folds (its last resort over the processes): valid, written, and the
+    // coordinates of one process's run over the whole case, last resort and all, bit for bit.
     {
         const fs::path out = fresh_output("sink-dg-harmonic");
         PartRun r = read_and_prepare(motion, out, Method::dg_harmonic, sphere_case);
-        mpi::ProcessorRunOptions options;
-        options.last_resort_advice = "Ask for the whole case.";
-        try {
-            mpi::run_processor_job(MPI_COMM_WORLD, r.in, r.c, r.plan, options, {});
-            ADD_FAILURE() << "no error";
-        } catch (const InvalidResultError& e) {
-            const std::string what = e.what();
-            EXPECT_NE(what.find("dg-harmonic inverted"), std::string::npos) << what;
-            EXPECT_NE(what.find("Ask for the whole case."), std::string::npos) << what;
-        }
-        EXPECT_FALSE(fs::exists(points_file(out)));
-        // Without the last resort, written when asked.
-        options.last_resort = false;
-        options.write_invalid = true;
-        const RunReport report = mpi::run_processor_job(MPI_COMM_WORLD, r.in, r.c, r.plan, options, {});
-        EXPECT_GT(report.frames.at(0).inverted_by_motion, 0);
+        const RunReport report = mpi::run_processor_job(MPI_COMM_WORLD, r.in, r.c, r.plan, {}, {});
+        ASSERT_EQ(report.frames.size(), 1u);
+        const FrameReport& f = report.frames[0];
+        EXPECT_TRUE(f.last_resort);
+        ASSERT_TRUE(f.untangled.has_value());
+        EXPECT_GT(f.untangled->inverted_before, 0);
+        EXPECT_EQ(f.inverted_by_motion, 0);
         EXPECT_TRUE(fs::exists(points_file(out)));
+        // (One process without dg-harmonic's guard, which the parts do not run: the same step.)
+        const Mesh whole = read_mesh(sphere_case.string());
+        MethodOptions unguarded;
+        unguarded.dg_harmonic.redo_below = -1;
+        const test::OneProcessRun one =
+            test::one_process_run(whole, read_motion_file(motion), Method::dg_harmonic, unguarded);
+        ASSERT_TRUE(one.report.frames.at(0).last_resort);
+        EXPECT_EQ(one.report.frames[0].untangled->inverted_before, f.untangled->inverted_before);
+        EXPECT_EQ(one.report.frames[0].untangled->nodes_moved, f.untangled->nodes_moved);
+        EXPECT_EQ(one.report.frames[0].quality.min, f.quality.min);
+        const Mesh back = read_mesh((out / "0").string());
+        ASSERT_EQ(back.points.size(), one.points[0].size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < back.points.size(); ++i) differ += back.points[i] != one.points[0][i];
+        EXPECT_EQ(differ, 0u);
+        // Without it, the step's folds: the frame is invalid, written only when asked.
+        const fs::path raw = fresh_output("sink-dg-harmonic-raw");
+        PartRun s = read_and_prepare(motion, raw, Method::dg_harmonic, sphere_case);
+        mpi::ProcessorRunOptions options;
+        options.last_resort = false;
+        const RunReport folded = mpi::run_processor_job(MPI_COMM_WORLD, s.in, s.c, s.plan, options, {});
+        EXPECT_GT(folded.frames.at(0).inverted_by_motion, 0);
+        EXPECT_FALSE(folded.frames[0].last_resort);
+        EXPECT_FALSE(fs::exists(points_file(raw)));
+        options.write_invalid = true;
+        mpi::run_processor_job(MPI_COMM_WORLD, s.in, s.c, s.plan, options, {});
+        EXPECT_TRUE(fs::exists(points_file(raw)));
     }
 }
 

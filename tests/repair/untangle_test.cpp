@@ -276,3 +276,30 @@ TEST(Untangle, UnfoldsTheTwistedBarAfterTheTwistAndTheRotation) {
     ASSERT_NEAR(double(judge(mesh, points).inverted), 151.0, 8.0);  // measured 151
     repair_and_check(mesh, b.boundary.nodes, points);
 }
+
+TEST(Untangle, CellsToUntangleAreTheInvertedOnesWithAFreeNodeOrThoseBelowTheTarget) {
+    // Two tetrahedra on the base 0-1-2: apex 3 above it, apex 4 below it (orientations from the original).
+    Mesh mesh;
+    mesh.dim = 3;
+    mesh.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1};
+    const NodeId up[4] = {0, 1, 2, 3}, down[4] = {0, 2, 1, 4};
+    mesh.cells.push_back(CellType::tetrahedron, up);
+    mesh.cells.push_back(CellType::tetrahedron, down);
+    const std::vector<std::int8_t> orientation = cell_orientations(mesh);
+    std::vector<double> points = mesh.points;
+    points[11] = -0.5;  // apex 3 through the base: the first cell inverts
+    EXPECT_EQ(cells_to_untangle(3, mesh.cells, orientation, std::vector<NodeId>{0, 1, 2}, points),
+              std::vector<std::int64_t>{0});
+    // Every node of it fixed: nothing untangle could move.
+    EXPECT_TRUE(cells_to_untangle(3, mesh.cells, orientation, std::vector<NodeId>{0, 1, 2, 3}, points).empty());
+    // A target above the second cell's quality takes it too; what untangle then starts from.
+    points[11] = 1;
+    points[14] = -0.05;  // a flat second cell
+    UntangleOptions lift;
+    lift.target_quality = 0.5;
+    const std::vector<std::int64_t> poor = cells_to_untangle(3, mesh.cells, orientation, std::vector<NodeId>{0, 1, 2}, points, lift);
+    EXPECT_EQ(poor, std::vector<std::int64_t>{1});
+    std::vector<double> repaired = points;
+    EXPECT_EQ(untangle(3, mesh.cells, orientation, std::vector<NodeId>{0, 1, 2}, repaired, lift).below_target_before,
+              static_cast<std::int64_t>(poor.size()));
+}

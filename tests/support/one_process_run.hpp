@@ -12,8 +12,9 @@ struct OneProcessRun {
     std::vector<std::vector<double>> points;  // per frame, num_points × dim
 };
 
-inline OneProcessRun one_process_run(const Mesh& mesh, const MotionSpec& spec, Method method) {
-    const Deformation d = prepare_deformation(mesh, spec, method);
+inline OneProcessRun one_process_run(const Mesh& mesh, const MotionSpec& spec, Method method,
+                                     const MethodOptions& options = {}) {
+    const Deformation d = prepare_deformation(mesh, spec, method, options);
     OneProcessRun one;
     RunCallbacks keep;
     keep.frame_done = [&](const FrameView& f) {

@@ -6,6 +6,7 @@
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/mpi/agreement.hpp"
 #include "dgwarp/mpi/part_reductions.hpp"
+#include "dgwarp/mpi/part_repair.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/run/deform_frame.hpp"
@@ -18,6 +19,8 @@ RunReport run_frames_on_parts(const PartRunContext& ctx, const RunOptions& optio
     RunReport run;
     const std::size_t frames = frame_count(ctx.spec);
     std::vector<double> points(ctx.mesh.points.size());
+    const bool last_resort = options.frame.repair == Repair::method_default && !ctx.node_ids.empty() &&
+                             plan_method(ctx.plan.plan.plan) == Method::dg_harmonic;
     for (std::size_t k = 0; k < frames; ++k) {
         collectively(comm, [&] {
             if (callbacks.frame_started) callbacks.frame_started(k);
@@ -33,6 +36,17 @@ RunReport run_frames_on_parts(const PartRunContext& ctx, const RunOptions& optio
         // The frame's cells here, their figures over every process.
         FrameCells cells;
         collectively(comm, [&] { cells = measure_frame(ctx.mesh, points, ctx.original, ctx.boundary.boundary.nodes); });
+        if (last_resort) {
+            // DG-harmonic's last resort, as finish_frame runs it on one process (run/deform_frame.hpp).
+            Stopwatch repair;
+            report.untangled = last_resort_over_parts(comm, ctx.mesh, ctx.original.own_orientation, ctx.node_ids,
+                                                      ctx.cell_ids, ctx.boundary.boundary.nodes, cells.inverted, points);
+            if (report.untangled) {
+                report.last_resort = true;
+                collectively(comm, [&] { cells = measure_frame(ctx.mesh, points, ctx.original, ctx.boundary.boundary.nodes); });
+            }
+            report.repair_seconds = repair.lap();
+        }
         report.quality = quality_over_parts(comm, cells.quality, ids);
         report.ratio = ratios_over_parts(comm, quality_ratios(cells.quality, ctx.original.quality), ids);
         const std::size_t worst = options.frame.worst_count;
@@ -41,7 +55,7 @@ RunReport run_frames_on_parts(const PartRunContext& ctx, const RunOptions& optio
         std::tie(report.worst_on_boundary, report.inverted_on_boundary) =
             worst_over_parts(comm, cells.inverted_on_boundary, cells.quality, ids, worst);
         report.warnings = warnings_over_parts(comm, frame_warnings(motion, report.step));
-        report.quality_seconds = sw.lap();
+        report.quality_seconds = sw.lap() - report.repair_seconds;
 
         const bool valid = report.valid();  // the same on every process (reduced counts)
         if (!valid && run.first_invalid < 0) run.first_invalid = static_cast<std::int64_t>(k);

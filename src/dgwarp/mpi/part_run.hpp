@@ -5,8 +5,9 @@
 // the processes (part_reductions.hpp), as run_frames (run/run_deformation.hpp)
 // does on one process over the whole mesh. Collective: every process of
 // ctx.comm calls it; a failure on one (its motion, its step, its frame_done)
-// is raised on every process (agreement.hpp). No repair runs on the parts
-// (a repair moves nodes several processes hold).
+// is raised on every process (agreement.hpp). The repair that runs is
+// dg-harmonic's last resort (options.frame.repair method_default, given the
+// nodes' ids: part_repair.hpp), not Repair::untangle.
 //
 //   const PartRunContext ctx{comm, part_mesh, spec, boundary, original, plan, cell_ids};
 //   PartRunCallbacks on;
@@ -37,6 +38,10 @@ struct PartRunContext {
     const OriginalCells& original;          // its cells, judged by dominant_orientations_over_parts
     const PartPlan& plan;                   // prepare_part over the part's nodes
     std::span<const std::int64_t> cell_ids;  // per local cell, its id in the whole mesh
+    /// Per local node, its id in the whole mesh (the prepare's global ids):
+    /// with them, dg-harmonic's last resort runs over the parts
+    /// (part_repair.hpp); without, no repair runs.
+    std::span<const std::int64_t> node_ids = {};
 };
 
 /// One finished frame, as frame_done sees it on every process.

@@ -6,7 +6,6 @@
 #include <variant>
 
 #include "dgwarp/core/error.hpp"
-#include "dgwarp/core/joined.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/mesh_io.hpp"
@@ -194,26 +193,12 @@ ProcessorCase read_processor_job(MPI_Comm comm, const ProcessorJobFiles& files, 
 
 RunReport run_processor_job(MPI_Comm comm, const JobInputs& in, const ProcessorCase& c, const PartPlan& plan,
                             const ProcessorRunOptions& options, const ProcessorRunCallbacks& callbacks) {
-    const Method method = plan_method(plan.plan.plan);
     bool base_written = false;
-    const PartRunContext ctx{comm, in.mesh, in.spec, in.boundary, in.original, plan, c.part.cell_ids};
+    const PartRunContext ctx{comm, in.mesh, in.spec, in.boundary, in.original, plan, c.part.cell_ids, c.part.point_ids};
     PartRunCallbacks on;
     on.frame_started = callbacks.frame_started;
     on.frame_done = [&](const PartFrameView& view) {
         const FrameReport& r = view.report;
-        if (method == Method::dg_harmonic && options.last_resort && r.inverted_by_motion > 0 &&
-            r.inverted_on_boundary == 0) {
-            std::vector<std::string> worst;
-            for (std::int64_t c : r.worst_inverted) worst.push_back(std::to_string(c));
-            throw InvalidResultError("dg-harmonic inverted " + std::to_string(r.inverted_by_motion) + " cell" +
-                                         (r.inverted_by_motion == 1 ? "" : "s") + " in frame " +
-                                         std::to_string(view.frame) + " (worst: " + joined(worst) +
-                                         "), which its last resort (untangle) would repair on one process; it does "
-                                         "not run when each process reads its own processor folder. Nothing was "
-                                         "written for this frame. " +
-                                         options.last_resort_advice,
-                                     r.inverted_by_motion);
-        }
         ProcessorFrame frame{view, {}, 0};
         if (r.valid() || options.write_invalid) {
             Stopwatch sw;
@@ -224,6 +209,7 @@ RunReport run_processor_job(MPI_Comm comm, const JobInputs& in, const ProcessorC
         return callbacks.frame_done ? callbacks.frame_done(frame) : true;
     };
     RunOptions run_options;
+    run_options.frame.repair = options.last_resort ? Repair::method_default : Repair::none;
     run_options.stop_at_invalid = false;  // frame_done decides
     return run_frames_on_parts(ctx, run_options, on);
 }

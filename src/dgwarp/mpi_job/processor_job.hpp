@@ -92,13 +92,9 @@ struct ProcessorFrame {
 struct ProcessorRunOptions {
     /// Write a frame with cells the motion inverted (else nothing of it is written).
     bool write_invalid = false;
-    /// dg-harmonic's last resort (its repair of the cells its step inverts)
-    /// is wanted: it moves nodes several processes hold, so it does not run on
-    /// the parts; a frame that would need it throws InvalidResultError on
-    /// every process, before anything of it is written.
+    /// dg-harmonic's last resort: the cells its step inverts repaired over
+    /// the processes (mpi/part_repair.hpp), as one process repairs them.
     bool last_resort = true;
-    /// That error's last words: how the caller gets the repair.
-    std::string last_resort_advice = "run on one process";
 };
 
 struct ProcessorRunCallbacks {

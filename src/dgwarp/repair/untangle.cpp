@@ -419,6 +419,19 @@ void count_after(const Repair& r, std::span<const double> quality, std::vector<N
 
 }  // namespace
 
+std::vector<std::int64_t> cells_to_untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
+                                            std::span<const NodeId> fixed_nodes, std::span<const double> points,
+                                            const UntangleOptions& options) {
+    const std::vector<std::uint8_t> fixed =
+        checked_fixed_flags(dim, cells, orientations, fixed_nodes, points.size(), options);
+    const CellJudge judge(dim, cells, orientations, points);
+    std::vector<double> quality(cells.size());
+    parallel_for(static_cast<std::int64_t>(cells.size()),
+                 [&](std::int64_t c) { quality[static_cast<std::size_t>(c)] = judge.quality(c); });
+    UntangleReport report;
+    return cells_to_repair(cells, quality, fixed, options.target_quality, report);
+}
+
 UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
                         std::span<const NodeId> fixed_nodes, std::span<double> points, const UntangleOptions& options) {
     const std::vector<std::uint8_t> fixed =

@@ -56,4 +56,11 @@ UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::
                         std::span<const NodeId> fixed_nodes, std::span<double> points,
                         const UntangleOptions& options = {});
 
+/// The cells untangle sets out to repair with the same arguments (ascending):
+/// those at or below options.target_quality with a node that is not fixed.
+/// Throws as untangle.
+std::vector<std::int64_t> cells_to_untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
+                                            std::span<const NodeId> fixed_nodes, std::span<const double> points,
+                                            const UntangleOptions& options = {});
+
 }  // namespace dgwarp
