@@ -3,6 +3,7 @@
 # 0-based int32; per-cell arrays are in the mesh's cell order; per-boundary-node arrays are in
 # Plan.boundary_nodes order.
 import os
+import pathlib
 from typing import Any, Callable, Literal, Mapping, Sequence, Union
 
 import numpy as np
@@ -89,6 +90,7 @@ class Mesh:
         cell_data: Mapping[str, npt.ArrayLike] | None = None,
         gmsh_version: Literal[41, 22] = 41,
     ) -> None: ...
+    def write_time(self, case: Path, time: str, points: npt.ArrayLike) -> pathlib.Path: ...
 
 class Quality:
     @property

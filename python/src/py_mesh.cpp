@@ -8,6 +8,9 @@
 
 #include "arrays.hpp"
 #include "dgwarp/core/error.hpp"
+#include "dgwarp/io/mesh_io.hpp"
+#include "dgwarp/io/openfoam/openfoam_frames.hpp"
+#include "dgwarp/io/text_reader.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
 
@@ -398,6 +401,35 @@ void bind_mesh(py::module_& m) {
             "  gmsh_version: 41 or 22 for .msh.\n"
             "An .su2 output keeps the other zones, FFD boxes and periodic data of the file the mesh was read\n"
             "from; other formats cannot hold them (a DgwarpWarning says what is dropped).")
+        .def(
+            "write_time",
+            [](const PyMesh& p, const std::filesystem::path& case_folder, const std::string& time, py::handle points) {
+                py::object keep;
+                const std::span<const double> xs = mesh_points_arg(p, points, "points", keep);
+                if (p.mesh.dim != 3)
+                    throw py::value_error("OpenFOAM meshes are 3D: this mesh is " + std::to_string(p.mesh.dim) + "D");
+                double t = 0;
+                if (time != "constant" && !parse_double(time, t))
+                    throw py::value_error("time: '" + time +
+                                          "' is not a time folder's name: give a number (0, 0.001, 1e-05) or 'constant'");
+                std::vector<std::filesystem::path> inputs;
+                if (!p.source.empty()) {
+                    inputs = mesh_input_files(p.source);
+                    inputs.emplace_back(p.source);
+                }
+                py::gil_scoped_release release;
+                check_openfoam_frame_outputs(case_folder, {time}, p.source, inputs);
+                write_openfoam_frame_base(case_folder, time, p.mesh, p.extras);
+                return write_openfoam_frame_points(case_folder, time, xs, p.extras);
+            },
+            py::arg("case"), py::arg("time"), py::arg("points"),
+            "Writes `points` ((num_points, 3) float64, e.g. a plan's deformed ones) as the OpenFOAM case folder\n"
+            "`case`'s time `time` ('0.5', or 'constant'): case/<time>/polyMesh/points, as `dgwarp deform -o\n"
+            "case/ --foam-time <time>` writes it, with the case's constant/polyMesh (a copy of the case this\n"
+            "mesh was read from, unless it is that case; another format's mesh written whole); a decomposed\n"
+            "case's processor folders each get their own points. Each file atomically; returns the points file\n"
+            "(processor* for a decomposed case). Raises ValueError for a 2D mesh or a time that is no number,\n"
+            "InputError for an output that is one of the mesh's files, IoError when it cannot be written.")
         .def(py::pickle([](const PyMesh& p) { return mesh_state(p); },
                         [](const py::tuple& state) { return mesh_from_state(state); }))
         .def("__repr__", [](const PyMesh& p) { return describe(p.mesh); });

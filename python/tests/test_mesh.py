@@ -1,4 +1,8 @@
-"""dgwarp.read, Mesh (zero-copy views, from_arrays, write) and their errors."""
+"""dgwarp.read, Mesh (zero-copy views, from_arrays, write, write_time) and their errors."""
+
+import json
+import pathlib
+import shutil
 
 import numpy as np
 import pytest
@@ -185,3 +189,34 @@ def test_io_errors_are_the_builtin_oserror_of_their_errno(tmp_path, naca_file):
     (tmp_path / "file").write_text("")
     with pytest.raises(NotADirectoryError):
         square_mesh().write(tmp_path / "file" / "x.su2")
+
+
+OPENFOAM_CASES = pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "openfoam"
+
+
+def test_write_time_writes_what_dgwarp_deform_writes_into_an_openfoam_case(tmp_path, cli):
+    case = tmp_path / "mixed"
+    shutil.copytree(OPENFOAM_CASES / "mixed", case)
+    motion = {"markers": {"top": {"translate": [0, 0, 0.05]}}, "default": "fixed", "shared_nodes": "moving_wins"}
+    mesh = dgwarp.read(case)
+    moved = dgwarp.prepare(mesh, motion).deform(motion)
+    # Into another folder: its constant/polyMesh a copy of the case's, the time's points the frame's.
+    written = mesh.write_time(tmp_path / "py", "0.5", moved)
+    assert pathlib.Path(written) == tmp_path / "py" / "0.5" / "polyMesh" / "points"
+    (tmp_path / "motion.json").write_text(json.dumps(motion))
+    cli("deform", case, "-m", tmp_path / "motion.json", "-o", str(tmp_path / "cli") + "/", "--foam-time", "0.5", "-q")
+    for name in ["0.5/polyMesh/points", "constant/polyMesh/points", "constant/polyMesh/faces",
+                 "constant/polyMesh/owner", "constant/polyMesh/neighbour", "constant/polyMesh/boundary"]:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    # Into the case itself: only the time folder is new.
+    mesh.write_time(case, "0.5", moved)
+    assert (case / "0.5" / "polyMesh" / "points").read_bytes() == (tmp_path / "cli" / "0.5" / "polyMesh" / "points").read_bytes()
+    assert (case / "constant" / "polyMesh" / "points").read_bytes() == (OPENFOAM_CASES / "mixed" / "constant" / "polyMesh" / "points").read_bytes()
+    # What it refuses.
+    with pytest.raises(ValueError, match="not a time folder's name"):
+        mesh.write_time(tmp_path / "py", "later", moved)
+    with pytest.raises(dgwarp.InputError, match="constant/polyMesh/points"):
+        mesh.write_time(case, "constant", moved)
+    flat = dgwarp.Mesh.from_arrays([[0, 0], [1, 0], [0, 1]], {"triangle": [[0, 1, 2]]}, {"wall": [[0, 1]]})
+    with pytest.raises(ValueError, match="3D"):
+        flat.write_time(tmp_path / "flat", "0", flat.points)
