@@ -22,6 +22,7 @@
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/mesh/mesh_counts.hpp"
+#include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/mpi/root_session.hpp"
 #include "dgwarp/mpi_job/processor_job.hpp"
 #include "dgwarp/run/run_deformation.hpp"
@@ -34,17 +35,8 @@ namespace {
 
 fs::path case_path, work, sphere_case;
 
-int rank_of() {
-    int r = 0;
-    MPI_Comm_rank(MPI_COMM_WORLD, &r);
-    return r;
-}
-
-int size_of() {
-    int s = 1;
-    MPI_Comm_size(MPI_COMM_WORLD, &s);
-    return s;
-}
+int rank_of() { return mpi::rank_in(MPI_COMM_WORLD); }
+int size_of() { return mpi::processes_in(MPI_COMM_WORLD); }
 
 // Rank 0 writes `text` to work/name; every process returns its path once it is there.
 fs::path shared_file(const std::string& name, const std::string& text) {
@@ -196,6 +188,21 @@ TEST(ProcessorJob, AnInvertedFrameWritesNothingOnAnyProcess) {
         mpi::run_processor_job(MPI_COMM_WORLD, s.in, s.c, s.plan, options, {});
         EXPECT_TRUE(fs::exists(points_file(raw)));
     }
+}
+
+TEST(ProcessorJob, CellsTheBoundaryItselfFoldsAreReportedNotRepaired) {
+    // The top sinks through the case: cells with every node on the boundary fold, which no repair of the
+    // volume can help. dg-harmonic's last resort does not run (as on one process); the frame is invalid.
+    const fs::path motion = shared_file(
+        "through.json", R"({"markers": {"top": {"translate": [0, 0, -2]}}, "default": "fixed", "shared_nodes": "moving_wins"})");
+    const fs::path out = fresh_output("through");
+    PartRun r = read_and_prepare(motion, out, Method::dg_harmonic);
+    const RunReport report = mpi::run_processor_job(MPI_COMM_WORLD, r.in, r.c, r.plan, {}, {});
+    ASSERT_EQ(report.frames.size(), 1u);
+    EXPECT_GT(report.frames[0].inverted_on_boundary, 0);
+    EXPECT_FALSE(report.frames[0].last_resort);
+    EXPECT_FALSE(report.frames[0].untangled.has_value());
+    EXPECT_FALSE(fs::exists(out / ("processor" + std::to_string(rank_of())) / "0" / "polyMesh" / "points"));
 }
 
 TEST(ProcessorJob, RefusalSaysWhyTheCaseIsReadWhole) {

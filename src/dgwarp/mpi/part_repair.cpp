@@ -9,6 +9,7 @@
 #include "dgwarp/mpi/large_transfers.hpp"
 #include "dgwarp/mpi/reductions.hpp"
 #include "dgwarp/repair/last_resort.hpp"
+#include "dgwarp/repair/unrepairable_cells.hpp"
 
 namespace dgwarp::mpi {
 
@@ -86,11 +87,11 @@ std::vector<std::int64_t> add_cells(Patch& p, const std::vector<std::int64_t>& r
         const std::int64_t* r = records.data() + cell.at;
         const auto type = static_cast<CellType>(r[1]);
         p.orientation.push_back(static_cast<std::int8_t>(r[2]));
-        nodes.clear();
-        for (std::int64_t k = 0; k < r[3]; ++k) nodes.push_back(static_cast<NodeId>(index_of(p.nodes, r[4 + k])));
         const std::int64_t* f = r + 4 + r[3];
         const std::int64_t faces = *f++;
         if (type != CellType::polyhedron) {
+            nodes.clear();
+            for (std::int64_t k = 0; k < r[3]; ++k) nodes.push_back(static_cast<NodeId>(index_of(p.nodes, r[4 + k])));
             p.mesh.cells.push_back(type, nodes);
             continue;
         }
@@ -126,78 +127,122 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
                             " cells");
     });
     const ElementList& cells = mesh.cells;
-    std::vector<std::int64_t> mine, folded_ids;
-    for (std::int64_t c : folded) folded_ids.push_back(cell_ids[static_cast<std::size_t>(c)]);
     if (sum(comm, static_cast<std::int64_t>(folded.size())) == 0) return std::nullopt;
-    // Ring 0: the nodes of the cells the repair sets out to mend on every
+    // As run_last_resort: nothing runs where the boundary motion itself folds
+    // a cell (every node of it fixed: no repair of the volume can help).
+    std::int64_t pinned = 0;
+    collectively(comm, [&] { pinned = static_cast<std::int64_t>(cells_with_only_fixed_nodes(cells, fixed, folded).size()); });
+    if (sum(comm, pinned) > 0) return std::nullopt;
+    std::vector<std::int64_t> folded_ids;
+    for (std::int64_t c : folded) folded_ids.push_back(cell_ids[static_cast<std::size_t>(c)]);
+    const std::vector<std::int64_t> all_folded = sorted_unique(all_gather(comm, folded_ids));
+
+    // Level 0: the nodes of the cells the repair sets out to mend on every
     // process (the folded ones, and any other at or below zero quality with a
-    // free node, as over the whole mesh); then ring by ring the nodes of the
-    // cells touching the last.
-    std::vector<std::int64_t> seeds;
+    // free node, as over the whole mesh); level l + 1: the other nodes of the
+    // cells touching level l.
+    std::vector<std::int64_t> seeds, mine;
     collectively(comm, [&] {
         seeds = cells_to_untangle(mesh.dim, cells, own_orientation, fixed, points, last_resort_untangle_options());
     });
     for (std::int64_t c : seeds)
         for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c))) mine.push_back(node_ids[n]);
-    std::vector<std::int64_t> ring = sorted_unique(all_gather(comm, mine)), inner;
-    for (int r = 1; r <= part_repair_rings; ++r) {
-        mine.clear();
-        for (std::size_t c = 0; c < cells.size(); ++c) {
-            const auto nodes = cells.nodes_of(c);
-            if (std::none_of(nodes.begin(), nodes.end(), [&](NodeId n) { return holds(ring, node_ids[n]); })) continue;
-            for (NodeId n : nodes)
-                if (!holds(ring, node_ids[n])) mine.push_back(node_ids[n]);
+    std::vector<std::vector<std::int64_t>> levels{sorted_unique(all_gather(comm, mine))};
+    std::vector<std::int64_t> reached = levels[0];  // every level so far
+    const auto grow = [&](int rings) {
+        while (static_cast<int>(levels.size()) <= rings) {
+            mine.clear();
+            for (std::size_t c = 0; c < cells.size(); ++c) {
+                const auto nodes = cells.nodes_of(c);
+                if (std::none_of(nodes.begin(), nodes.end(), [&](NodeId n) { return holds(levels.back(), node_ids[n]); }))
+                    continue;
+                for (NodeId n : nodes)
+                    if (!holds(reached, node_ids[n])) mine.push_back(node_ids[n]);
+            }
+            levels.push_back(sorted_unique(all_gather(comm, mine)));
+            std::vector<std::int64_t> all = reached;
+            all.insert(all.end(), levels.back().begin(), levels.back().end());
+            reached = sorted_unique(std::move(all));
         }
-        if (r == part_repair_rings) inner = ring;
-        std::vector<std::int64_t> grown = all_gather(comm, mine);
-        grown.insert(grown.end(), ring.begin(), ring.end());
-        ring = sorted_unique(std::move(grown));
-    }
+    };
 
-    // Every process's cells touching the inner rings, the coordinates of its
-    // nodes in the patch, its boundary nodes there, its folded cells.
-    Patch p;
-    p.nodes = ring;
     const int dim = mesh.dim;
-    std::vector<std::int64_t> held_ids, boundary_ids;
-    std::vector<double> held_points;
-    for (std::size_t n = 0; n < mesh.num_points(); ++n) {
-        if (!holds(p.nodes, node_ids[n])) continue;
-        held_ids.push_back(node_ids[n]);
-        for (int d = 0; d < dim; ++d) held_points.push_back(points[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
-    }
-    for (NodeId n : fixed)
-        if (holds(p.nodes, node_ids[n])) boundary_ids.push_back(node_ids[n]);
-    const std::vector<std::int64_t> records = all_gather(comm, cell_records(mesh, own_orientation, node_ids, cell_ids, inner));
-    const std::vector<std::int64_t> all_held = all_gather(comm, held_ids);
-    const std::vector<double> all_points = detail::allgather_records<double>(comm, held_points);
-    const std::vector<std::int64_t> all_boundary = sorted_unique(all_gather(comm, boundary_ids));
-    const std::vector<std::int64_t> all_folded = sorted_unique(all_gather(comm, folded_ids));
-
-    std::optional<UntangleReport> report;
-    collectively(comm, [&] {
-        p.mesh.dim = dim;
-        p.mesh.points.assign(p.nodes.size() * static_cast<std::size_t>(dim), 0.0);
-        for (std::size_t k = 0; k < all_held.size(); ++k)
-            std::copy_n(all_points.begin() + static_cast<std::ptrdiff_t>(k) * dim, dim,
-                        p.mesh.points.begin() + static_cast<std::ptrdiff_t>(index_of(p.nodes, all_held[k]) * static_cast<std::size_t>(dim)));
-        const std::vector<std::int64_t> patch_cell_ids = add_cells(p, records);
-        // Held: the boundary's nodes, and the nodes beyond the inner rings (some of their cells are not in the patch).
-        for (std::size_t i = 0; i < p.nodes.size(); ++i)
-            if (holds(all_boundary, p.nodes[i]) || !holds(inner, p.nodes[i])) p.fixed.push_back(static_cast<NodeId>(i));
-        for (std::int64_t id : all_folded) p.folded.push_back(static_cast<std::int64_t>(index_of(patch_cell_ids, id)));
-        report = run_last_resort(dim, p.mesh.cells, p.orientation, p.fixed, p.folded, p.mesh.points);
-        if (!report) return;
-        // This process's nodes where the repair put them.
+    const auto d_ = static_cast<std::size_t>(dim);
+    for (int rings = part_repair_rings;;) {
+        grow(rings);
+        // The patch: the nodes up to level `rings`, the cells touching the levels below it.
+        std::vector<std::int64_t> inner;
+        for (int l = 0; l < rings; ++l) inner.insert(inner.end(), levels[static_cast<std::size_t>(l)].begin(),
+                                                     levels[static_cast<std::size_t>(l)].end());
+        inner = sorted_unique(std::move(inner));
+        Patch p;
+        for (int l = 0; l <= rings; ++l) p.nodes.insert(p.nodes.end(), levels[static_cast<std::size_t>(l)].begin(),
+                                                        levels[static_cast<std::size_t>(l)].end());
+        p.nodes = sorted_unique(std::move(p.nodes));
+        // Every process's cells touching the inner levels, the coordinates of
+        // its nodes in the patch, its boundary nodes there.
+        std::vector<std::int64_t> held_ids, boundary_ids;
+        std::vector<double> held_points;
         for (std::size_t n = 0; n < mesh.num_points(); ++n) {
             if (!holds(p.nodes, node_ids[n])) continue;
-            const std::size_t i = index_of(p.nodes, node_ids[n]);
-            for (int d = 0; d < dim; ++d)
-                points[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)] =
-                    p.mesh.points[i * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)];
+            held_ids.push_back(node_ids[n]);
+            for (std::size_t d = 0; d < d_; ++d) held_points.push_back(points[n * d_ + d]);
         }
-    });
-    return report;
+        for (NodeId n : fixed)
+            if (holds(p.nodes, node_ids[n])) boundary_ids.push_back(node_ids[n]);
+        const std::vector<std::int64_t> records =
+            all_gather(comm, cell_records(mesh, own_orientation, node_ids, cell_ids, inner));
+        const std::vector<std::int64_t> all_held = all_gather(comm, held_ids);
+        const std::vector<double> all_points = detail::allgather_records<double>(comm, held_points);
+        const std::vector<std::int64_t> all_boundary = sorted_unique(all_gather(comm, boundary_ids));
+
+        // Every process repairs the same patch, and so decides alike.
+        std::optional<UntangleReport> report;
+        int moved_level = -1;  // the farthest level a node moved at
+        collectively(comm, [&] {
+            p.mesh.dim = dim;
+            p.mesh.points.assign(p.nodes.size() * d_, 0.0);
+            for (std::size_t k = 0; k < all_held.size(); ++k)
+                std::copy_n(all_points.begin() + static_cast<std::ptrdiff_t>(k * d_), dim,
+                            p.mesh.points.begin() + static_cast<std::ptrdiff_t>(index_of(p.nodes, all_held[k]) * d_));
+            const std::vector<std::int64_t> patch_cell_ids = add_cells(p, records);
+            // Held: the boundary's nodes, and those of the last level (some of their cells are not in the patch).
+            for (std::size_t i = 0; i < p.nodes.size(); ++i)
+                if (holds(all_boundary, p.nodes[i]) || !holds(inner, p.nodes[i])) p.fixed.push_back(static_cast<NodeId>(i));
+            for (std::int64_t id : all_folded) {
+                if (!holds(patch_cell_ids, id))
+                    throw Error("last_resort_over_parts: folded cell " + std::to_string(id) + " is not in the patch");
+                p.folded.push_back(static_cast<std::int64_t>(index_of(patch_cell_ids, id)));
+            }
+            const std::vector<double> before = p.mesh.points;
+            report = run_last_resort(dim, p.mesh.cells, p.orientation, p.fixed, p.folded, p.mesh.points);
+            for (int l = 0; l <= rings; ++l)
+                for (std::int64_t id : levels[static_cast<std::size_t>(l)]) {
+                    const std::size_t i = index_of(p.nodes, id);
+                    if (!std::equal(before.begin() + static_cast<std::ptrdiff_t>(i * d_),
+                                    before.begin() + static_cast<std::ptrdiff_t>((i + 1) * d_),
+                                    p.mesh.points.begin() + static_cast<std::ptrdiff_t>(i * d_)))
+                        moved_level = std::max(moved_level, l);
+                }
+        });
+        // The repair reads and moves nodes within a few rings of the cells it
+        // mends, and mends the cells around the nodes it moved: beyond
+        // level moved_level + 1 + its rounds + 2, nothing. When that reaches
+        // the held edge, the patch is grown and the repair run again.
+        const int needed = std::max(part_repair_rings, moved_level + 1 + last_resort_max_rounds + 2);
+        if (!report || needed <= rings || rings >= part_repair_max_rings) {
+            if (report)
+                // This process's nodes where the repair put them.
+                for (std::size_t n = 0; n < mesh.num_points(); ++n) {
+                    if (!holds(p.nodes, node_ids[n])) continue;
+                    const std::size_t i = index_of(p.nodes, node_ids[n]);
+                    std::copy_n(p.mesh.points.begin() + static_cast<std::ptrdiff_t>(i * d_), dim,
+                                points.begin() + static_cast<std::ptrdiff_t>(n * d_));
+                }
+            return report;
+        }
+        rings = std::min(needed, part_repair_max_rings);
+    }
 }
 
 }  // namespace dgwarp::mpi

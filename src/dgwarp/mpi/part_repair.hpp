@@ -14,7 +14,11 @@
 // read has all its cells), nodes and cells numbered in the whole mesh's
 // order. The nodes at the patch's edge are held, as the boundary's are. So
 // each node moves as one process's last resort over the whole mesh moves it
-// (tested bit for bit on a decomposed OpenFOAM case).
+// (tested bit for bit on a decomposed OpenFOAM case), unless the repair
+// reaches beyond part_repair_max_rings rings (then it is a valid repair of
+// its own, not one process's to the bit). Its report counts the patch's
+// cells: where cells at or below zero quality with every node fixed lie
+// outside it, one process's counts them too.
 #include <mpi.h>
 
 #include <cstdint>
@@ -26,10 +30,13 @@
 
 namespace dgwarp::mpi {
 
-/// Rings of cells around the folded ones that the patch holds: the last
-/// resort's rounds, and two more (the cells around a moved node, the
-/// neighbours the smoothing reads).
+/// Rings of cells around the cells to mend that the patch holds at first:
+/// the last resort's rounds, and two more (the cells around a moved node,
+/// the neighbours the smoothing reads). A repair that moved a node within
+/// reach of the held edge (it mends the cells a move inverts too) is run
+/// again on a patch grown to hold its reach, up to part_repair_max_rings.
 inline constexpr int part_repair_rings = 8;
+inline constexpr int part_repair_max_rings = 64;
 
 /// run_last_resort over every process's part. `mesh`: this process's part
 /// (its cells over its local nodes), `own_orientation` per local cell (as

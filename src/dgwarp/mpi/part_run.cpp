@@ -19,7 +19,11 @@ RunReport run_frames_on_parts(const PartRunContext& ctx, const RunOptions& optio
     RunReport run;
     const std::size_t frames = frame_count(ctx.spec);
     std::vector<double> points(ctx.mesh.points.size());
-    const bool last_resort = options.frame.repair == Repair::method_default && !ctx.node_ids.empty() &&
+    // Every process alike (a part may have no node): the ids given for every node everywhere.
+    const bool ids_given = min(comm, std::int64_t{ctx.node_ids.size() == ctx.mesh.num_points() &&
+                                                  (!ctx.node_ids.empty() || ctx.mesh.num_points() == 0)}) == 1 &&
+                           max(comm, static_cast<std::int64_t>(ctx.node_ids.size())) > 0;
+    const bool last_resort = options.frame.repair == Repair::method_default && ids_given &&
                              plan_method(ctx.plan.plan.plan) == Method::dg_harmonic;
     for (std::size_t k = 0; k < frames; ++k) {
         collectively(comm, [&] {
