@@ -2,15 +2,13 @@
 
 #include <CLI/CLI.hpp>
 
-#include "dgwarp/io/text_reader.hpp"
 #include "dgwarp/io/openfoam/openfoam_frames.hpp"
 
 namespace dgwarp::cli {
 
 std::vector<std::string> foam_time_names(const MotionSpec& spec, std::size_t frames, const std::string& given) {
     if (!given.empty()) {
-        double t = 0;
-        if (given != "constant" && !parse_double(given, t))
+        if (!is_openfoam_time_name(given))
             throw CLI::ValidationError("--foam-time", "'" + given +
                                                           "' is not a time folder's name: give a number (0, 0.001, "
                                                           "1e-05) or constant");
@@ -22,9 +20,7 @@ std::vector<std::string> foam_time_names(const MotionSpec& spec, std::size_t fra
                                            "number when the frames have no times)");
         return {given};
     }
-    std::vector<double> times(frames);
-    for (std::size_t k = 0; k < frames; ++k) times[k] = frame_time(spec, k);
-    return openfoam_time_names(times);
+    return openfoam_frame_time_names(spec);
 }
 
 }  // namespace dgwarp::cli

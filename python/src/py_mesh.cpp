@@ -10,7 +10,6 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam/openfoam_frames.hpp"
-#include "dgwarp/io/text_reader.hpp"
 #include "errors.hpp"
 #include "progress_bridge.hpp"
 
@@ -408,8 +407,7 @@ void bind_mesh(py::module_& m) {
                 const std::span<const double> xs = mesh_points_arg(p, points, "points", keep);
                 if (p.mesh.dim != 3)
                     throw py::value_error("OpenFOAM meshes are 3D: this mesh is " + std::to_string(p.mesh.dim) + "D");
-                double t = 0;
-                if (time != "constant" && !parse_double(time, t))
+                if (!is_openfoam_time_name(time))
                     throw py::value_error("time: '" + time +
                                           "' is not a time folder's name: give a number (0, 0.001, 1e-05) or 'constant'");
                 std::vector<std::filesystem::path> inputs;

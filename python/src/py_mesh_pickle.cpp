@@ -132,7 +132,8 @@ py::object cgns_state(const std::optional<CgnsSource>& s) {
     if (!s) return py::none();
     py::list zones;
     for (const CgnsZone& z : s->zones) zones.append(py::make_tuple(z.name, to_bytes(z.points)));
-    return py::make_tuple(s->file.string(), zones, s->num_points, s->dim);
+    // Its markers' BC types too: they make markers slide (io/marker_types.hpp).
+    return py::make_tuple(s->file.string(), zones, s->num_points, s->dim, s->marker_types, s->exterior_marker);
 }
 
 std::optional<CgnsSource> cgns_from_state(py::handle obj) {
@@ -146,6 +147,10 @@ std::optional<CgnsSource> cgns_from_state(py::handle obj) {
     }
     s.num_points = t[2].cast<std::size_t>();
     s.dim = t[3].cast<int>();
+    if (t.size() >= 6) {  // (pickles from before the BC types have four entries)
+        s.marker_types = t[4].cast<std::vector<std::string>>();
+        s.exterior_marker = t[5].cast<bool>();
+    }
     return s;
 }
 

@@ -8,6 +8,7 @@
 #if defined(DGWARP_PYTHON_MPI)
 #include <mpi4py/mpi4py.h>
 
+#include "dgwarp/mpi/agreement.hpp"
 #include "dgwarp/mpi/distributed_plan.hpp"
 #include "dgwarp/mpi/distributed_plan_file.hpp"
 #endif
@@ -51,6 +52,10 @@ py::array_t<std::int64_t> ids_arg(py::handle global_ids, int dim, std::span<cons
 }
 
 }  // namespace
+
+void collectively_on(py::handle comm, const std::function<void()>& check) {
+    mpi::collectively(communicator(comm), check);
+}
 
 std::shared_ptr<const DistributedHolder> prepare_distributed_plan(py::handle comm, Method method, int dim,
                                                                   std::span<const double> points,
@@ -101,6 +106,8 @@ struct DistributedHolder {
 };
 
 bool has_mpi() { return false; }
+
+void collectively_on(py::handle, const std::function<void()>& check) { check(); }
 
 std::shared_ptr<const DistributedHolder> prepare_distributed_plan(py::handle, Method, int, std::span<const double>,
                                                                   py::handle, const BoundarySet&,

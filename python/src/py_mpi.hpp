@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -20,6 +21,12 @@ struct DistributedHolder;
 
 /// Whether the module was built with MPI and mpi4py.
 bool has_mpi();
+
+/// Runs `check` on this process, then agrees over `comm` (an mpi4py.MPI.Comm;
+/// mpi/agreement.hpp): when it threw on any process, every process throws
+/// (the others an error naming that process), so that none is left waiting
+/// in the collective call that follows. Without MPI: `check`.
+void collectively_on(pybind11::handle comm, const std::function<void()>& check);
 
 /// Prepares `method` collectively over `comm` (an mpi4py.MPI.Comm) for this
 /// process's nodes: `points` (num_local × dim), `global_ids` (one integer

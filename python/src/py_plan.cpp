@@ -143,7 +143,8 @@ std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle mo
     if (!comm.is_none()) {
         // This process's part, prepared with the others (py_mpi.hpp).
         if (!progress.is_none()) throw py::value_error("prepare(comm=...) takes no progress callback");
-        refuse_slides_with_comm(p->boundary);
+        // On every process alike: a marker may slide by its type on some parts only (its faces there).
+        collectively_on(comm, [&] { refuse_slides_with_comm(p->boundary); });
         p->distributed = prepare_distributed_plan(comm, method, mesh->mesh.dim, mesh->mesh.points, global_ids,
                                                   p->boundary.boundary, p->options);
         p->comm = comm;
@@ -220,7 +221,8 @@ std::shared_ptr<PyPlan> load_plan_file(const std::filesystem::path& path, std::s
         p->mesh = mesh;
         p->boundary = classify(*mesh, moving, static_markers, shared_nodes_arg(shared_nodes), shared_tolerance,
                                p->shared_nodes, p->shared_tolerance, p->classified_by);
-        refuse_slides_with_comm(p->boundary);
+        // On every process alike: a marker may slide by its type on some parts only (its faces there).
+        collectively_on(comm, [&] { refuse_slides_with_comm(p->boundary); });
         p->distributed = load_distributed_plan_file(comm, path, mesh->mesh.dim, mesh->mesh.points, global_ids,
                                                     p->boundary.boundary);
         p->comm = comm;

@@ -130,3 +130,15 @@ def test_openfoam_empty_patches_slide_by_their_type_and_the_case_stays_3d():
     assert held.sliding_markers == [] and "frontAndBack" in held.static_markers
     back = pickle.loads(pickle.dumps(held))
     assert back.sliding_markers == [] and back.static_markers == held.static_markers
+
+
+def test_a_patch_named_fixed_stays_held_after_unpickling_beside_one_that_slides():
+    # frontAndBack (empty: slides by its type) named fixed, fixedWalls named to slide: the pickled
+    # classification names every marker, so unpickling does not make frontAndBack slide by its type.
+    mesh = dgwarp.read(OPENFOAM / "cavity")
+    motion = {"markers": {"movingWall": {"translate": [0.01, 0, 0]}, "frontAndBack": "fixed", "fixedWalls": "slide"}}
+    plan = dgwarp.prepare(mesh, motion)
+    assert plan.sliding_markers == ["fixedWalls"] and "frontAndBack" in plan.static_markers
+    back = pickle.loads(pickle.dumps(plan))
+    assert back.sliding_markers == ["fixedWalls"] and back.static_markers == plan.static_markers
+    assert np.array_equal(back.deform(motion), plan.deform(motion))

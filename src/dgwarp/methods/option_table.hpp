@@ -94,6 +94,8 @@ MethodOptions method_options_from_text(std::string_view text);
 /// method that a plan keeps (kept_by_plan: they acted at its prepare) are the
 /// plan's own. What a plan loaded from a file, a pickle or a distributed plan
 /// file runs with; the step-time options (dg-harmonic's guard) stay the run's.
+/// Only DG-IDW's and DG-harmonic's plans hold their options (the plans that
+/// are saved); for the other methods, `run`'s whole.
 MethodOptions options_with_plan(const Plan& plan, const MethodOptions& run);
 
 }  // namespace dgwarp

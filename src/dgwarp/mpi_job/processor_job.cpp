@@ -67,12 +67,6 @@ std::int64_t owned_moving_and_static(const Mesh& mesh, const ResolvedBoundary& b
     return count;
 }
 
-std::vector<std::string> frame_time_names(const MotionSpec& spec) {
-    std::vector<double> times(frame_count(spec));
-    for (std::size_t k = 0; k < times.size(); ++k) times[k] = frame_time(spec, k);
-    return openfoam_time_names(times);
-}
-
 }  // namespace
 
 std::string processor_job_refusal(const fs::path& case_path, const fs::path& motion, int processes) {
@@ -115,7 +109,10 @@ ProcessorCase read_processor_job(MPI_Comm comm, const ProcessorJobFiles& files, 
     // Each process reads the motion and its own processor folder.
     collectively(comm, [&] {
         in.spec = read_motion_file(files.motion);
-        c.time_names = files.time_names ? files.time_names(in.spec) : frame_time_names(in.spec);
+        c.time_names = files.time_names ? files.time_names(in.spec) : openfoam_frame_time_names(in.spec);
+        if (c.time_names.size() != frame_count(in.spec))
+            throw UsageError("read_processor_job: " + std::to_string(c.time_names.size()) + " time folder names for " +
+                             std::to_string(frame_count(in.spec)) + " frames");
         if (rank == 0) {
             std::vector<fs::path> inputs = motion_named_files(in.spec);
             inputs.insert(inputs.end(), {files.case_path, files.motion});

@@ -26,6 +26,18 @@ TEST(OpenFoamFrames, TimeNamesAsOpenFoamNamesThem) {
     EXPECT_EQ(openfoam_time_names(std::vector<double>{0, 0, 1}), (std::vector<std::string>{"0", "1", "2"}));
 }
 
+TEST(OpenFoamFrames, AMotionsFramesAreNamedByTheirTimesAndTimeNamesAreNumbersOrConstant) {
+    MotionSpec series;
+    series.frames.resize(3);  // a frames list: no times, so the frame numbers
+    EXPECT_EQ(openfoam_frame_time_names(series), (std::vector<std::string>{"0", "1", "2"}));
+    MotionSpec periodic;
+    periodic.frames.resize(1);
+    periodic.time = TimeSteps{0.25, 3};
+    EXPECT_EQ(openfoam_frame_time_names(periodic), (std::vector<std::string>{"0", "0.25", "0.5"}));
+    for (const char* ok : {"0", "0.5", "1e-05", "constant", "12"}) EXPECT_TRUE(is_openfoam_time_name(ok)) << ok;
+    for (const char* bad : {"", "later", "0.5s", "Constant", "1,5"}) EXPECT_FALSE(is_openfoam_time_name(bad)) << bad;
+}
+
 TEST(OpenFoamFrames, FramesOfACaseAreItsTimeFoldersReadBackWithItsFaces) {
     const fs::path input = openfoam_case("cavity");
     MeshExtras extras;

@@ -7,6 +7,7 @@
 
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/output_checks.hpp"
+#include "dgwarp/io/text_reader.hpp"
 
 namespace dgwarp {
 
@@ -53,6 +54,17 @@ std::vector<std::string> openfoam_time_names(std::span<const double> times) {
     }
     for (std::size_t k = 0; k < frames; ++k) names[k] = std::to_string(k);
     return names;
+}
+
+std::vector<std::string> openfoam_frame_time_names(const MotionSpec& spec) {
+    std::vector<double> times(frame_count(spec));
+    for (std::size_t k = 0; k < times.size(); ++k) times[k] = frame_time(spec, k);
+    return openfoam_time_names(times);
+}
+
+bool is_openfoam_time_name(std::string_view name) {
+    double t = 0;
+    return name == "constant" || parse_double(name, t);
 }
 
 void check_openfoam_frame_outputs(const std::filesystem::path& out, const std::vector<std::string>& times,

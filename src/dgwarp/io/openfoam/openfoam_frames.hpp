@@ -14,10 +14,12 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam/openfoam.hpp"
+#include "dgwarp/motion/motion_spec.hpp"
 
 namespace dgwarp {
 
@@ -25,6 +27,13 @@ namespace dgwarp {
 /// the times as OpenFOAM names them (6 significant digits, more when two
 /// would share a name) when they differ, else the frame numbers 0, 1, ....
 std::vector<std::string> openfoam_time_names(std::span<const double> times);
+
+/// openfoam_time_names of the times of `spec`'s frames (frame_time).
+std::vector<std::string> openfoam_frame_time_names(const MotionSpec& spec);
+
+/// Whether `name` can name a frame's time folder: "constant" or a number
+/// (0, 0.001, 1e-05), as the C locale reads it.
+bool is_openfoam_time_name(std::string_view name);
 
 /// Checks, before the work, every file writing frames into the case folder
 /// `out` writes: the points of each time in `times` and, unless `out`'s
