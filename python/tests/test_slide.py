@@ -142,3 +142,11 @@ def test_a_patch_named_fixed_stays_held_after_unpickling_beside_one_that_slides(
     back = pickle.loads(pickle.dumps(plan))
     assert back.sliding_markers == ["fixedWalls"] and back.static_markers == plan.static_markers
     assert np.array_equal(back.deform(motion), plan.deform(motion))
+
+
+def test_a_cgns_meshs_symmetry_bcs_slide_and_a_pickled_mesh_keeps_them():
+    # lower: a BCSymmetryPlane; mirror: its family's type is one; right: a wall; top: no BC.
+    mesh = dgwarp.read(pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "cgns" / "typed-square.cgns")
+    assert dgwarp.prepare(mesh, ["right"]).sliding_markers == ["lower", "mirror"]
+    back = pickle.loads(pickle.dumps(mesh))
+    assert dgwarp.prepare(back, ["right"]).sliding_markers == ["lower", "mirror"]
