@@ -303,3 +303,50 @@ TEST(Untangle, CellsToUntangleAreTheInvertedOnesWithAFreeNodeOrThoseBelowTheTarg
     EXPECT_EQ(untangle(3, mesh.cells, orientation, std::vector<NodeId>{0, 1, 2}, repaired, lift).below_target_before,
               static_cast<std::int64_t>(poor.size()));
 }
+
+TEST(Untangle, GivenCellsAreRepairedAndOthersAtOrBelowTheTargetLeftAsTheyAre) {
+    // Two nodes of the grid pushed through their neighbours, far apart: asked to repair the first's cells,
+    // untangle leaves the second's (and every node near it) as they are, and counts both.
+    const Mesh mesh = make_grid_with_hole();  // 49 cells a side, hole 21 × 9
+    const std::vector<NodeId> fixed = marker_nodes_of(mesh);
+    const double h = 20.0 / 49;
+    const auto node_at = [&](int i, int j) {
+        for (std::size_t n = 0; n < mesh.num_points(); ++n)
+            if (std::abs(mesh.points[2 * n] - (-10 + i * h)) < 1e-9 && std::abs(mesh.points[2 * n + 1] - (-10 + j * h)) < 1e-9)
+                return static_cast<NodeId>(n);
+        return NodeId{-1};
+    };
+    const NodeId first = node_at(5, 5), second = node_at(43, 43);
+    ASSERT_GE(first, 0);
+    ASSERT_GE(second, 0);
+    std::vector<double> points = mesh.points;
+    points[2 * static_cast<std::size_t>(first)] += 1.6 * h;
+    points[2 * static_cast<std::size_t>(second)] += 1.6 * h;
+    const std::vector<std::int8_t> orientation = cell_orientations(mesh);
+    const std::vector<std::int64_t> all = cells_to_untangle(2, mesh.cells, orientation, fixed, points);
+    std::vector<std::int64_t> near_first;
+    for (std::int64_t c : all) {
+        const auto nodes = mesh.cells.nodes_of(static_cast<std::size_t>(c));
+        if (std::find(nodes.begin(), nodes.end(), first) != nodes.end()) near_first.push_back(c);
+    }
+    ASSERT_FALSE(near_first.empty());
+    ASSERT_LT(near_first.size(), all.size());
+    UntangleOptions only;
+    only.cells = near_first;
+    EXPECT_EQ(cells_to_untangle(2, mesh.cells, orientation, fixed, points, only), near_first);
+    const std::vector<double> before = points;
+    const UntangleReport r = untangle(2, mesh.cells, orientation, fixed, points, only);
+    EXPECT_EQ(r.inverted_before, static_cast<std::int64_t>(all.size()));
+    EXPECT_EQ(r.inverted_after, static_cast<std::int64_t>(all.size() - near_first.size()));
+    // Nothing within 12 cells of the second node moved.
+    for (std::size_t n = 0; n < mesh.num_points(); ++n)
+        if (std::hypot(mesh.points[2 * n] - mesh.points[2 * static_cast<std::size_t>(second)],
+                       mesh.points[2 * n + 1] - mesh.points[2 * static_cast<std::size_t>(second)]) < 12 * h) {
+            EXPECT_EQ(points[2 * n], before[2 * n]) << "node " << n;
+            EXPECT_EQ(points[2 * n + 1], before[2 * n + 1]) << "node " << n;
+        }
+    // A cell out of range is a MeshError.
+    const std::int64_t bad[] = {static_cast<std::int64_t>(mesh.cells.size())};
+    only.cells = bad;
+    EXPECT_THROW(untangle(2, mesh.cells, orientation, fixed, points, only), MeshError);
+}

@@ -138,13 +138,17 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
     const std::vector<std::int64_t> all_folded = sorted_unique(all_gather(comm, folded_ids));
 
     // Level 0: the nodes of the cells the repair sets out to mend on every
-    // process (the folded ones, and any other at or below zero quality with a
-    // free node, as over the whole mesh); level l + 1: the other nodes of the
-    // cells touching level l.
+    // process (the folded ones with a free node); level l + 1: the other
+    // nodes of the cells touching level l.
     std::vector<std::int64_t> seeds, mine;
+    UntangleReport census;  // this process's cells at or below zero quality, counted as one process counts them
     collectively(comm, [&] {
-        seeds = cells_to_untangle(mesh.dim, cells, own_orientation, fixed, points, last_resort_untangle_options());
+        UntangleOptions options = last_resort_untangle_options();
+        options.cells = folded;
+        seeds = cells_to_untangle(mesh.dim, cells, own_orientation, fixed, points, options, &census);
     });
+    // Over every process (each cell held by one): the report's counts of the whole mesh.
+    const std::int64_t inverted = sum(comm, census.inverted_before), below = sum(comm, census.below_target_before);
     for (std::int64_t c : seeds)
         for (NodeId n : cells.nodes_of(static_cast<std::size_t>(c))) mine.push_back(node_ids[n]);
     std::vector<std::vector<std::int64_t>> levels{sorted_unique(all_gather(comm, mine))};
@@ -231,6 +235,13 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
         // the held edge, the patch is grown and the repair run again.
         const int needed = std::max(part_repair_rings, moved_level + 1 + last_resort_max_rounds + 2);
         if (!report || needed <= rings || rings >= part_repair_max_rings) {
+            if (report) {
+                // The cells outside the patch do not change: counted before and after.
+                report->inverted_after += inverted - report->inverted_before;
+                report->inverted_before = inverted;
+                report->below_target_after += below - report->below_target_before;
+                report->below_target_before = below;
+            }
             if (report)
                 // This process's nodes where the repair put them.
                 for (std::size_t n = 0; n < mesh.num_points(); ++n) {

@@ -7,8 +7,8 @@
 //
 // The repair is local: round r of the last resort (at most
 // last_resort_max_rounds) moves the free nodes within r - 1 rings of the
-// cells it mends (the folded ones, and any other at or below zero quality
-// with a free node: cells_to_untangle), measures the cells around them and
+// cells it mends (the folded ones, and those its moves bring to or below zero
+// quality), measures the cells around them and
 // smooths the region with its neighbours; the patch holds every cell within
 // part_repair_rings rings of those (so that every node the repair can move or
 // read has all its cells), nodes and cells numbered in the whole mesh's
@@ -16,9 +16,9 @@
 // each node moves as one process's last resort over the whole mesh moves it
 // (tested bit for bit on a decomposed OpenFOAM case), unless the repair
 // reaches beyond part_repair_max_rings rings (then it is a valid repair of
-// its own, not one process's to the bit). Its report counts the patch's
-// cells: where cells at or below zero quality with every node fixed lie
-// outside it, one process's counts them too.
+// its own, not one process's to the bit). Its report counts every cell, as
+// one process's does (each cell held by one process; those outside the patch
+// do not change).
 #include <mpi.h>
 
 #include <cstdint>

@@ -15,7 +15,10 @@ std::optional<UntangleReport> run_last_resort(int dim, const ElementList& cells,
                                               std::span<const NodeId> fixed_nodes,
                                               std::span<const std::int64_t> step_folded, std::span<double> points) {
     if (step_folded.empty() || !cells_with_only_fixed_nodes(cells, fixed_nodes, step_folded).empty()) return {};
-    return untangle(dim, cells, orientations, fixed_nodes, points, last_resort_untangle_options());
+    // The cells the step folded, not others the input already had at or below zero quality.
+    UntangleOptions options = last_resort_untangle_options();
+    options.cells = step_folded;
+    return untangle(dim, cells, orientations, fixed_nodes, points, options);
 }
 
 }  // namespace dgwarp

@@ -26,7 +26,9 @@ UntangleOptions last_resort_untangle_options();
 /// valid before and inverted now, newly_inverted_cells) and none of them has
 /// every node fixed (cells_with_only_fixed_nodes: the boundary motion itself
 /// folds those, and no repair of the volume can help, so nothing runs).
-/// Returns the untangle report when it ran. Arguments as untangle's.
+/// It repairs those cells (UntangleOptions::cells), not the cells the input
+/// already had at or below zero quality elsewhere. Returns the untangle
+/// report when it ran. Arguments as untangle's.
 std::optional<UntangleReport> run_last_resort(int dim, const ElementList& cells,
                                               std::span<const std::int8_t> orientations,
                                               std::span<const NodeId> fixed_nodes,

@@ -271,10 +271,22 @@ std::vector<std::uint8_t> checked_fixed_flags(int dim, const ElementList& cells,
     return fixed;
 }
 
-/// The cells to repair (at or below the target, with a node free to move),
-/// ascending; counts the inverted and below-target cells in `report`.
+/// The cells to repair (at or below the target, with a node free to move;
+/// of `only` when it is not empty), ascending; counts the inverted and
+/// below-target cells in `report` (all of them).
 std::vector<std::int64_t> cells_to_repair(const ElementList& cells, std::span<const double> quality,
-                                          std::span<const std::uint8_t> fixed, double target, UntangleReport& report) {
+                                          std::span<const std::uint8_t> fixed, double target,
+                                          std::span<const std::int64_t> only, UntangleReport& report) {
+    std::vector<std::uint8_t> asked;
+    if (!only.empty()) {
+        asked.assign(cells.size(), 0);
+        for (std::int64_t c : only) {
+            if (c < 0 || static_cast<std::size_t>(c) >= cells.size())
+                throw MeshError("untangle: cell " + std::to_string(c) + " to repair is out of range (" +
+                                std::to_string(cells.size()) + " cells)");
+            asked[static_cast<std::size_t>(c)] = 1;
+        }
+    }
     auto movable_cell = [&](std::size_t c) {
         for (NodeId n : cells.nodes_of(c))
             if (!fixed[static_cast<std::size_t>(n)]) return true;
@@ -285,7 +297,7 @@ std::vector<std::int64_t> cells_to_repair(const ElementList& cells, std::span<co
         if (!(quality[c] > 0)) ++report.inverted_before;
         if (is_bad(quality[c], target)) {
             ++report.below_target_before;
-            if (movable_cell(c)) bad.push_back(static_cast<std::int64_t>(c));
+            if (movable_cell(c) && (asked.empty() || asked[c])) bad.push_back(static_cast<std::int64_t>(c));
         }
     }
     return bad;
@@ -421,7 +433,7 @@ void count_after(const Repair& r, std::span<const double> quality, std::vector<N
 
 std::vector<std::int64_t> cells_to_untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
                                             std::span<const NodeId> fixed_nodes, std::span<const double> points,
-                                            const UntangleOptions& options) {
+                                            const UntangleOptions& options, UntangleReport* census) {
     const std::vector<std::uint8_t> fixed =
         checked_fixed_flags(dim, cells, orientations, fixed_nodes, points.size(), options);
     const CellJudge judge(dim, cells, orientations, points);
@@ -429,7 +441,9 @@ std::vector<std::int64_t> cells_to_untangle(int dim, const ElementList& cells, s
     parallel_for(static_cast<std::int64_t>(cells.size()),
                  [&](std::int64_t c) { quality[static_cast<std::size_t>(c)] = judge.quality(c); });
     UntangleReport report;
-    return cells_to_repair(cells, quality, fixed, options.target_quality, report);
+    std::vector<std::int64_t> bad = cells_to_repair(cells, quality, fixed, options.target_quality, options.cells, report);
+    if (census) *census = report;
+    return bad;
 }
 
 UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
@@ -442,7 +456,7 @@ UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::
     std::vector<double> quality(cells.size());
     parallel_for(static_cast<std::int64_t>(cells.size()),
                  [&](std::int64_t c) { quality[static_cast<std::size_t>(c)] = judge.quality(c); });
-    std::vector<std::int64_t> bad = cells_to_repair(cells, quality, fixed, options.target_quality, report);
+    std::vector<std::int64_t> bad = cells_to_repair(cells, quality, fixed, options.target_quality, options.cells, report);
     report.inverted_after = report.inverted_before;
     report.below_target_after = report.below_target_before;
     report.min_quality_after = 1;

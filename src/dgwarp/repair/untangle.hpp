@@ -32,6 +32,10 @@ struct UntangleOptions {
                                 //   it stops early when two rounds in a row repair no cell and lift the worst by under 0.001
     int sweeps_per_round = 4;   // Gauss-Seidel sweeps over those nodes per round
     int max_steps = 40;         // search steps per node and sweep
+    /// The cells to repair (any order); empty: every cell at or below
+    /// target_quality. Given, the others at or below it are left as they are
+    /// unless a move of the repair reaches them (their nodes' neighbours).
+    std::span<const std::int64_t> cells{};
 };
 
 struct UntangleReport {
@@ -57,10 +61,12 @@ UntangleReport untangle(int dim, const ElementList& cells, std::span<const std::
                         const UntangleOptions& options = {});
 
 /// The cells untangle sets out to repair with the same arguments (ascending):
-/// those at or below options.target_quality with a node that is not fixed.
+/// those at or below options.target_quality with a node that is not fixed
+/// (of options.cells, when given). `census`, when given, gets the report's
+/// counts on entry (inverted_before, below_target_before: of every cell).
 /// Throws as untangle.
 std::vector<std::int64_t> cells_to_untangle(int dim, const ElementList& cells, std::span<const std::int8_t> orientations,
                                             std::span<const NodeId> fixed_nodes, std::span<const double> points,
-                                            const UntangleOptions& options = {});
+                                            const UntangleOptions& options = {}, UntangleReport* census = nullptr);
 
 }  // namespace dgwarp
