@@ -2,6 +2,7 @@
 #include "dgwarp/mpi/part_repair.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <vector>
 
 #include "dgwarp/core/error.hpp"
@@ -174,15 +175,13 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
     const auto d_ = static_cast<std::size_t>(dim);
     for (int rings = part_repair_rings;;) {
         grow(rings);
-        // The patch: the nodes up to level `rings`, the cells touching the levels below it.
-        std::vector<std::int64_t> inner;
-        for (int l = 0; l < rings; ++l) inner.insert(inner.end(), levels[static_cast<std::size_t>(l)].begin(),
-                                                     levels[static_cast<std::size_t>(l)].end());
-        inner = sorted_unique(std::move(inner));
+        // The patch: the nodes up to level `rings` (every level grown so far),
+        // the cells touching the levels below it (`inner`).
         Patch p;
-        for (int l = 0; l <= rings; ++l) p.nodes.insert(p.nodes.end(), levels[static_cast<std::size_t>(l)].begin(),
-                                                        levels[static_cast<std::size_t>(l)].end());
-        p.nodes = sorted_unique(std::move(p.nodes));
+        p.nodes = reached;
+        std::vector<std::int64_t> inner;
+        const std::vector<std::int64_t>& edge = levels[static_cast<std::size_t>(rings)];
+        std::set_difference(reached.begin(), reached.end(), edge.begin(), edge.end(), std::back_inserter(inner));
         // Every process's cells touching the inner levels, the coordinates of
         // its nodes in the patch, its boundary nodes there.
         std::vector<std::int64_t> held_ids, boundary_ids;
