@@ -36,18 +36,19 @@ std::filesystem::path method_output(const std::filesystem::path& out, Method met
     return p;
 }
 
-/// The run's plan (built or loaded); false, with the run's error set, when
-/// the method failed and the run goes on with the other methods.
+/// The run's plan (built or loaded; under mpirun, on every process:
+/// `distributed`); false, with the run's error set, when the method failed
+/// and the run goes on with the other methods.
 bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several, ProgressLine& progress,
-              MethodRun& run) {
+              MethodRun& run, std::shared_ptr<DistributedRun>& distributed) {
     try {
-        run.planned = plan_method(in, method, a.plan, progress, mpi_processes() > 1);
+        run.planned = plan_method(in, method, a.plan, progress, &distributed);
         return true;
     } catch (const InvalidResultError& e) {
         run.error = e.what();
         run.invalid = true;
     } catch (const Error& e) {
-        if (!several) throw;
+        if (!several || dynamic_cast<const UsageError*>(&e)) throw;
         run.error = e.what();
         run.invalid = run.failed = true;  // no mesh: the run is not valid
     }
@@ -59,24 +60,25 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
 /// error when `planned` is false, and then nothing more is done).
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 /// `beside`: with --foam-processors, the processor folders written with the whole case.
-MethodRun run_method(Inputs& in, MethodRun run, bool planned, const DeformArgs& a, bool several, bool text,
-                     const std::vector<std::string>& foam_times, const std::vector<OpenFoamProcessor>& beside,
-                     ProgressLine& progress, WarningPrinter& warnings) {
-    if (!planned) return run;
+void run_method(Inputs& in, MethodRun& run, bool planned, const DistributedRun* distributed, const DeformArgs& a,
+                bool several, bool text, const std::vector<std::string>& foam_times,
+                const std::vector<OpenFoamProcessor>& beside, ProgressLine& progress, WarningPrinter& warnings) {
+    if (!planned) return;
     const Method method = run.planned.method;
     const std::size_t frames = frame_count(in.spec);
     if (text && !several) print_plan(std::cout, in, run.planned, warnings);
     if (text && several)
-        for (const auto& w : plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w.text);
+        for (const auto& w : job_plan_warnings(run.planned)) warnings.print(std::string(method_name(method)) + ": " + w.text);
     const auto out = method_output(a.output, method, several);
     FrameOutputs outputs{out, frames, foam_times, beside};
     if (const std::string w = foam_times.empty() ? dropped_extras_warning(in.extras, in.args.mesh, out) : "";
         !w.empty() && !a.quiet)
         std::cerr << "warning: " << w << "\n";
-    RunOptions options;
+    MethodRunOptions options;
     options.frame.repair = a.untangle ? Repair::untangle : a.no_untangle ? Repair::none : Repair::method_default;
     options.frame.untangle_target = a.untangle_target;
-    options.stop_at_invalid = false;  // add_frame decides, with --allow-invalid
+    options.write_invalid = a.allow_invalid;
+    options.keep_step_errors = several;  // with --method all, the other methods go on
     RunCallbacks on;
     const std::string name(method_name(method));
     on.frame_started = [&](std::size_t k) {
@@ -89,50 +91,22 @@ MethodRun run_method(Inputs& in, MethodRun run, bool planned, const DeformArgs& 
         return progress.reporter(phase);
     };
     on.repair_started = [&](std::size_t) { progress.phase(name + ": untangling" + (a.untangle ? "" : " (last resort)")); };
-    // Errors of a step end this method's run (the others go on with --method
-    // all); errors anywhere else (reading a frame's motion, writing) end the command.
-    bool in_step = false;
-    std::vector<double> process_seconds;
-    on.step_running = [&](bool running) { in_step = running; };
     // One process: the plan's own step (run/deform_frame.hpp's step_frame,
     // DG-harmonic's guard on the frame's measure); spread over processes:
     // theirs, together.
-    if (run.planned.distributed)
-        on.step = [&](const ResolvedFrame& motion, std::span<double> out, const ProgressFn&) {
-            return mpi_deform(*run.planned.distributed, motion.motion, out, process_seconds);
+    std::vector<double> process_seconds;
+    if (distributed)
+        on.step = [&](const ResolvedFrame& motion, std::span<double> step_out, const ProgressFn&) {
+            return mpi_deform(*distributed, motion.motion, step_out, process_seconds);
         };
-    on.frame_done = [&](const FrameView& v) {
-        FrameResult f;
-        static_cast<FrameReport&>(f) = v.report;
-        f.frame = v.frame;
-        f.time = v.time;
+    run_method(in, run, outputs, options, on, [&](JobFrame& f) {
         f.process_seconds = process_seconds;
-        Stopwatch sw;
-        if (f.valid() || a.allow_invalid) {
-            f.output = write_frame(in, outputs, v.frame, v.points_array, v.cells.quality).string();
-            f.write_seconds = sw.lap();
-        }
         if (text && !several) {
             progress.clear();
             print_frame(in, f, frames, warnings);
         }
-        return add_frame(run, std::move(f), a.allow_invalid);
-    };
-    try {
-        run_frames(RunContext{in.mesh, in.spec, in.boundary, in.original, run.planned.plan, run.planned.options,
-                              run.planned.slide ? &*run.planned.slide : nullptr},
-                   options, on);
-    } catch (const InvalidResultError& e) {
-        if (!several || !in_step) throw;
-        run.error = e.what();
-        run.invalid = true;
-    } catch (const Error& e) {
-        if (!several || !in_step) throw;
-        run.error = e.what();
-        run.invalid = run.failed = true;
-    }
+    });
     progress.clear();
-    return run;
 }
 
 void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
@@ -150,7 +124,7 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
                           r.error.empty() ? "" : "-", "-", "-", "-", "-", "-");
             std::cout << line << (r.failed ? "failed: " : "") << r.error << "\n";
         } else {
-            const FrameResult& f = r.frames.back();
+            const JobFrame& f = r.frames.back();
             double deform_seconds = 0;
             for (const auto& fr : r.frames) deform_seconds += fr.step_seconds;
             std::string status = r.error.empty() ? "ok" : r.error;
@@ -173,7 +147,7 @@ void print_table(const Inputs& in, const std::vector<MethodRun>& runs) {
 void print_written(const std::vector<MethodRun>& runs) {
     for (const MethodRun& r : runs) {
         std::vector<std::string> files;
-        for (const FrameResult& f : r.frames)
+        for (const JobFrame& f : r.frames)
             if (!f.output.empty()) files.push_back(f.output);
         if (files.empty()) continue;
         std::cout << "wrote " << files.front();
@@ -245,7 +219,10 @@ void run_deform(const DeformArgs& given) {
     // The first method's plan, with the original's quality measured beside it.
     std::vector<MethodRun> runs(methods.size());
     std::vector<char> planned(methods.size(), 0);
-    measure_original_cells(in, [&] { planned[0] = plan_run(in, methods[0], a, several, progress, runs[0]); });
+    std::vector<std::shared_ptr<DistributedRun>> distributed(methods.size());
+    measure_original_cells(in, [&] {
+        planned[0] = plan_run(in, methods[0], a, several, progress, runs[0], distributed[0]);
+    });
 #ifdef __GLIBC__
     // The prepare's freed temporaries (the triangulation, the k-d trees,
     // the factorisation's work arrays: blocks under 2 MiB, and Eigen's from
@@ -276,9 +253,9 @@ void run_deform(const DeformArgs& given) {
         }
 
     for (std::size_t i = 0; i < methods.size(); ++i) {
-        if (i > 0) planned[i] = plan_run(in, methods[i], a, several, progress, runs[i]);
-        runs[i] = run_method(in, std::move(runs[i]), planned[i] != 0, a, several, text, foam_times, beside, progress,
-                             warnings);
+        if (i > 0) planned[i] = plan_run(in, methods[i], a, several, progress, runs[i], distributed[i]);
+        run_method(in, runs[i], planned[i] != 0, distributed[i].get(), a, several, text, foam_times, beside, progress,
+                   warnings);
     }
     if (text && several) {
         print_table(in, runs);
@@ -288,7 +265,7 @@ void run_deform(const DeformArgs& given) {
     std::vector<std::string> stale_warnings;
     if (!foam)
         for (const MethodRun& r : runs) {
-            if (std::none_of(r.frames.begin(), r.frames.end(), [](const FrameResult& f) { return !f.output.empty(); }))
+            if (std::none_of(r.frames.begin(), r.frames.end(), [](const JobFrame& f) { return !f.output.empty(); }))
                 continue;
             const std::vector<std::filesystem::path> stale =
                 stale_frames(method_output(a.output, r.planned.method, several), frames);
@@ -307,16 +284,16 @@ void run_deform(const DeformArgs& given) {
         j["output"] = given.output;
         j["processes"] = mpi_processes();
         for (const auto& r : runs)
-            for (const auto& w : plan_warnings(r.planned)) {
+            for (const auto& w : job_plan_warnings(r.planned)) {
                 const std::string name = several ? std::string(method_name(r.planned.method)) : std::string();
                 j["warnings"].push_back(several ? name + ": " + w.text : w.text);
                 j["warning_items"].push_back(warning_json(w, name));
             }
         if (several) {
             j["methods"] = nlohmann::json::array();
-            for (const auto& r : runs) j["methods"].push_back(run_json(in, r));
+            for (const auto& r : runs) j["methods"].push_back(run_json(r));
         } else {
-            const nlohmann::json run = run_json(in, runs[0]);
+            const nlohmann::json run = run_json(runs[0]);
             for (const auto& [key, value] : run.items()) j[key] = value;
         }
         for (const auto* texts : {&stale_warnings, &layout_warnings})

@@ -34,7 +34,7 @@ void run_prepare(const PrepareArgs& a) {
         inputs.insert(inputs.end(), {a.setup.mesh, a.setup.motion});
         check_output_file(a.output, inputs);
     });
-    PlannedMethod p;
+    JobPlan p;
     measure_original_cells(in, [&] { p = plan_method(in, method, "", progress); });
     Stopwatch sw;
     save_plan(a.output, p.plan);
@@ -42,8 +42,8 @@ void run_prepare(const PrepareArgs& a) {
     if (a.json) {
         nlohmann::json j = inputs_json(in, "prepare");
         j["method"] = method_name(method);
-        j["plan"] = plan_json(in, p);
-        for (const auto& w : plan_warnings(p)) {
+        j["plan"] = plan_json(p);
+        for (const auto& w : job_plan_warnings(p)) {
             j["warnings"].push_back(w.text);
             j["warning_items"].push_back(warning_json(w));
         }

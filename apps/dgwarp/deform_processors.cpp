@@ -123,11 +123,13 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     run.planned.options = method_options(a.setup);
     progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(processes) + " processes");
     Stopwatch sw;
-    std::int64_t outside_hull = 0;
+    std::shared_ptr<DistributedRun> distributed;
     collectively([&] {
-        run.planned.distributed =
-            mpi_prepare_own(method, 3, run.planned.options, in.mesh.points, job.part.point_ids, in.boundary.boundary,
-                            run.planned.plan, run.planned.process_prepare_seconds, outside_hull);
+        std::int64_t outside_hull = 0;
+        distributed = mpi_prepare_own(method, 3, run.planned.options, in.mesh.points, job.part.point_ids,
+                                      in.boundary.boundary, run.planned.plan, run.planned.process_prepare_seconds,
+                                      outside_hull);
+        run.planned.outside_hull_over_processes = outside_hull;
     });
     run.planned.prepare_seconds = sw.lap();
     progress.clear();
@@ -144,7 +146,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
                                    : ""));
     };
     on.frame_done = [&](const mpi::ProcessorFrame& done) {
-        FrameResult f;
+        JobFrame f;
         static_cast<FrameReport&>(f) = done.view.report;
         f.frame = done.view.frame;
         f.time = done.view.time;
@@ -160,7 +162,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         }
         return add_frame(run, std::move(f), a.allow_invalid);
     };
-    mpi::run_processor_job(world, in, job, *run.planned.distributed->own, options, on);
+    mpi::run_processor_job(world, in, job, *distributed->own, options, on);
     progress.clear();
 
     if (a.json && rank == 0) {
@@ -170,11 +172,11 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
         j["boundary"]["moving_nodes"] = job.moving_nodes;
         j["output"] = given_output;
         j["processes"] = processes;
-        for (const auto& w : plan_warnings(run.planned)) {
+        for (const auto& w : job_plan_warnings(run.planned)) {
             j["warnings"].push_back(w.text);
             j["warning_items"].push_back(warning_json(w));
         }
-        const nlohmann::json method_run = run_json(in, run);
+        const nlohmann::json method_run = run_json(run);
         for (const auto& [key, value] : method_run.items()) j[key] = value;
         j["valid"] = !run.invalid;
         std::cout << j.dump(2) << "\n";

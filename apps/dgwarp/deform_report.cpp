@@ -8,31 +8,7 @@
 
 namespace dgwarp::cli {
 
-std::string cell_list(const std::vector<std::int64_t>& cells) {
-    std::string s;
-    for (auto c : cells) s += (s.empty() ? "" : ", ") + std::to_string(c);
-    return s;
-}
-
-nlohmann::json frame_json(const FrameResult& f) {
-    nlohmann::json j = {{"frame", f.frame},
-                        {"time", f.time},
-                        {"output", f.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.output)}};
-    j.update(frame_report_json(f));
-    j["seconds"]["write"] = f.write_seconds;
-    if (!f.process_seconds.empty()) j["process_seconds"] = f.process_seconds;
-    return j;
-}
-
-nlohmann::json run_json(const Inputs& in, const MethodRun& r) {
-    nlohmann::json j = {{"method", method_name(r.planned.method)}, {"plan", plan_json(in, r.planned)},
-                        {"frames", nlohmann::json::array()}, {"valid", !r.invalid},
-                        {"error", r.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.error)}};
-    for (const auto& f : r.frames) j["frames"].push_back(frame_json(f));
-    return j;
-}
-
-void print_single_frame(const Inputs& in, const FrameResult& f) {
+void print_single_frame(const Inputs& in, const JobFrame& f) {
     std::cout << "quality (Knupp shape)   before      after\n" << std::fixed << std::setprecision(6);
     std::cout << "  min               " << std::setw(10) << in.original.summary.min << "  " << std::setw(10)
               << f.quality.min << "  (cell " << f.quality.worst_cell << ")\n";
@@ -72,7 +48,7 @@ void print_single_frame(const Inputs& in, const FrameResult& f) {
         std::cout << "increments " << f.step.substeps << " (each solved on the mesh the earlier ones moved)\n";
 }
 
-void print_frame_line(const FrameResult& f, bool timed) {
+void print_frame_line(const JobFrame& f, bool timed) {
     char time[32] = "";
     if (timed) std::snprintf(time, sizeof time, "t=%-10g ", f.time);  // a frames list has no times
     char line[200];
@@ -83,7 +59,7 @@ void print_frame_line(const FrameResult& f, bool timed) {
               << (f.output.empty() ? "" : "  -> " + f.output) << "\n";
 }
 
-void print_frame(const Inputs& in, const FrameResult& f, std::size_t frames, WarningPrinter& warnings) {
+void print_frame(const Inputs& in, const JobFrame& f, std::size_t frames, WarningPrinter& warnings) {
     for (const Warning& w : f.warnings)  // the motion's name the frame; the step's do not
         warnings.print(w.text, w.code == WarningCode::conflicting_shared_motions ? "frame " + std::to_string(f.frame) + ": "
                                                                                  : std::string());
@@ -93,26 +69,6 @@ void print_frame(const Inputs& in, const FrameResult& f, std::size_t frames, War
     } else {
         print_frame_line(f, in.spec.time.has_value());
     }
-}
-
-std::string invalid_frame_error(const FrameResult& bad) {
-    std::string e = std::to_string(bad.inverted_by_motion) + " inverted cell" + (bad.inverted_by_motion == 1 ? "" : "s") +
-                    " in frame " + std::to_string(bad.frame) + " (worst: " + cell_list(bad.worst_inverted) + ")";
-    if (bad.inverted_on_boundary > 0)
-        e += "; " + std::to_string(bad.inverted_on_boundary) + " of them ha" + (bad.inverted_on_boundary == 1 ? "s" : "ve") +
-             " every node on the boundary (worst: " + cell_list(bad.worst_on_boundary) +
-             "): the boundary motion itself folds them, which no method can repair; check the "
-             "motion (nodes a moving marker shares with a static one follow the moving one)";
-    return e;
-}
-
-bool add_frame(MethodRun& run, FrameResult f, bool allow_invalid) {
-    const bool invalid = f.inverted_by_motion > 0;
-    run.frames.push_back(std::move(f));
-    if (!invalid) return true;
-    run.invalid = true;
-    run.error = invalid_frame_error(run.frames.back());
-    return allow_invalid;
 }
 
 }  // namespace dgwarp::cli

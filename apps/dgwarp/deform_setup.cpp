@@ -32,15 +32,6 @@ std::string method_list() {
     return s;
 }
 
-// A loaded plan fixes its method's options: one given on the command line
-// that differs from the plan's is a mistake, not silently dropped.
-void refuse_conflict(const SetupArgs& args, const std::string& plan_file, const std::string& flag, bool differs,
-                     const std::string& planned) {
-    if (args.given.count(flag) && differs)
-        throw CLI::ValidationError(flag, plan_file + " was prepared with " + flag + " " + planned +
-                                             "; prepare it again with the option, or drop it");
-}
-
 std::int64_t moving_count(const BoundarySet& b) {
     std::int64_t n = 0;
     for (auto m : b.moving) n += m;
@@ -172,84 +163,42 @@ Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
     return in;
 }
 
-PlanSummary planned_summary(const PlannedMethod& p) {
-    PlanSummary s = plan_summary(p.plan);
-    // Under mpirun: rank 0's plan's, with the nodes outside the hull of every process.
-    if (p.distributed) s.outside_hull = mpi_outside_hull(*p.distributed);
-    return s;
-}
-
-PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
-                          bool distributed) {
-    PlannedMethod p;
-    p.method = method;
-    p.options = method_options(in.args);
-    p.plan_file = plan_file;
-    Stopwatch sw;
-    if (distributed && !plan_file.empty())
+JobPlan plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
+                    std::shared_ptr<DistributedRun>* distributed) {
+    PlanRequest r;
+    r.method = method;
+    r.options = method_options(in.args);
+    r.plan_file = plan_file;
+    r.method_given = in.args.method_given;
+    for (const std::string& flag : in.args.given) r.given.insert(flag.substr(2));
+    if (!distributed || mpi_processes() < 2) {
+        // The options of another method refused before the work (a plan file's method once it is read).
+        if (plan_file.empty()) refuse_other_methods_options(in.args, method);
+        const auto phase = [&](const std::string& what) { progress.phase(what); };
+        JobPlan p = plan_job(in, r, phase, progress.reporter("preparing " + std::string(method_name(method))));
+        if (!plan_file.empty()) refuse_other_methods_options(in.args, p.method);
+        progress.clear();
+        return p;
+    }
+    if (!plan_file.empty())
         throw CLI::ValidationError("--plan", "a saved plan is for one process: under mpirun each process prepares "
                                              "its own part (run without --plan)");
-    if (distributed) {
-        refuse_other_methods_options(in.args, method);
-        progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(mpi_processes()) +
-                       " processes");
-        // A decomposed OpenFOAM case on as many processes as processors: each
-        // process deforms its processor's points (the solver's decomposition).
-        std::vector<std::vector<NodeId>> node_parts;
-        if (in.extras.openfoam && in.extras.openfoam->processors.size() == static_cast<std::size_t>(mpi_processes()))
-            for (const OpenFoamProcessor& processor : in.extras.openfoam->processors) {
-                node_parts.push_back(processor.points);
-                if (!in.planar) continue;
-                // A 2D case: the 2D nodes of the processor's points.
-                for (NodeId& v : node_parts.back()) v = in.planar->node_2d[static_cast<std::size_t>(v)];
-                std::sort(node_parts.back().begin(), node_parts.back().end());
-                node_parts.back().erase(std::unique(node_parts.back().begin(), node_parts.back().end()),
-                                        node_parts.back().end());
-            }
-        p.distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options, node_parts, p.plan,
-                                    p.process_prepare_seconds);
-    } else if (!plan_file.empty()) {
-        progress.phase("loading " + plan_file);
-        Plan loaded = load_plan(plan_file, in.mesh.points, in.boundary.boundary);
-        const Method planned = dgwarp::plan_method(loaded);
-        if (in.args.method_given && planned != method)
-            throw CLI::ValidationError("--plan", plan_file + " is a " + std::string(method_name(planned)) +
-                                                     " plan; it cannot be used with --method " +
-                                                     std::string(method_name(method)));
-        p.method = planned;
-        // The plan's options are the ones used; one given here that differs is a mistake.
-        // The guard acts at step time: the run's value, and the mesh's cells it measures.
-        const MethodOptions& asked = p.options;
-        const MethodOptions in_plan = options_with_plan(loaded, asked);
-        for (const MethodOption& row : method_option_table)
-            if (row.method == planned && row.kept_by_plan)
-                refuse_conflict(in.args, plan_file, "--" + std::string(row.name),
-                                option_text(row, asked) != option_text(row, in_plan), option_text(row, in_plan));
-        p.options = in_plan;
-        // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
-        attach_frame_guard(loaded, in.mesh, in.boundary.boundary, p.options);
-        refuse_other_methods_options(in.args, p.method);
-        p.plan = std::move(loaded);
-    } else {
-        refuse_other_methods_options(in.args, method);
-        const std::string phase = "preparing " + std::string(method_name(method));
-        progress.phase(phase);
-        p.plan = prepare_for_frames(method, in.mesh, in.boundary.boundary, p.options, progress.reporter(phase));
-    }
+    refuse_other_methods_options(in.args, method);
+    progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(mpi_processes()) +
+                   " processes");
+    JobPlan p;
+    p.method = method;
+    p.options = r.options;
+    Stopwatch sw;
+    // A decomposed OpenFOAM case on as many processes as processors: each
+    // process deforms its processor's points (the solver's decomposition).
+    *distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options,
+                               processor_node_parts(in, mpi_processes()), p.plan, p.process_prepare_seconds);
+    p.outside_hull_over_processes = mpi_outside_hull(**distributed);
     if (!in.boundary.slides.empty()) p.slide = prepare_slide_pass(in.mesh, in.boundary, p.options);
     p.prepare_seconds = sw.lap();
     progress.clear();
     return p;
-}
-
-std::vector<Warning> plan_warnings(const PlannedMethod& p) {
-    const PlanSummary s = planned_summary(p);
-    if (s.outside_hull == 0) return {};
-    return {{WarningCode::outside_hull, std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
-            " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
-            std::string(method_name(p.method)) +
-            " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary "
-            "(far field, walls), it should be a marker of the mesh", "", s.outside_hull}};
 }
 
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings) {
@@ -277,8 +226,8 @@ void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, Warni
     for (const auto& w : in.boundary.warnings) warnings.print(w.text);
 }
 
-void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings) {
-    const PlanSummary s = planned_summary(p);
+void print_plan(std::ostream& out, const Inputs& in, const JobPlan& p, WarningPrinter& warnings) {
+    const PlanSummary s = job_plan_summary(p);
     out << "plan      " << method_name(p.method);
     if (s.graph_simplices_used > 0) {
         if (s.graph_simplices) out << ", " << *s.graph_simplices << " graph simplices";
@@ -295,51 +244,7 @@ void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, War
         out << ")";
     }
     out << "\n";
-    for (const auto& w : plan_warnings(p)) warnings.print(w.text);
-}
-
-nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
-    nlohmann::json j = nlohmann::json::object();
-    for (const MethodOption& row : method_option_table) {
-        if (row.tuning) continue;
-        const std::string key(row.report_key);
-        const OptionValue v = row.get(o);
-        switch (row.kind) {
-            case OptionKind::number: j[key] = v.number; break;
-            case OptionKind::whole_number: j[key] = static_cast<std::int64_t>(v.number); break;
-            case OptionKind::number_or_auto: j[key] = v.automatic ? nlohmann::json("auto") : nlohmann::json(v.number); break;
-            case OptionKind::word: j[key] = std::string(v.word); break;
-            case OptionKind::on_off: j[key] = v.number != 0; break;
-        }
-    }
-    // A plan file's weighting is known only once it is loaded.
-    if (!weights_known) j["dg_idw_weights"] = nullptr;
-    return j;
-}
-
-nlohmann::json cyclic_pairs_json(const std::vector<std::pair<std::string, std::string>>& pairs) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const auto& [a, b] : pairs) out.push_back({a, b});
-    return out;
-}
-
-nlohmann::json boundary_json(const Inputs& in) {
-    const auto& b = in.boundary.boundary;
-    return {{"nodes", b.nodes.size()},
-            {"moving_nodes", moving_count(b)},
-            {"moving_markers", in.boundary.moving_markers},
-            {"static_markers", in.boundary.static_markers},
-            {"sliding_markers", in.boundary.sliding_markers},
-            {"sliding_nodes", in.boundary.slides.size()},
-            {"sliding_by_type", in.sliding_by_type},
-            {"cyclic_markers", in.boundary.cyclic_markers},
-            {"cyclic_by_type", cyclic_pairs_json(in.coupled_by_type)},
-            {"planar", in.planar ? nlohmann::json{{"plane_markers", in.planar->plane_markers},
-                                                  {"nodes", in.mesh.num_points()},
-                                                  {"cells", in.mesh.cells.size()},
-                                                  {"normal", in.planar->normal},
-                                                  {"thickness", in.planar->thickness}}
-                                 : nlohmann::json(nullptr)}};
+    for (const auto& w : job_plan_warnings(p)) warnings.print(w.text);
 }
 
 nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
@@ -354,28 +259,6 @@ nlohmann::json inputs_json(const Inputs& in, const std::string& command) {
             {"original_quality", quality_json(in.original.summary)},
             {"warnings", warning_texts_json(in.boundary.warnings)},
             {"warning_items", warning_items_json(in.boundary.warnings)}};
-}
-
-nlohmann::json plan_json(const Inputs&, const PlannedMethod& p) {
-    const PlanSummary s = planned_summary(p);
-    nlohmann::json phases = nlohmann::json::object();
-    for (const auto& [name, seconds] : s.phase_seconds) phases[name] = seconds;
-    const auto* dg_idw = std::get_if<DgIdwPlan>(&p.plan);
-    nlohmann::json j = {{"method", method_name(p.method)},
-            {"file", p.plan_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.plan_file)},
-            {"dg_idw_weights", dg_idw ? nlohmann::json(weighting_name(dg_idw->options.weighting)) : nlohmann::json(nullptr)},
-            {"graph_simplices", s.graph_simplices ? nlohmann::json(*s.graph_simplices) : nlohmann::json(nullptr)},
-            {"graph_simplices_used", s.graph_simplices_used},
-            {"outside_hull", s.outside_hull},
-            {"shared_graph_vertices", s.shared_vertices},
-            {"coarse_points", s.coarse_points},
-            {"floored_weights", s.floored_weights},
-            {"bytes", plan_memory_bytes(p.plan)},
-            {"seconds", p.prepare_seconds},
-            {"phase_seconds", phases}};
-    // Under mpirun: every process's prepare time (the counts above are rank 0's plan's).
-    if (p.distributed) j["process_seconds"] = p.process_prepare_seconds;
-    return j;
 }
 
 }  // namespace dgwarp::cli

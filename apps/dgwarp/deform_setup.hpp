@@ -17,6 +17,7 @@
 #include "dgwarp/io/motion_file.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/job/job_inputs.hpp"
+#include "dgwarp/job/job_plan.hpp"
 #include "dgwarp/mesh/planar_case.hpp"
 #include "dgwarp/mesh/mesh.hpp"
 #include "dgwarp/methods/method.hpp"
@@ -90,47 +91,22 @@ struct Inputs : JobInputs {
 Inputs read_motion_inputs(const SetupArgs& args, ProgressLine& progress,
                           const std::function<void(const MotionSpec&)>& check_outputs = {});
 
-/// A method's plan for the inputs: built, or loaded from `plan_file` (a DG-IDW
-/// or DG-harmonic plan file) and checked to fit the mesh and boundary.
-struct PlannedMethod {
-    Method method = Method::dg_idw;
-    MethodOptions options;
-    std::string plan_file;  // "" when built
-    Plan plan;              // under mpirun: rank 0's own (docs/MPI.md)
-    double prepare_seconds = 0;
-    /// Under mpirun (`distributed`): the run on every process, and each
-    /// process's prepare seconds; null and empty otherwise.
-    std::shared_ptr<DistributedRun> distributed;
-    std::vector<double> process_prepare_seconds;
-    /// With sliding markers: their first pass (run/slide_pass.hpp), on this process.
-    std::optional<SlidePass> slide;
-};
-
-/// `distributed`: prepare on every process of an mpirun (mpi_session.hpp);
-/// a plan file is then refused.
-PlannedMethod plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
-                          bool distributed = false);
-
-/// plan_summary of p's plan; under mpirun, outside_hull is summed over the processes.
-PlanSummary planned_summary(const PlannedMethod& p);
-
-/// Warnings about a plan: volume nodes outside the Delaunay graph's hull
-/// (DG-IDW and DGM extrapolate there).
-std::vector<Warning> plan_warnings(const PlannedMethod& p);
+/// A method's plan for the inputs (job/job_plan.hpp's plan_job with the
+/// command line's options): built, or loaded from `plan_file`; the options
+/// of another method than the one that runs refused. With `distributed`
+/// under mpirun: prepared on every process (mpi_session.hpp), *distributed
+/// its run, and the plan rank 0's own (docs/MPI.md); a plan file is then refused.
+JobPlan plan_method(const Inputs& in, Method method, const std::string& plan_file, ProgressLine& progress,
+                    std::shared_ptr<DistributedRun>* distributed = nullptr);
 
 /// Lines about the mesh, motion and boundary; the boundary's warnings through `warnings`.
 void print_inputs(std::ostream& out, const Inputs& in, std::size_t frames, WarningPrinter& warnings);
 /// Lines about the plan and its prepare time; its warnings through `warnings`.
-void print_plan(std::ostream& out, const Inputs& in, const PlannedMethod& p, WarningPrinter& warnings);
+void print_plan(std::ostream& out, const Inputs& in, const JobPlan& p, WarningPrinter& warnings);
 
-/// The JSON report's `boundary` object (docs/JSON.md).
-nlohmann::json boundary_json(const Inputs& in);
 /// The JSON report's common part (docs/JSON.md).
 /// Its `options` are the command line's (options_json); with a loaded plan,
 /// the plan's are the ones used: replace them with options_json(p.options, true).
 nlohmann::json inputs_json(const Inputs& in, const std::string& command);
-/// The `options` object of the JSON reports; dg_idw_weights is null unless `weights_known`.
-nlohmann::json options_json(const MethodOptions& o, bool weights_known);
-nlohmann::json plan_json(const Inputs& in, const PlannedMethod& p);
 
 }  // namespace dgwarp::cli

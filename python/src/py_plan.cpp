@@ -120,13 +120,7 @@ void refuse_slides_with_comm(const ResolvedBoundary& b) {
 
 /// What `dgwarp deform` warns about a plan (volume nodes outside the graph's hull).
 void warn_plan(const PyPlan& p) {
-    const PlanSummary s = plan_summary(plan_of(p));
-    if (s.outside_hull == 0) return;
-    warn(std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
-         " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
-         std::string(method_name(plan_method(plan_of(p)))) +
-         " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary (far "
-         "field, walls), it should be a marker of the mesh");
+    for (const Warning& w : plan_warnings(plan_method(plan_of(p)), plan_summary(plan_of(p)))) warn(w.text);
 }
 
 std::shared_ptr<PyPlan> prepare_plan(std::shared_ptr<PyMesh> mesh, py::handle moving, py::handle static_markers,

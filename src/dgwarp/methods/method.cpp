@@ -234,4 +234,15 @@ PlanSummary plan_summary(const Plan& plan) {
     return s;
 }
 
+std::vector<Warning> plan_warnings(Method method, const PlanSummary& s) {
+    if (s.outside_hull == 0) return {};
+    return {{WarningCode::outside_hull,
+             std::to_string(s.outside_hull) + " volume node" + (s.outside_hull == 1 ? " is" : "s are") +
+                 " outside the Delaunay graph's hull (the convex hull of the boundary nodes); " +
+                 std::string(method_name(method)) +
+                 " extrapolates the motion of the nearest hull simplex there. If the domain has an outer boundary "
+                 "(far field, walls), it should be a marker of the mesh",
+             "", s.outside_hull}};
+}
+
 }  // namespace dgwarp

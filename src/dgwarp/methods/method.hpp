@@ -23,6 +23,7 @@
 #include <variant>
 #include <vector>
 
+#include "dgwarp/core/warning.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
 #include "dgwarp/methods/dg_idw.hpp"
@@ -127,5 +128,9 @@ struct PlanSummary {
     std::vector<std::pair<std::string, double>> phase_seconds;
 };
 PlanSummary plan_summary(const Plan& plan);
+
+/// The warnings about `method`'s plan summed up in `s`: the volume nodes
+/// outside the graph's hull (DG-IDW and DGM extrapolate there), if any.
+std::vector<Warning> plan_warnings(Method method, const PlanSummary& s);
 
 }  // namespace dgwarp

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "dgwarp/methods/option_table.hpp"
+
 namespace dgwarp {
 
 nlohmann::json quality_json(const QualitySummary& q) {
@@ -85,6 +87,24 @@ nlohmann::json frame_report_json(const FrameReport& f) {
             {"seconds", {{"deform", f.step_seconds}, {"untangle", f.repair_seconds}, {"quality", f.quality_seconds}}},
             {"warnings", warning_texts_json(f.warnings)},
             {"warning_items", warning_items_json(f.warnings)}};
+}
+
+nlohmann::json options_json(const MethodOptions& o, bool weights_known) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const MethodOption& row : method_option_table) {
+        if (row.tuning) continue;
+        const std::string key(row.report_key);
+        const OptionValue v = row.get(o);
+        switch (row.kind) {
+            case OptionKind::number: j[key] = v.number; break;
+            case OptionKind::whole_number: j[key] = static_cast<std::int64_t>(v.number); break;
+            case OptionKind::number_or_auto: j[key] = v.automatic ? nlohmann::json("auto") : nlohmann::json(v.number); break;
+            case OptionKind::word: j[key] = std::string(v.word); break;
+            case OptionKind::on_off: j[key] = v.number != 0; break;
+        }
+    }
+    if (!weights_known) j["dg_idw_weights"] = nullptr;
+    return j;
 }
 
 }  // namespace dgwarp

@@ -7,6 +7,7 @@
 
 #include "dgwarp/core/warning.hpp"
 #include "dgwarp/methods/dg_harmonic_guard.hpp"
+#include "dgwarp/methods/method.hpp"
 #include "dgwarp/quality/mesh_quality.hpp"
 #include "dgwarp/repair/untangle.hpp"
 #include "dgwarp/run/deform_frame.hpp"
@@ -39,5 +40,10 @@ nlohmann::json warning_items_json(const std::vector<Warning>& warnings);
 /// "quality") and warnings (texts and items). The CLI's `frames[k]` adds
 /// "frame", "time", "output" and the write's seconds.
 nlohmann::json frame_report_json(const FrameReport& f);
+
+/// The reports' `options` object: every method option but the tuning ones,
+/// by its report key (methods/option_table.hpp); dg_idw_weights is null
+/// unless `weights_known` (a plan file's weighting is known once it is loaded).
+nlohmann::json options_json(const MethodOptions& o, bool weights_known);
 
 }  // namespace dgwarp
