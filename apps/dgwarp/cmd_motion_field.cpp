@@ -11,7 +11,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/io/number_text.hpp"
 #include "dgwarp/io/openfoam/openfoam.hpp"
-#include "dgwarp/run/slide_pass.hpp"
+#include "dgwarp/job/boundary_displacement.hpp"
 #include "output_files.hpp"
 
 namespace dgwarp::cli {
@@ -71,32 +71,12 @@ void run_motion_field(const MotionFieldArgs& a) {
         throw FormatError(a.setup.mesh + ": a pointDisplacement field lists values in the patches' point order, " +
                           "so MESH must be the OpenFOAM case it is for (convert the mesh first: dgwarp convert " +
                           a.setup.mesh + " CASE/; a decomposed case: reconstructPar first)");
-    ResolvedFrame frame = resolve_frame(in.mesh, in.spec, in.boundary, static_cast<std::size_t>(a.frame));
-    // Sliding nodes: the motion the first pass gives them (docs/MOTION.md).
-    if (!in.boundary.slides.empty())
-        slide_motion(prepare_slide_pass(in.mesh, in.boundary), frame.motion);
+    const BoundaryDisplacement d = boundary_displacement(in, static_cast<std::size_t>(a.frame));
     WarningPrinter warnings(!a.quiet);
     for (const auto& w : in.boundary.warnings) warnings.print(w.text);
-    for (const auto& w : frame.warnings) warnings.print(w.text);
-    std::vector<double> displacement = node_displacements(in.mesh, in.boundary.boundary, frame.motion);
-    BoundarySet boundary = in.boundary.boundary;
-    if (in.planar) {
-        // A 2D case: the 3D nodes' displacements, each its 2D node's, and both twins of each boundary node.
-        std::vector<double> moved = in.mesh.points, lifted;
-        for (std::size_t i = 0; i < moved.size(); ++i) moved[i] += displacement[i];
-        const std::span<const double> points = output_points(in, moved, lifted);
-        displacement.assign(points.begin(), points.end());
-        for (std::size_t i = 0; i < displacement.size(); ++i) displacement[i] -= in.file_mesh.points[i];
-        BoundarySet twins;
-        for (std::size_t v = 0; v < in.planar->node_2d.size(); ++v) {
-            const NodeId j = in.planar->node_2d[v];
-            const auto it = std::lower_bound(boundary.nodes.begin(), boundary.nodes.end(), j);
-            if (it == boundary.nodes.end() || *it != j) continue;
-            twins.nodes.push_back(static_cast<NodeId>(v));
-            twins.moving.push_back(boundary.moving[static_cast<std::size_t>(it - boundary.nodes.begin())]);
-        }
-        boundary = std::move(twins);
-    }
+    for (const auto& w : d.warnings) warnings.print(w.text);
+    const BoundarySet& boundary = d.boundary;
+    const std::vector<double>& displacement = d.displacement;
     const Mesh& mesh = output_mesh(in);
     if (csv) {
         write_csv(file, mesh, boundary, displacement);
