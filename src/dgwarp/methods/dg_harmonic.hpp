@@ -39,6 +39,7 @@
 
 #include "dgwarp/core/progress.hpp"
 #include "dgwarp/methods/mesh_fingerprint.hpp"
+#include "dgwarp/methods/plan_core.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -139,27 +140,19 @@ struct HarmonicFactors {
 /// Everything deform_dg_harmonic needs, as plain arrays.
 struct DgHarmonicGuard;
 
-struct DgHarmonicPlan {
-    int dim = 3;
+/// Its core (plan_core.hpp): the boundary set, the coarse graph's shared
+/// vertices, and per mesh node the coarse simplex of a volume node or -1 - b.
+struct DgHarmonicPlan : GraphPlanCore {
     MeshFingerprint mesh;
     DgHarmonicOptions options;                  // as prepare used them (resolved_options; they shape every array below)
-    std::vector<NodeId> boundary_nodes;         // BoundarySet::nodes (sorted)
-    std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
     /// Per coarse graph vertex: b >= 0 when it is a boundary point that moves
     /// with the motion of boundary index b; -1 - b when it is a static
     /// boundary point; for interior (unknown) vertices, ignored (see
     /// num_boundary_vertices: boundary vertices come first).
     std::vector<std::int32_t> vertex_motion;
     std::int32_t num_boundary_vertices = 0;
-    /// Coarse graph vertices standing for several boundary nodes, as in
-    /// DgIdwPlan (rule of graph_vertex_motion.hpp).
-    std::vector<std::int32_t> shared_offsets{0};
-    std::vector<std::int32_t> shared_members;
     /// num_simplices × (dim + 1) coarse graph vertex ids.
     std::vector<std::int32_t> simplices;
-    /// Per mesh node: the coarse simplex of a volume node, or -1 - b for the
-    /// boundary node of boundary index b.
-    std::vector<std::int32_t> node_simplex;
     /// num_volume_nodes × (dim + 1), ascending node-id order of the volume
     /// nodes: barycentric coordinates in the node's coarse simplex, clamped
     /// at 0 and scaled to sum 1 (a node outside the hull takes the nearest
@@ -175,8 +168,6 @@ struct DgHarmonicPlan {
     /// attach_dg_harmonic_guard). Shared, read-only: copies of a plan share it.
     std::shared_ptr<const DgHarmonicGuard> guard;
 
-    std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
-    std::int64_t num_volume_nodes() const { return num_points() - static_cast<std::int64_t>(boundary_nodes.size()); }
     std::int64_t num_vertices() const { return static_cast<std::int64_t>(vertex_motion.size()); }
     std::int64_t num_unknowns() const { return solve.num_unknowns(); }
 };

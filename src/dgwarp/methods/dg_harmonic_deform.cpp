@@ -13,7 +13,6 @@
 #include "dgwarp/methods/dg_harmonic.hpp"
 #include "dgwarp/methods/dg_harmonic_solve.hpp"
 #include "dgwarp/methods/dg_harmonic_step.hpp"
-#include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
 
@@ -142,7 +141,7 @@ DgHarmonicStepReport deform_dg_harmonic_with(const DgHarmonicPlan& plan, std::sp
     check_step_arrays("DG-harmonic", plan.num_points(), plan.dim, plan.boundary_nodes, points, motion, out);
     if (plan.dim == 2) run<2>(plan, points, motion, out, kernel, progress);
     else run<3>(plan, points, motion, out, kernel, progress);
-    return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
+    return {conflicting_shared_vertices(plan, motion)};
 }
 
 }  // namespace dgwarp

@@ -361,10 +361,8 @@ void check_plan_fits(const DgHarmonicPlan& plan, std::span<const double> points,
 }
 
 std::size_t plan_bytes(const DgHarmonicPlan& p) {
-    return sizeof(DgHarmonicPlan) + bytes_of(p.boundary_nodes) + bytes_of(p.boundary_moving) +
-           bytes_of(p.vertex_motion) + bytes_of(p.shared_offsets) + bytes_of(p.shared_members) +
-           bytes_of(p.simplices) + bytes_of(p.node_simplex) + bytes_of(p.node_barycentric) + factor_bytes(p.solve) +
-           (p.guard ? guard_bytes(*p.guard) : 0);
+    return sizeof(DgHarmonicPlan) + core_bytes(p) + bytes_of(p.vertex_motion) + bytes_of(p.simplices) +
+           bytes_of(p.node_barycentric) + factor_bytes(p.solve) + (p.guard ? guard_bytes(*p.guard) : 0);
 }
 
 }  // namespace dgwarp

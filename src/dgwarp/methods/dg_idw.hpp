@@ -41,6 +41,7 @@
 
 #include "dgwarp/core/progress.hpp"
 #include "dgwarp/methods/mesh_fingerprint.hpp"
+#include "dgwarp/methods/plan_core.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -99,8 +100,10 @@ struct DgIdwPrepareStats {
 };
 
 /// Everything deform_dg_idw needs, as plain arrays (see plan_file.hpp to save it).
-struct DgIdwPlan {
-    int dim = 3;
+/// Its core (plan_core.hpp): the boundary set, shared vertices, and per mesh
+/// node the graph simplex of a volume node (those holding a volume node,
+/// numbered in order of first use by the nodes) or -1 - b.
+struct DgIdwPlan : GraphPlanCore {
     MeshFingerprint mesh;                     // the mesh and boundary set it was built for
     /// L used when options.length_scale == 0: min(D, G / max(a_translation, a_rotation)),
     /// with the a's given to prepare_dg_idw. D is the bounding-box diagonal of
@@ -119,8 +122,6 @@ struct DgIdwPlan {
     /// The options prepare was given: the weighting node_coefficients were
     /// made with, and the a's and L that deform uses.
     DgIdwOptions options;
-    std::vector<NodeId> boundary_nodes;       // BoundarySet::nodes (sorted)
-    std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
     /// num_simplices × (dim + 1): for each corner of each graph simplex that
     /// holds a volume node (numbered in order of first use by the nodes;
     /// moving corners first in each row, else in CGAL's order), b >= 0
@@ -129,15 +130,6 @@ struct DgIdwPlan {
     /// vertex ids themselves are not needed to deform, so they are folded away:
     /// one dependent load less per corner.)
     std::vector<std::int32_t> simplex_motion;
-    /// Graph vertices standing for several boundary nodes (same coordinates):
-    /// group g holds boundary indices shared_members[shared_offsets[g] .. shared_offsets[g+1]).
-    /// Rule: such a vertex moves if any of its nodes moves, with the motion of
-    /// its first moving node (lowest boundary index).
-    std::vector<std::int32_t> shared_offsets{0};
-    std::vector<std::int32_t> shared_members;
-    /// Per mesh node (num_points): the graph simplex of a volume node, or -1 - b
-    /// for the boundary node with boundary index b.
-    std::vector<std::int32_t> node_simplex;
     /// num_volume_nodes × (dim + 1), in ascending node-id order of the volume
     /// nodes: per simplex corner, qhat_k (moving) or -m u_k / P (static), see
     /// above; with continuous weighting u_k^2 and m u_k are multiplied by the
@@ -147,9 +139,6 @@ struct DgIdwPlan {
     /// 0 everywhere else.
     std::vector<double> node_coefficients;
     DgIdwPrepareStats stats;
-
-    std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
-    std::int64_t num_volume_nodes() const { return num_points() - static_cast<std::int64_t>(boundary_nodes.size()); }
 };
 
 /// Builds the plan for `points` (num_points × dim, the original coordinates)

@@ -18,7 +18,6 @@
 #include "dgwarp/methods/dg_idw.hpp"
 #include "dgwarp/methods/dg_idw_checks.hpp"
 #include "dgwarp/methods/dg_idw_step.hpp"
-#include "dgwarp/methods/graph_vertex_motion.hpp"
 #include "dgwarp/methods/rotation_series.hpp"
 
 namespace dgwarp {
@@ -132,7 +131,7 @@ DgIdwStepReport deform_dg_idw_bounded(const DgIdwPlan& plan, std::span<const dou
     if (plan.dim == 2) run_dim.template operator()<2>();
     else run_dim.template operator()<3>();
     moved.finish();
-    return {count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion)};
+    return {conflicting_shared_vertices(plan, motion)};
 }
 
 }  // namespace dgwarp

@@ -8,9 +8,7 @@
 namespace dgwarp {
 
 std::size_t plan_bytes(const DgIdwPlan& plan) {
-    return sizeof(DgIdwPlan) + bytes_of(plan.boundary_nodes) + bytes_of(plan.boundary_moving) +
-           bytes_of(plan.simplex_motion) + bytes_of(plan.shared_offsets) +
-           bytes_of(plan.shared_members) + bytes_of(plan.node_simplex) + bytes_of(plan.node_coefficients);
+    return sizeof(DgIdwPlan) + core_bytes(plan) + bytes_of(plan.simplex_motion) + bytes_of(plan.node_coefficients);
 }
 
 void check_plan_fits(const DgIdwPlan& plan, std::span<const double> points, const BoundarySet& boundary) {

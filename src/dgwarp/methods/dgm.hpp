@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "dgwarp/core/progress.hpp"
+#include "dgwarp/methods/plan_core.hpp"
 #include "dgwarp/motion/node_motion.hpp"
 
 namespace dgwarp {
@@ -68,10 +69,9 @@ struct DgmPrepareStats {
 };
 
 /// Everything deform_dgm needs, as plain arrays.
-struct DgmPlan {
-    int dim = 3;
-    std::vector<NodeId> boundary_nodes;         // BoundarySet::nodes (sorted)
-    std::vector<std::uint8_t> boundary_moving;  // BoundarySet::moving
+/// Its core (plan_core.hpp): the boundary set, shared vertices, and per mesh
+/// node the graph simplex of a volume node or -1 - b.
+struct DgmPlan : GraphPlanCore {
     /// num_simplices × (dim + 1) graph vertex ids, positively oriented in the
     /// original configuration.
     std::vector<std::int32_t> simplices;
@@ -79,24 +79,12 @@ struct DgmPlan {
     /// -1 - b when it is static (b its first boundary index). Its original
     /// position is that of boundary node boundary_nodes[b].
     std::vector<std::int32_t> vertex_motion;
-    /// Graph vertices standing for several boundary nodes (same coordinates):
-    /// group g holds boundary indices shared_members[shared_offsets[g] .. shared_offsets[g+1]).
-    std::vector<std::int32_t> shared_offsets{0};
-    std::vector<std::int32_t> shared_members;
-    /// Per mesh node (num_points): the graph simplex of a volume node, or -1 - b
-    /// for the boundary node with boundary index b.
-    std::vector<std::int32_t> node_simplex;
     /// num_volume_nodes × (dim + 1): barycentric coordinates e_k of each volume
     /// node in its simplex (corner order of `simplices`), in ascending node-id
     /// order of the volume nodes; they sum to 1. Negative for a node outside
     /// the graph's hull, which is extrapolated from the hull simplex facing it.
     std::vector<double> node_barycentric;
     DgmPrepareStats stats;
-
-    std::int64_t num_points() const { return static_cast<std::int64_t>(node_simplex.size()); }
-    std::int64_t num_volume_nodes() const {
-        return num_points() - static_cast<std::int64_t>(boundary_nodes.size());
-    }
 };
 
 /// Builds the plan for `points` (num_points × dim, the original coordinates)

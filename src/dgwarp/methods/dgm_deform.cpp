@@ -10,7 +10,6 @@
 #include "dgwarp/methods/method_inputs.hpp"
 #include "dgwarp/methods/dgm.hpp"
 #include "dgwarp/methods/dgm_detail.hpp"
-#include "dgwarp/methods/graph_vertex_motion.hpp"
 
 namespace dgwarp {
 
@@ -195,8 +194,7 @@ DgmStepReport deform_dgm(const DgmPlan& plan, std::span<const double> points, co
     check_sizes(plan, points, motion, out);
     const int dim = plan.dim;
     DgmStepReport report;
-    report.conflicting_shared_vertices =
-        count_conflicting_shared_vertices(plan.shared_offsets, plan.shared_members, plan.boundary_moving, motion);
+    report.conflicting_shared_vertices = conflicting_shared_vertices(plan, motion);
 
     // One step: the graph moved by the whole motion.
     const std::vector<std::int32_t> source = graph_motion_source(plan);

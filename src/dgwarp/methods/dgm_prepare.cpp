@@ -78,9 +78,8 @@ DgmPlan prepare_dgm(int dim, std::span<const double> points, const BoundarySet& 
 }
 
 std::size_t plan_bytes(const DgmPlan& plan) {
-    return sizeof(DgmPlan) + bytes_of(plan.boundary_nodes) + bytes_of(plan.boundary_moving) +
-           bytes_of(plan.simplices) + bytes_of(plan.vertex_motion) + bytes_of(plan.shared_offsets) +
-           bytes_of(plan.shared_members) + bytes_of(plan.node_simplex) + bytes_of(plan.node_barycentric);
+    return sizeof(DgmPlan) + core_bytes(plan) + bytes_of(plan.simplices) + bytes_of(plan.vertex_motion) +
+           bytes_of(plan.node_barycentric);
 }
 
 }  // namespace dgwarp

@@ -159,11 +159,10 @@ void check_indices(const std::filesystem::path& path, const DgHarmonicPlan& p, c
     const std::uint64_t vertices = c[vertex_motion_at];
     const auto num_simplices = static_cast<std::int64_t>(c[simplices_at] / corners);
     const auto nbv = static_cast<std::int64_t>(h.num_boundary_vertices);
-    check_boundary_arrays(path,
-                          {p.boundary_nodes, p.boundary_moving, p.node_simplex, p.shared_offsets, p.shared_members,
-                           off[boundary_nodes_at], off[boundary_moving_at], off[node_simplex_at], off[shared_offsets_at],
-                           off[shared_members_at]},
-                          h.num_points, num_simplices);
+    check_core_arrays(path, p,
+                      {off[boundary_nodes_at], off[boundary_moving_at], off[node_simplex_at], off[shared_offsets_at],
+                       off[shared_members_at]},
+                      h.num_points, num_simplices);
     check_range(path, off[vertex_motion_at], "a vertex motion index",
                 std::span(p.vertex_motion).first(static_cast<std::size_t>(nbv)), -static_cast<std::int64_t>(nb),
                 static_cast<std::int64_t>(nb));

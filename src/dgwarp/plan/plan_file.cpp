@@ -196,12 +196,10 @@ void check_indices(const std::filesystem::path& path, const DgIdwPlan& plan, con
     const std::uint64_t corners = h.dim + 1;
     const auto num_boundary = static_cast<std::int64_t>(h.counts[boundary_nodes_at]);
     const auto num_simplices = static_cast<std::int64_t>(h.counts[simplex_motion_at] / corners);
-    plan_detail::check_boundary_arrays(
-        path,
-        {plan.boundary_nodes, plan.boundary_moving, plan.node_simplex, plan.shared_offsets, plan.shared_members,
-         offsets[boundary_nodes_at], offsets[boundary_moving_at], offsets[node_simplex_at], offsets[shared_offsets_at],
-         offsets[shared_members_at]},
-        h.num_points, num_simplices);
+    plan_detail::check_core_arrays(path, plan,
+                                   {offsets[boundary_nodes_at], offsets[boundary_moving_at], offsets[node_simplex_at],
+                                    offsets[shared_offsets_at], offsets[shared_members_at]},
+                                   h.num_points, num_simplices);
     check_range(path, offsets[simplex_motion_at], "a corner motion index", plan.simplex_motion, -num_boundary,
                 num_boundary);
     for (std::size_t k = 0; k < plan.simplex_motion.size(); ++k)

@@ -76,34 +76,34 @@ std::vector<std::byte> with_recomputed_checksum(std::span<const std::byte> bytes
     return fixed;
 }
 
-void check_boundary_arrays(const std::filesystem::path& path, const BoundaryArrays& a, std::int64_t num_points,
-                           std::int64_t num_simplices) {
+void check_core_arrays(const std::filesystem::path& path, const GraphPlanCore& a, const CoreOffsets& at,
+                       std::int64_t num_points, std::int64_t num_simplices) {
     const auto num_boundary = static_cast<std::int64_t>(a.boundary_nodes.size());
-    check_range(path, a.boundary_nodes_at, "a boundary node id", a.boundary_nodes, 0, num_points);
+    check_range(path, at.boundary_nodes_at, "a boundary node id", a.boundary_nodes, 0, num_points);
     for (std::size_t b = 0; b < a.boundary_moving.size(); ++b)
         if (a.boundary_moving[b] > 1)
-            fail(path, a.boundary_moving_at + b, "a moving flag 0 or 1", std::to_string(a.boundary_moving[b]));
-    check_range(path, a.shared_members_at, "a boundary index", a.shared_members, 0, num_boundary);
-    check_range(path, a.node_simplex_at, "a simplex id or boundary index", a.node_simplex, -num_boundary, num_simplices);
+            fail(path, at.boundary_moving_at + b, "a moving flag 0 or 1", std::to_string(a.boundary_moving[b]));
+    check_range(path, at.shared_members_at, "a boundary index", a.shared_members, 0, num_boundary);
+    check_range(path, at.node_simplex_at, "a simplex id or boundary index", a.node_simplex, -num_boundary, num_simplices);
     // Boundary nodes sorted, and node_simplex marks exactly them (deform counts
     // volume nodes from this), shared groups well formed.
     for (std::size_t b = 0; b < a.boundary_nodes.size(); ++b) {
         if (b > 0 && a.boundary_nodes[b] <= a.boundary_nodes[b - 1])
-            fail(path, a.boundary_nodes_at + 4 * b, "sorted boundary node ids", std::to_string(a.boundary_nodes[b]));
+            fail(path, at.boundary_nodes_at + 4 * b, "sorted boundary node ids", std::to_string(a.boundary_nodes[b]));
         const auto node = static_cast<std::size_t>(a.boundary_nodes[b]);
         if (a.node_simplex[node] != -1 - static_cast<std::int32_t>(b))
-            fail(path, a.node_simplex_at + 4 * node,
+            fail(path, at.node_simplex_at + 4 * node,
                  "boundary index " + std::to_string(b) + " encoded as " + std::to_string(-1 - static_cast<std::int64_t>(b)),
                  std::to_string(a.node_simplex[node]));
     }
     if (std::count_if(a.node_simplex.begin(), a.node_simplex.end(), [](std::int32_t s) { return s < 0; }) !=
         num_boundary)
-        fail(path, a.node_simplex_at, std::to_string(num_boundary) + " boundary entries in node_simplex", "another count");
+        fail(path, at.node_simplex_at, std::to_string(num_boundary) + " boundary entries in node_simplex", "another count");
     const auto num_shared = static_cast<std::int32_t>(a.shared_members.size());
     const auto& so = a.shared_offsets;
     for (std::size_t g = 0; g < so.size(); ++g)
         if ((g == 0 && so[0] != 0) || (g > 0 && so[g] < so[g - 1]) || (g + 1 == so.size() && so[g] != num_shared))
-            fail(path, a.shared_offsets_at + 4 * g,
+            fail(path, at.shared_offsets_at + 4 * g,
                  "nondecreasing shared-vertex offsets from 0 to " + std::to_string(num_shared), std::to_string(so[g]));
 }
 

@@ -18,6 +18,7 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/hash.hpp"
 #include "dgwarp/methods/dg_harmonic.hpp"
+#include "dgwarp/methods/plan_core.hpp"
 
 namespace dgwarp::plan_detail {
 
@@ -116,20 +117,17 @@ std::vector<std::uint64_t> read_plan_arrays(const PlanSource& source, std::span<
 std::vector<std::byte> with_recomputed_checksum(std::span<const std::byte> bytes, std::size_t header_bytes,
                                                 std::span<const std::size_t> element_sizes);
 
-/// The checks every plan's boundary arrays need: boundary nodes sorted and in
-/// [0, num_points), moving flags 0 or 1, node_simplex marking exactly them
-/// (-1 - b for boundary index b), the rest in [0, num_simplices), and the
-/// shared-vertex groups well formed (offsets from 0 to members' size,
-/// members boundary indices).
-struct BoundaryArrays {
-    std::span<const std::int32_t> boundary_nodes;
-    std::span<const std::uint8_t> boundary_moving;
-    std::span<const std::int32_t> node_simplex;
-    std::span<const std::int32_t> shared_offsets, shared_members;
+/// The checks every plan's core (methods/plan_core.hpp) needs: boundary
+/// nodes sorted and in [0, num_points), moving flags 0 or 1, node_simplex
+/// marking exactly them (-1 - b for boundary index b), the rest in
+/// [0, num_simplices), and the shared-vertex groups well formed (offsets
+/// from 0 to members' size, members boundary indices). `CoreOffsets`: where
+/// each array starts in the file, for the messages.
+struct CoreOffsets {
     std::uint64_t boundary_nodes_at, boundary_moving_at, node_simplex_at, shared_offsets_at, shared_members_at;
 };
-void check_boundary_arrays(const std::filesystem::path& path, const BoundaryArrays& a, std::int64_t num_points,
-                           std::int64_t num_simplices);
+void check_core_arrays(const std::filesystem::path& path, const GraphPlanCore& a, const CoreOffsets& at,
+                       std::int64_t num_points, std::int64_t num_simplices);
 
 /// DG-harmonic plan files (dg_harmonic_plan_file.cpp): their magic, writer,
 /// loader and checksum fixer.
