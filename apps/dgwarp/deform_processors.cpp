@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "dgwarp/core/atomic_write.hpp"
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/stopwatch.hpp"
 #include "dgwarp/mpi/agreement.hpp"
@@ -41,46 +42,16 @@ void collectively(F&& phase) {
     });
 }
 
-// The arguments every process needs, sent by rank 0 (mpi_run_everywhere).
-nlohmann::json processor_args_json(const DeformArgs& a, const std::string& given_output) {
-    const SetupArgs& s = a.setup;
-    return {{"mesh", s.mesh},
-            {"motion", s.motion},
-            {"method", s.method},
-            {"method_given", s.method_given},
-            {"given", std::vector<std::string>(s.given.begin(), s.given.end())},
-            {"zone", s.zone},
-            {"threads", s.threads},
-            {"options", s.options},
-            {"output", a.output},
-            {"given_output", given_output},
-            {"json", a.json},
-            {"allow_invalid", a.allow_invalid},
-            {"no_untangle", a.no_untangle},
-            {"foam_time", a.foam_time},
-            {"quiet", a.quiet}};
-}
+}  // namespace
 
-DeformArgs processor_args_from_json(const nlohmann::json& j, std::string& given_output) {
-    DeformArgs a;
-    SetupArgs& s = a.setup;
-    s.mesh = j.at("mesh");
-    s.motion = j.at("motion");
-    s.method = j.at("method");
-    s.method_given = j.at("method_given");
-    for (const auto& g : j.at("given")) s.given.insert(g.get<std::string>());
-    s.zone = j.at("zone");
-    s.threads = j.at("threads");
-    s.options = j.at("options").get<std::map<std::string, std::string, std::less<>>>();
-    a.output = j.at("output");
-    given_output = j.at("given_output");
-    a.json = j.at("json");
-    a.allow_invalid = j.at("allow_invalid");
-    a.no_untangle = j.at("no_untangle");
-    a.foam_time = j.at("foam_time");
-    a.quiet = j.at("quiet");
-    return a;
-}
+// The arguments every process needs, sent by rank 0 (mpi_run_everywhere):
+// every field of both structs.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SetupArgs, mesh, motion, method, method_given, given, zone, su2_config,
+                                   rename_markers, writable_for, threads, options)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DeformArgs, setup, output, plan, json, allow_invalid, untangle, no_untangle,
+                                   untangle_target, foam_time, foam_processors, quiet, sync)
+
+namespace {
 
 void deform_per_processor(const DeformArgs& a, const std::string& given_output) {
     const int rank = mpi_rank(), processes = mpi_processes();
@@ -88,6 +59,7 @@ void deform_per_processor(const DeformArgs& a, const std::string& given_output) 
     ProgressLine progress(text);
     WarningPrinter warnings(text);
     use_threads(a.setup.threads);
+    set_sync_writes(a.sync);  // every process's outputs, as rank 0's
     const Method method = chosen_methods(a.setup, false).front();
     collectively([&] {
         if (rank == 0) refuse_other_methods_options(a.setup, method);
@@ -201,16 +173,15 @@ bool deforms_per_processor(const DeformArgs& a, const std::vector<Method>& metho
 }
 
 void run_deform_per_processor(const DeformArgs& a, const std::string& given_output) {
-    mpi_run_everywhere(processor_args_json(a, given_output).dump());
+    mpi_run_everywhere(nlohmann::json{{"args", a}, {"given_output", given_output}}.dump());
     deform_per_processor(a, given_output);
 }
 
 int run_everywhere(const std::string& payload) {
     // Rank 0 reports every error; the other processes only exit with its code.
     try {
-        std::string given_output;
-        const DeformArgs a = processor_args_from_json(nlohmann::json::parse(payload), given_output);
-        deform_per_processor(a, given_output);
+        const nlohmann::json j = nlohmann::json::parse(payload);
+        deform_per_processor(j.at("args").get<DeformArgs>(), j.at("given_output").get<std::string>());
         return exit_ok;
     } catch (const CLI::ParseError&) {
         return exit_usage;
