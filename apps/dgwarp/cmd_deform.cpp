@@ -60,9 +60,10 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
 /// error when `planned` is false, and then nothing more is done).
 /// `foam_times`: for an OpenFOAM case output, each frame's time folder (foam_output.hpp); empty otherwise.
 /// `beside`: with --foam-processors, the processor folders written with the whole case.
-void run_method(Inputs& in, MethodRun& run, bool planned, const DistributedRun* distributed, const DeformArgs& a,
-                bool several, bool text, const std::vector<std::string>& foam_times,
-                const std::vector<OpenFoamProcessor>& beside, ProgressLine& progress, WarningPrinter& warnings) {
+void deform_with_method(Inputs& in, MethodRun& run, bool planned, const DistributedRun* distributed,
+                        const DeformArgs& a, bool several, bool text, const std::vector<std::string>& foam_times,
+                        const std::vector<OpenFoamProcessor>& beside, ProgressLine& progress,
+                        WarningPrinter& warnings) {
     if (!planned) return;
     const Method method = run.planned.method;
     const std::size_t frames = frame_count(in.spec);
@@ -99,7 +100,7 @@ void run_method(Inputs& in, MethodRun& run, bool planned, const DistributedRun* 
         on.step = [&](const ResolvedFrame& motion, std::span<double> step_out, const ProgressFn&) {
             return mpi_deform(*distributed, motion.motion, step_out, process_seconds);
         };
-    run_method(in, run, outputs, options, on, [&](JobFrame& f) {
+    dgwarp::run_method(in, run, outputs, options, on, [&](JobFrame& f) {
         f.process_seconds = process_seconds;
         if (text && !several) {
             progress.clear();
@@ -254,8 +255,8 @@ void run_deform(const DeformArgs& given) {
 
     for (std::size_t i = 0; i < methods.size(); ++i) {
         if (i > 0) planned[i] = plan_run(in, methods[i], a, several, progress, runs[i], distributed[i]);
-        run_method(in, runs[i], planned[i] != 0, distributed[i].get(), a, several, text, foam_times, beside, progress,
-                   warnings);
+        deform_with_method(in, runs[i], planned[i] != 0, distributed[i].get(), a, several, text, foam_times, beside,
+                           progress, warnings);
     }
     if (text && several) {
         print_table(in, runs);
