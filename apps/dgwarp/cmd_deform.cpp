@@ -234,24 +234,18 @@ void run_deform(const DeformArgs& given) {
     WarningPrinter warnings(text);
     if (text) print_inputs(std::cout, in, frames, warnings);
     // A decomposed case in its usual layout: which mesh this run reads and writes.
-    std::vector<std::string> layout_warnings;
+    std::vector<Warning> job_warnings;
     std::vector<OpenFoamProcessor> beside;
     if (a.foam_processors) {
         progress.phase("reading the processor folders");
         beside = read_processors_beside(a.setup.mesh, output_mesh(in).num_points());
         progress.clear();
     }
-    if (reads_openfoam(a.setup.mesh) && !a.foam_processors)
-        if (const auto folders = openfoam_unread_processor_folders(a.setup.mesh); !folders.empty()) {
-            layout_warnings.push_back(
-                a.setup.mesh + " holds constant/polyMesh and " + std::to_string(folders.size()) + " processor folder" +
-                (folders.size() > 1 ? "s (" + folders.front().filename().string() + " ... " +
-                                          folders.back().filename().string() + ")"
-                                    : " (" + folders.front().filename().string() + ")") +
-                ": this run reads and writes the whole mesh (constant/polyMesh) only; a parallel run reads the "
-                "processor folders, which it does not change (--foam-processors writes them too)");
-            warnings.print(layout_warnings.back());
-        }
+    if (auto w = unread_processors_warning(a.setup.mesh, a.foam_processors)) {
+        w->text += " (--foam-processors writes them too)";
+        warnings.print(w->text);
+        job_warnings.push_back(std::move(*w));
+    }
 
     for (std::size_t i = 0; i < methods.size(); ++i) {
         if (i > 0) planned[i] = plan_run(in, methods[i], a, several, progress, runs[i], distributed[i]);
@@ -263,20 +257,14 @@ void run_deform(const DeformArgs& given) {
         print_written(runs);
     }
     // A shorter series than an earlier run's: its other frames are still there.
-    std::vector<std::string> stale_warnings;
     if (!foam)
         for (const MethodRun& r : runs) {
             if (std::none_of(r.frames.begin(), r.frames.end(), [](const JobFrame& f) { return !f.output.empty(); }))
                 continue;
-            const std::vector<std::filesystem::path> stale =
-                stale_frames(method_output(a.output, r.planned.method, several), frames);
-            if (stale.empty()) continue;
-            stale_warnings.push_back(
-                stale.front().string() + (stale.size() > 1 ? " ... " + stale.back().string() : std::string()) + " (" +
-                std::to_string(stale.size()) + " file" + (stale.size() > 1 ? "s" : "") +
-                ") are left from an earlier run, not written by this one (" + std::to_string(frames) + " frame" +
-                (frames > 1 ? "s" : "") + "); remove them if they are not wanted");
-            warnings.print(stale_warnings.back());
+            if (auto w = stale_frames_warning(method_output(a.output, r.planned.method, several), frames)) {
+                warnings.print(w->text);
+                job_warnings.push_back(std::move(*w));
+            }
         }
 
     if (a.json) {
@@ -297,11 +285,10 @@ void run_deform(const DeformArgs& given) {
             const nlohmann::json run = run_json(runs[0]);
             for (const auto& [key, value] : run.items()) j[key] = value;
         }
-        for (const auto* texts : {&stale_warnings, &layout_warnings})
-            for (const auto& w : *texts) {
-                j["warnings"].push_back(w);
-                j["warning_items"].push_back(warning_json({WarningCode::other, w}));
-            }
+        for (const Warning& w : job_warnings) {
+            j["warnings"].push_back(w.text);
+            j["warning_items"].push_back(warning_json(w));
+        }
         j["valid"] = std::none_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.invalid; });
         std::cout << j.dump(2) << "\n";
     }

@@ -73,3 +73,35 @@ TEST(FrameOutputs, A2dCasesFramesAreWrittenIn3dAsFilesAndAsTimeFolders) {
     const auto lifted = output_points(in, std::span<const double>(given), buffer);
     EXPECT_TRUE(std::equal(lifted.begin(), lifted.end(), back.points.begin()));
 }
+
+TEST(FrameOutputs, TheFramesOfAnEarlierLongerSeriesAreAWarningWithTheirCount) {
+    const fs::path dir = scratch_dir();
+    EXPECT_FALSE(stale_frames_warning(dir / "m.vtu", 2));
+    for (int k = 0; k < 5; ++k) std::ofstream(frame_path(dir / "m.vtu", k, 5)) << "x";
+    const auto w = stale_frames_warning(dir / "m.vtu", 3);
+    ASSERT_TRUE(w);
+    EXPECT_EQ(w->code, WarningCode::stale_frames);
+    EXPECT_EQ(w->count, 2);
+    EXPECT_EQ(w->text, (dir / "m_0003.vtu").string() + " ... " + (dir / "m_0004.vtu").string() +
+                           " (2 files) are left from an earlier run, not written by this one (3 frames); remove them "
+                           "if they are not wanted");
+    EXPECT_FALSE(stale_frames_warning(dir / "m.vtu", 5));
+}
+
+TEST(FrameOutputs, ADecomposedCaseReadWholeSaysItsProcessorFoldersStayAsTheyWere) {
+    const fs::path dir = scratch_dir();
+    const fs::path c = dir / "case";
+    fs::copy(openfoam_case("mixed"), c, fs::copy_options::recursive);
+    EXPECT_FALSE(unread_processors_warning(c.string(), false));  // no processor folder
+    for (const char* p : {"processor0", "processor1"})
+        fs::copy(openfoam_case("mixed-decomposed") / p, c / p, fs::copy_options::recursive);
+    const auto w = unread_processors_warning(c.string(), false);
+    ASSERT_TRUE(w);
+    EXPECT_EQ(w->code, WarningCode::processors_unchanged);
+    EXPECT_EQ(w->count, 2);
+    EXPECT_NE(w->text.find("holds constant/polyMesh and 2 processor folders (processor0 ... processor1)"),
+              std::string::npos)
+        << w->text;
+    EXPECT_FALSE(unread_processors_warning(c.string(), true));  // written with the whole case
+    EXPECT_FALSE(unread_processors_warning((dir / "m.su2").string(), false));
+}

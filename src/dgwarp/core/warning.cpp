@@ -15,6 +15,8 @@ std::string_view warning_code_name(WarningCode code) {
         case WarningCode::outside_hull: return "outside-hull";
         case WarningCode::already_inverted: return "already-inverted";
         case WarningCode::cyclic_mismatch: return "cyclic-mismatch";
+        case WarningCode::stale_frames: return "stale-frames";
+        case WarningCode::processors_unchanged: return "processors-unchanged";
         case WarningCode::other: return "other";
     }
     return "other";

@@ -24,6 +24,8 @@ enum class WarningCode {
     outside_hull,                // volume nodes outside the Delaunay graph's hull (count)
     already_inverted,            // cells inverted or degenerate in the input (count; element: the worst)
     cyclic_mismatch,             // other markers move a cyclic node and its image differently (count: groups; node: one)
+    stale_frames,                // frame files of an earlier, longer series left beside a job's output (count: files)
+    processors_unchanged,        // a decomposed case's processor folders the job does not write (count: folders)
     other,                       // a warning of a program built on the library, with text only
 };
 

@@ -31,6 +31,34 @@ std::vector<std::filesystem::path> stale_frames(const std::filesystem::path& out
     return stale;
 }
 
+std::optional<Warning> stale_frames_warning(const std::filesystem::path& out, std::size_t frames) {
+    const std::vector<std::filesystem::path> stale = stale_frames(out, frames);
+    if (stale.empty()) return std::nullopt;
+    const auto count = static_cast<std::int64_t>(stale.size());
+    Warning w(WarningCode::stale_frames,
+              stale.front().string() + (count > 1 ? " ... " + stale.back().string() : std::string()) + " (" +
+                  std::to_string(count) + " file" + (count > 1 ? "s" : "") +
+                  ") are left from an earlier run, not written by this one (" + std::to_string(frames) + " frame" +
+                  (frames > 1 ? "s" : "") + "); remove them if they are not wanted",
+              "", count);
+    return w;
+}
+
+std::optional<Warning> unread_processors_warning(const std::string& case_path, bool processors_written) {
+    if (processors_written || !reads_openfoam(case_path)) return std::nullopt;
+    const std::vector<std::filesystem::path> folders = openfoam_unread_processor_folders(case_path);
+    if (folders.empty()) return std::nullopt;
+    const std::string names = folders.size() > 1 ? "s (" + folders.front().filename().string() + " ... " +
+                                                       folders.back().filename().string() + ")"
+                                                 : " (" + folders.front().filename().string() + ")";
+    return Warning(WarningCode::processors_unchanged,
+                   case_path + " holds constant/polyMesh and " + std::to_string(folders.size()) + " processor folder" +
+                       names +
+                       ": this run reads and writes the whole mesh (constant/polyMesh) only; a parallel run reads the "
+                       "processor folders, which it does not change",
+                   "", static_cast<std::int64_t>(folders.size()));
+}
+
 MeshFields deformation_fields(const Mesh& original, std::span<const double> new_points,
                               const std::vector<double>& quality, const std::vector<double>& ratio) {
     const std::size_t n = original.num_points(), dim = static_cast<std::size_t>(original.dim);

@@ -5,10 +5,12 @@
 // in a time folder (io/openfoam/openfoam_frames.hpp). As the file's mesh: a 2D
 // case's frames in 3D (job_inputs.hpp's output_points).
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "dgwarp/core/warning.hpp"
 #include "dgwarp/io/mesh_io.hpp"
 #include "dgwarp/io/openfoam/openfoam.hpp"
 #include "dgwarp/job/job_inputs.hpp"
@@ -25,6 +27,16 @@ std::filesystem::path frame_path(const std::filesystem::path& out, std::size_t f
 /// k = frames, frames + 1, ... while they exist; from k = 0 for one frame,
 /// which is written to `out` itself). Empty when there are none.
 std::vector<std::filesystem::path> stale_frames(const std::filesystem::path& out, std::size_t frames);
+
+/// The warning about stale_frames(out, frames), if any: "FIRST ... LAST (N
+/// files) are left from an earlier run, not written by this one (...)".
+std::optional<Warning> stale_frames_warning(const std::filesystem::path& out, std::size_t frames);
+
+/// The warning about an OpenFOAM case `case_path` in decomposePar's usual
+/// layout (constant/polyMesh and processor folders) read and written whole:
+/// its processor folders are not written (a parallel run reads them), unless
+/// `processors_written`. None for another input.
+std::optional<Warning> unread_processors_warning(const std::string& case_path, bool processors_written);
 
 /// Point data "displacement" (3 components; z = 0 in 2D) and cell data
 /// "quality" and, when `ratio` is not empty, "quality_ratio".
