@@ -48,7 +48,7 @@ bool plan_run(const Inputs& in, Method method, const DeformArgs& a, bool several
         run.error = e.what();
         run.invalid = true;
     } catch (const Error& e) {
-        if (!several || dynamic_cast<const UsageError*>(&e)) throw;
+        if (!several) throw;
         run.error = e.what();
         run.invalid = run.failed = true;  // no mesh: the run is not valid
     }

@@ -87,10 +87,8 @@ void run_motion_field(const MotionFieldArgs& a) {
         write_file_atomically(file, [&](std::ostream& out) { out << text; });
     }
     if (a.quiet) return;
-    std::size_t moving = 0;
-    for (auto m : boundary.moving) moving += m;
     std::cout << "wrote " << file.string() << ": displacement of " << boundary.nodes.size()
-              << " boundary nodes (" << moving << " moving)\nmoving markers:";
+              << " boundary nodes (" << moving_count(boundary) << " moving)\nmoving markers:";
     for (const auto& m : in.boundary.moving_markers) std::cout << " " << m;
     std::cout << "\n";
 }

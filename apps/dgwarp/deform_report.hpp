@@ -1,8 +1,8 @@
 #pragma once
-// What `dgwarp deform` reports about its frames and methods (text and
-// --json, docs/JSON.md): shared by the one-process run (cmd_deform.cpp) and
-// the run where each process reads its own processor folder
-// (deform_processors.cpp).
+// `dgwarp deform`'s arguments and its text report of frames (the --json
+// objects are the library's: job/method_run.hpp): shared by the one-process
+// run (cmd_deform.cpp) and the run where each process reads its own
+// processor folder (deform_processors.cpp).
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>

@@ -32,11 +32,6 @@ std::string method_list() {
     return s;
 }
 
-std::int64_t moving_count(const BoundarySet& b) {
-    std::int64_t n = 0;
-    for (auto m : b.moving) n += m;
-    return n;
-}
 
 }  // namespace
 
@@ -171,32 +166,30 @@ JobPlan plan_method(const Inputs& in, Method method, const std::string& plan_fil
     r.plan_file = plan_file;
     r.method_given = in.args.method_given;
     for (const std::string& flag : in.args.given) r.given.insert(flag.substr(2));
-    if (!distributed || mpi_processes() < 2) {
-        // The options of another method refused before the work (a plan file's method once it is read).
-        if (plan_file.empty()) refuse_other_methods_options(in.args, method);
-        const auto phase = [&](const std::string& what) { progress.phase(what); };
-        JobPlan p = plan_job(in, r, phase, progress.reporter("preparing " + std::string(method_name(method))));
-        if (!plan_file.empty()) refuse_other_methods_options(in.args, p.method);
-        progress.clear();
-        return p;
+    // The options of another method refused before the work (a plan file's method once it is read).
+    r.check_method = [&](Method m) { refuse_other_methods_options(in.args, m); };
+    std::string phase_name = "preparing " + std::string(method_name(method));
+    std::vector<double> process_seconds;
+    if (distributed && mpi_processes() > 1) {
+        if (!plan_file.empty())
+            throw CLI::ValidationError("--plan", "a saved plan is for one process: under mpirun each process "
+                                                 "prepares its own part (run without --plan)");
+        phase_name += " on " + std::to_string(mpi_processes()) + " processes";
+        // On every process; a decomposed OpenFOAM case on as many processes as
+        // processors: each process deforms its processor's points (the solver's decomposition).
+        r.prepare = [&](const MethodOptions& options) {
+            Plan rank0_plan;
+            *distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, options,
+                                       processor_node_parts(in, mpi_processes()), rank0_plan, process_seconds);
+            return rank0_plan;
+        };
     }
-    if (!plan_file.empty())
-        throw CLI::ValidationError("--plan", "a saved plan is for one process: under mpirun each process prepares "
-                                             "its own part (run without --plan)");
-    refuse_other_methods_options(in.args, method);
-    progress.phase("preparing " + std::string(method_name(method)) + " on " + std::to_string(mpi_processes()) +
-                   " processes");
-    JobPlan p;
-    p.method = method;
-    p.options = r.options;
-    Stopwatch sw;
-    // A decomposed OpenFOAM case on as many processes as processors: each
-    // process deforms its processor's points (the solver's decomposition).
-    *distributed = mpi_prepare(in.mesh, in.boundary.boundary, method, p.options,
-                               processor_node_parts(in, mpi_processes()), p.plan, p.process_prepare_seconds);
-    p.outside_hull_over_processes = mpi_outside_hull(**distributed);
-    if (!in.boundary.slides.empty()) p.slide = prepare_slide_pass(in.mesh, in.boundary, p.options);
-    p.prepare_seconds = sw.lap();
+    const auto phase = [&](const std::string& what) { progress.phase(r.prepare ? phase_name : what); };
+    JobPlan p = plan_job(in, r, phase, progress.reporter(phase_name));
+    if (r.prepare) {
+        p.process_prepare_seconds = std::move(process_seconds);
+        p.outside_hull_over_processes = mpi_outside_hull(**distributed);
+    }
     progress.clear();
     return p;
 }

@@ -164,24 +164,20 @@ std::shared_ptr<PyPlan> plan_from_file_content(Plan plan, std::shared_ptr<PyMesh
     auto p = std::make_shared<PyPlan>();
     p->mesh = mesh;
     p->plan = std::move(plan);
-    const std::vector<NodeId>* nodes = nullptr;
-    const std::vector<std::uint8_t>* flags = nullptr;
-    if (const auto* d = std::get_if<DgIdwPlan>(&p->plan)) {
-        nodes = &d->boundary_nodes, flags = &d->boundary_moving;
-    } else if (const auto* h = std::get_if<DgHarmonicPlan>(&p->plan)) {
-        nodes = &h->boundary_nodes, flags = &h->boundary_moving;
-    }
+    const GraphPlanCore* core = graph_plan_core(p->plan);
     p->options = options_with_plan(p->plan, p->options);
     py::object moving_names = py::reinterpret_borrow<py::object>(moving);
-    if (moving.is_none() && nodes) {
+    if (moving.is_none() && core) {
         // The markers all of whose nodes the plan moves (moving_wins: a moving
         // marker's nodes all move; a static marker's move only where shared).
         py::list names;
         for (const Marker& marker : mesh->mesh.markers) {
             const std::vector<NodeId> ids = marker_nodes(marker);
             const bool all_moving = !ids.empty() && std::all_of(ids.begin(), ids.end(), [&](NodeId id) {
-                const auto it = std::lower_bound(nodes->begin(), nodes->end(), id);
-                return it != nodes->end() && *it == id && (*flags)[static_cast<std::size_t>(it - nodes->begin())];
+                const auto& nodes = core->boundary_nodes;
+                const auto it = std::lower_bound(nodes.begin(), nodes.end(), id);
+                return it != nodes.end() && *it == id &&
+                       core->boundary_moving[static_cast<std::size_t>(it - nodes.begin())];
             });
             if (all_moving) names.append(marker.name);
         }

@@ -144,6 +144,10 @@ TEST(CliDeform, AShorterSeriesSaysWhichFramesOfAnEarlierOneAreLeft) {
     const auto j = nlohmann::json::parse(r.out);
     ASSERT_TRUE(j.contains("warnings"));
     EXPECT_NE(j.at("warnings").dump().find("frame_0003.su2"), std::string::npos) << j.at("warnings").dump();
+    bool coded = false;  // with its code and count, not as text only
+    for (const auto& w : j.at("warning_items"))
+        coded = coded || (w.at("code") == "stale-frames" && w.at("count") == 2);
+    EXPECT_TRUE(coded) << j.at("warning_items").dump();
     // One frame written to frame.su2 itself: the whole series is left.
     r = run_cli("deform " + quoted(mesh) + " -m " + quoted(rotation) + " -o " + quoted(out));
     ASSERT_EQ(r.exit_code, 0) << r.err;

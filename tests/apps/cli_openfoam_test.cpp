@@ -280,6 +280,10 @@ TEST(CliOpenFoam, AnUsualDecomposedLayoutSaysOnlyTheWholeMeshIsDeformed) {
     bool found = false;
     for (const auto& w : j.at("warnings")) found = found || w.get<std::string>().starts_with(expected);
     EXPECT_TRUE(found) << j.at("warnings").dump();
+    bool coded = false;
+    for (const auto& w : j.at("warning_items"))
+        coded = coded || (w.at("code") == "processors-unchanged" && w.at("count") == 2);
+    EXPECT_TRUE(coded) << j.at("warning_items").dump();
     // Without constant/polyMesh the same folder is the decomposed case: no warning.
     std::filesystem::remove_all(c / "constant" / "polyMesh");
     std::filesystem::remove_all(c / "0");

@@ -56,3 +56,36 @@ TEST(BoundaryDisplacement, A2dCasesNodesMoveOnBothPlanes) {
     }
     EXPECT_GT(moving, 0u);
 }
+
+TEST(BoundaryDisplacement, SlidingNodesMoveInTheirPlanesByTheFirstPass) {
+    JobInputs in;
+    in.mesh = small_grid_with_hole();
+    MotionFrame frame;
+    frame.markers["rectangle"] = RigidMotion{NodeMotion{{0, 0.3, 0}, {}, {}}};
+    frame.markers["farfield"] = SlideMotion{};
+    in.spec.frames.push_back(frame);
+    classify_inputs(in, {});
+    ASSERT_FALSE(in.boundary.slides.empty());
+    const BoundaryDisplacement d = boundary_displacement(in, 0);
+    // The outer box's sides: each node moves along its side (a corner not at all), and some do move.
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::size_t v = 0; v < in.mesh.points.size() / 2; ++v)
+        for (int k = 0; k < 2; ++k) {
+            lo[k] = std::min(lo[k], in.mesh.points[2 * v + k]);
+            hi[k] = std::max(hi[k], in.mesh.points[2 * v + k]);
+        }
+    double largest = 0;
+    for (std::size_t b = 0; b < d.boundary.nodes.size(); ++b) {
+        if (d.boundary.moving[b] == 0) continue;
+        const auto v = static_cast<std::size_t>(d.boundary.nodes[b]);
+        for (int k = 0; k < 2; ++k) {
+            const double x = in.mesh.points[2 * v + k];
+            if (x != lo[k] && x != hi[k]) continue;  // not on a side normal to axis k
+            EXPECT_EQ(d.displacement[2 * v + k], 0.0) << "node " << v << " leaves its side";
+        }
+        const bool on_box = in.mesh.points[2 * v] == lo[0] || in.mesh.points[2 * v] == hi[0] ||
+                            in.mesh.points[2 * v + 1] == lo[1] || in.mesh.points[2 * v + 1] == hi[1];
+        if (on_box) largest = std::max({largest, std::abs(d.displacement[2 * v]), std::abs(d.displacement[2 * v + 1])});
+    }
+    EXPECT_GT(largest, 1e-6);  // the first pass slid them
+}

@@ -11,23 +11,14 @@
 
 using namespace dgwarp;
 
-namespace {
-
-const GraphPlanCore& core_of(const Plan& plan) {
-    if (const auto* p = std::get_if<DgIdwPlan>(&plan)) return *p;
-    if (const auto* p = std::get_if<DgmPlan>(&plan)) return *p;
-    return std::get<DgHarmonicPlan>(plan);
-}
-
-}  // namespace
-
 TEST(PlanCore, TheGraphPlansHoldTheBoundarySetAndLocateEveryNode) {
     for (int dim : {2, 3}) {
         const test::BoxInBox m = test::box_in_box(dim, dim == 2 ? 12 : 6);
         for (Method method : {Method::dg_idw, Method::dgm, Method::dg_harmonic}) {
             SCOPED_TRACE(std::string(method_name(method)) + " " + std::to_string(dim) + "D");
             const Plan plan = prepare(method, dim, m.points, m.boundary);
-            const GraphPlanCore& core = core_of(plan);
+            ASSERT_NE(graph_plan_core(plan), nullptr);
+            const GraphPlanCore& core = *graph_plan_core(plan);
             EXPECT_EQ(core.dim, dim);
             EXPECT_EQ(core.boundary_nodes, m.boundary.nodes);
             EXPECT_EQ(core.boundary_moving, m.boundary.moving);
@@ -44,5 +35,8 @@ TEST(PlanCore, TheGraphPlansHoldTheBoundarySetAndLocateEveryNode) {
             EXPECT_GT(core_bytes(core), 0u);
             EXPECT_LT(core_bytes(core), plan_memory_bytes(plan));
         }
+        // The other methods' plans have no graph core.
+        EXPECT_EQ(graph_plan_core(prepare(Method::idw, dim, m.points, m.boundary)), nullptr);
+        EXPECT_EQ(graph_plan_core(prepare(Method::rbf, dim, m.points, m.boundary)), nullptr);
     }
 }

@@ -12,12 +12,6 @@ namespace dgwarp {
 
 namespace {
 
-std::int64_t moving_count(const BoundarySet& b) {
-    std::int64_t n = 0;
-    for (auto m : b.moving) n += m;
-    return n;
-}
-
 nlohmann::json cyclic_pairs_json(const std::vector<std::pair<std::string, std::string>>& pairs) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& [a, b] : pairs) out.push_back({a, b});
@@ -61,13 +55,16 @@ JobPlan plan_job(const JobInputs& in, const PlanRequest& r, const std::function<
         // the run's value, and the mesh's cells it measures.
         const MethodOptions in_plan = options_with_plan(loaded, r.options);
         refuse_conflicts(r, planned, in_plan);
+        if (r.check_method) r.check_method(planned);
         p.options = in_plan;
         // A plan file keeps the plan's arrays, not the guard: built again from the mesh's cells.
         attach_frame_guard(loaded, in.mesh, in.boundary.boundary, p.options);
         p.plan = std::move(loaded);
     } else {
+        if (r.check_method) r.check_method(r.method);
         tell("preparing " + std::string(method_name(r.method)));
-        p.plan = prepare_for_frames(r.method, in.mesh, in.boundary.boundary, p.options, progress);
+        p.plan = r.prepare ? r.prepare(p.options)
+                           : prepare_for_frames(r.method, in.mesh, in.boundary.boundary, p.options, progress);
     }
     if (!in.boundary.slides.empty()) p.slide = prepare_slide_pass(in.mesh, in.boundary, p.options);
     p.prepare_seconds = sw.lap();

@@ -40,6 +40,13 @@ struct PlanRequest {
     /// plan file, one whose value differs from the plan's is refused rather
     /// than silently dropped.
     std::set<std::string> given{};
+    /// Called with the method that runs as soon as it is known: before the
+    /// work for a built plan; for a plan file, once it is read and its
+    /// options checked (e.g. to refuse the options of another method); may throw.
+    std::function<void(Method)> check_method{};
+    /// The prepare, when not prepare_for_frames on this process (e.g. a plan
+    /// spread over processes, of which it returns this process's own).
+    std::function<Plan(const MethodOptions&)> prepare{};
 };
 
 /// A job's plan, and what its reports need of it.
@@ -59,10 +66,10 @@ struct JobPlan {
 
 /// The plan `r` asks for: loaded from r.plan_file (load_plan: checked to
 /// fit in.mesh and in.boundary; DG-harmonic's guard built again from the
-/// mesh's cells, attach_frame_guard) or built (prepare_for_frames), and the
-/// sliding markers' first pass when the boundary has any. `phase` (when
-/// given) is told what starts ("loading F", "preparing dg-idw"), `progress`
-/// the prepare's fraction done. Throws UsageError naming the option
+/// mesh's cells, attach_frame_guard) or built (r.prepare, else
+/// prepare_for_frames), and the sliding markers' first pass when the
+/// boundary has any. `phase` (when given) is told what starts ("loading F",
+/// "preparing dg-idw"), `progress` the prepare's fraction done. Throws UsageError naming the option
 /// ("--length-scale: F was prepared with --length-scale auto; ...") when a
 /// given option differs from a loaded plan's, or the file holds another
 /// method's plan than an asked-for one; else as load_plan and prepare throw.

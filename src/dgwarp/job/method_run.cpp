@@ -40,7 +40,10 @@ void run_method(JobInputs& in, MethodRun& run, FrameOutputs& outputs, const Meth
     // Errors of a step may end this method's run; errors anywhere else
     // (reading a frame's motion, writing) end the job.
     bool in_step = false;
-    on.step_running = [&](bool running) { in_step = running; };
+    on.step_running = [&in_step, caller = std::move(on.step_running)](bool running) {
+        in_step = running;
+        if (caller) caller(running);
+    };
     on.frame_done = [&](const FrameView& v) {
         JobFrame f;
         static_cast<FrameReport&>(f) = v.report;

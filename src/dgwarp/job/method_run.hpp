@@ -66,9 +66,9 @@ struct MethodRunOptions {
 /// Every frame of in.spec with run.planned's plan: each valid one (or
 /// every one with options.write_invalid) written with write_frame, added
 /// to `run` (add_frame), and handed to `reported` (when given; it may add
-/// what it knows, e.g. process_seconds) before the next. `on`'s
-/// frame_started, repair_started and step are the run layer's; its
-/// step_running and frame_done are this function's. Throws what run_frames
+/// what it knows, e.g. process_seconds) before the next. `on` is the run
+/// layer's (frame_started, repair_started, step, step_running) but for its
+/// frame_done, which is this function's (`reported` sees each frame). Throws what run_frames
 /// and write_frame throw (a step's error is kept instead with
 /// options.keep_step_errors).
 void run_method(JobInputs& in, MethodRun& run, FrameOutputs& outputs, const MethodRunOptions& options,

@@ -234,6 +234,13 @@ PlanSummary plan_summary(const Plan& plan) {
     return s;
 }
 
+const GraphPlanCore* graph_plan_core(const Plan& plan) {
+    if (const auto* p = std::get_if<DgIdwPlan>(&plan)) return p;
+    if (const auto* p = std::get_if<DgmPlan>(&plan)) return p;
+    if (const auto* p = std::get_if<DgHarmonicPlan>(&plan)) return p;
+    return nullptr;
+}
+
 std::vector<Warning> plan_warnings(Method method, const PlanSummary& s) {
     if (s.outside_hull == 0) return {};
     return {{WarningCode::outside_hull,

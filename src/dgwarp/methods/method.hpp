@@ -107,6 +107,9 @@ StepReport deform(const Plan& plan, std::span<const double> points, const Bounda
 /// The method a plan belongs to.
 Method plan_method(const Plan& plan);
 
+/// The core of a graph method's plan (DG-IDW, DGM, DG-harmonic: plan_core.hpp), or null.
+const GraphPlanCore* graph_plan_core(const Plan& plan);
+
 /// Bytes held by a plan's arrays.
 std::size_t plan_memory_bytes(const Plan& plan);
 

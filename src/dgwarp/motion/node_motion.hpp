@@ -50,6 +50,13 @@ struct BoundarySet {
     std::vector<std::uint8_t> moving;  // same size as nodes
 };
 
+/// How many of `b`'s nodes move.
+inline std::int64_t moving_count(const BoundarySet& b) {
+    std::int64_t n = 0;
+    for (std::uint8_t m : b.moving) n += m;
+    return n;
+}
+
 /// One step's motion: one NodeMotion per boundary node, in BoundarySet order.
 /// Static nodes must have zero translation and rotation.
 using BoundaryMotion = std::vector<NodeMotion>;
