@@ -9,13 +9,9 @@
 #include "dgwarp/core/error.hpp"
 #include "dgwarp/core/joined.hpp"
 #include "dgwarp/core/stopwatch.hpp"
-#include "dgwarp/io/marker_types.hpp"
 #include "dgwarp/io/marker_names.hpp"
 #include "dgwarp/io/mesh_io.hpp"
-#include "dgwarp/io/su2/su2_config.hpp"
-#include "dgwarp/motion/planar_motion.hpp"
 #include "dgwarp/io/number_text.hpp"
-#include "dgwarp/plan/plan_file.hpp"
 #include "dgwarp/methods/option_table.hpp"
 #include "dgwarp/run/run_deformation.hpp"
 #include "flag_values.hpp"
@@ -25,13 +21,11 @@ namespace dgwarp::cli {
 
 namespace {
 
-
 std::string method_list() {
     std::string s;
     for (Method m : all_methods) s += (s.empty() ? "" : ", ") + std::string(method_name(m));
     return s;
 }
-
 
 }  // namespace
 
