@@ -144,9 +144,8 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
     std::vector<std::int64_t> seeds, mine;
     UntangleReport census;  // this process's cells at or below zero quality, counted as one process counts them
     collectively(comm, [&] {
-        UntangleOptions options = last_resort_untangle_options();
-        options.cells = folded;
-        seeds = cells_to_untangle(mesh.dim, cells, own_orientation, fixed, points, options, &census);
+        seeds = cells_to_untangle(mesh.dim, cells, own_orientation, fixed, points, last_resort_untangle_options(folded),
+                                  &census);
     });
     // Over every process (each cell held by one): the report's counts of the whole mesh.
     const std::int64_t inverted = sum(comm, census.inverted_before), below = sum(comm, census.below_target_before);
@@ -240,8 +239,6 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
                 report->inverted_before = inverted;
                 report->below_target_after += below - report->below_target_before;
                 report->below_target_before = below;
-            }
-            if (report)
                 // This process's nodes where the repair put them.
                 for (std::size_t n = 0; n < mesh.num_points(); ++n) {
                     if (!holds(p.nodes, node_ids[n])) continue;
@@ -249,6 +246,7 @@ std::optional<UntangleReport> last_resort_over_parts(MPI_Comm comm, const Mesh& 
                     std::copy_n(p.mesh.points.begin() + static_cast<std::ptrdiff_t>(i * d_), dim,
                                 points.begin() + static_cast<std::ptrdiff_t>(n * d_));
                 }
+            }
             return report;
         }
         rings = std::min(needed, part_repair_max_rings);

@@ -18,8 +18,10 @@ namespace dgwarp {
 /// Rounds of the last resort: three times what the bricks need.
 constexpr int last_resort_max_rounds = 6;
 
-/// The untangle options of the last resort (inverted cells only).
-UntangleOptions last_resort_untangle_options();
+/// The untangle options of the last resort: inverted cells only, and of
+/// them `step_folded` (UntangleOptions::cells: the cells the step folded, not
+/// others the input already had at or below zero quality), viewed.
+UntangleOptions last_resort_untangle_options(std::span<const std::int64_t> step_folded);
 
 /// Runs the last resort on `points` (num_points × dim, the step's result,
 /// changed in place) when the step inverted cells (`step_folded`: the cells
